@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every Debian package dressed_human needs to build, run its demo and run its tests.
+# Idempotent: packages already present are skipped by apt.
+set -euo pipefail
+
+packages=(
+  # build
+  build-essential cmake pkg-config catkin python3-catkin-pkg python3-empy
+  libeigen3-dev libyaml-cpp-dev libboost-dev liburdfdom-dev liburdfdom-tools
+  # ROS 1 (Debian's own packages)
+  libroscpp-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
+  libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev
+  pluginlib-dev librviz-dev rviz qtbase5-dev
+  rosout rosbash python3-roslaunch python3-rosbag python3-rostest librostest-dev python3-rosgraph
+  ros-robot-state-publisher joint-state-publisher tf2-tools python3-tf2-ros
+  python3-sensor-msgs python3-tf2-msgs python3-geometry-msgs
+  # tests and benchmarks
+  libgtest-dev googletest libbenchmark-dev
+  # headless rviz and screenshots
+  xvfb xauth x11-apps mesa-utils libgl1-mesa-dri imagemagick
+  # charts
+  python3-numpy python3-matplotlib python3-yaml
+)
+
+sudo_cmd=()
+if [ "$(id -u)" != 0 ]; then sudo_cmd=(sudo); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#packages[@]} Debian packages already installed"
+  exit 0
+fi
+echo "install_deps: installing ${#missing[@]} Debian packages: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
