@@ -8,10 +8,10 @@ packages=(
   build-essential cmake pkg-config catkin python3-catkin-pkg python3-empy
   libeigen3-dev libyaml-cpp-dev libboost-dev liburdfdom-dev liburdfdom-tools
   # ROS 1 (Debian's own packages)
-  libroscpp-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
+  libroscpp-dev libroslib-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
   libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev
   pluginlib-dev librviz-dev rviz qtbase5-dev
-  rosout rosbash python3-roslaunch python3-rosbag python3-rostest librostest-dev python3-rosgraph
+  rosout rosbash python3-roslaunch python3-rostopic python3-rosnode python3-rosbag python3-rostest librostest-dev python3-rosgraph
   ros-robot-state-publisher joint-state-publisher tf2-tools python3-tf2-ros
   python3-sensor-msgs python3-tf2-msgs python3-geometry-msgs
   # tests and benchmarks

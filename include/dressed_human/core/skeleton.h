@@ -1,0 +1,84 @@
+#pragma once
+// The human skeleton read from the URDF: 20 bones, 16 articulated 3-DOF joints, the root frame.
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+namespace dressed_human {
+
+constexpr std::size_t kBoneCount = 20;
+constexpr std::size_t kJointCount = 16;
+constexpr std::size_t kDofsPerJoint = 3;
+constexpr std::size_t kDofCount = kJointCount * kDofsPerJoint;
+
+// The DOFs of every articulated joint, in chain order: flexion about the bone frame's y, then
+// ab/adduction about x, then twist about the bone (z). Angle index = joint * 3 + dof.
+enum class JointAxis : int { kY = 0, kX = 1, kZ = 2 };
+constexpr std::array<const char*, kDofsPerJoint> kDofNames = {"y", "x", "z"};
+constexpr std::array<const char*, kDofsPerJoint> kUrdfDofSuffixes = {"ry", "rx", "rz"};
+
+struct SkeletonError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Bone {
+  std::string name;          // frame name without suffix, REP-155 style: "l_knee" is the shank
+  std::string anatomical;    // "left shank"
+  int parent = -1;           // parent bone index; -1: the root frame "body"
+  int joint = -1;            // articulated joint moving this bone; -1: fixed to its parent
+  // Pose of this bone's frame in its parent's frame with all angles zero. The translation is the
+  // proximal joint position, expressed in the parent frame (Eq. 5 scales it by the parent's a,b,c).
+  Eigen::Vector3d rest_translation = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond rest_rotation = Eigen::Quaterniond::Identity();
+  double length = 0.0;       // along +z, from the bone's cylinder visual
+  double radius = 0.0;       // of that cylinder: a first guess for the skin
+};
+
+struct ArticulatedJoint {
+  std::string name;                              // = the name of the bone it moves
+  int bone = -1;
+  std::array<std::string, kDofsPerJoint> urdf_joints;  // e.g. l_knee_ry, l_knee_rx, l_knee_rz (+suffix)
+  std::array<std::string, 2> intermediate_links;      // l_knee_ry_link, l_knee_rx_link (+suffix)
+};
+
+class Skeleton {
+ public:
+  // Parses a URDF (the text of robot_description). Link and joint names may carry a common
+  // "_<id>" suffix (several humans in one TF tree); it is detected from the root link "body_<id>".
+  // Throws SkeletonError naming the link or joint that does not fit the human layout.
+  static Skeleton fromUrdf(const std::string& urdf_xml);
+  static Skeleton fromUrdfFile(const std::string& path);
+
+  const std::vector<Bone>& bones() const { return bones_; }
+  const std::vector<ArticulatedJoint>& joints() const { return joints_; }
+  const Bone& bone(std::size_t index) const { return bones_.at(index); }
+  const ArticulatedJoint& joint(std::size_t index) const { return joints_.at(index); }
+
+  // -1 when absent. Names are the suffix-free ones ("l_knee").
+  int findBone(const std::string& name) const;
+  int findJoint(const std::string& name) const;
+
+  const std::string& suffix() const { return suffix_; }            // "" or "_<id>"
+  std::string frameName(const std::string& plain) const { return plain + suffix_; }
+  std::string rootFrame() const { return frameName("body"); }
+
+ private:
+  std::vector<Bone> bones_;               // parents before children
+  std::vector<ArticulatedJoint> joints_;  // in bone order
+  std::string suffix_;
+};
+
+// The 20 bone frame names the layout expects, parents before children, and their anatomy.
+struct BoneLayoutEntry {
+  const char* name;
+  const char* anatomical;
+  bool articulated;
+};
+const std::array<BoneLayoutEntry, kBoneCount>& humanBoneLayout();
+
+}  // namespace dressed_human

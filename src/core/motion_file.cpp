@@ -1,0 +1,242 @@
+#include "dressed_human/core/motion_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace dressed_human {
+namespace {
+
+// Builds errors that point at the offending node: "file:line:col: key.path: message".
+class MotionYamlReader {
+ public:
+  explicit MotionYamlReader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
+    std::ostringstream text;
+    text << source_;
+    const YAML::Mark mark = node.Mark();
+    if (mark.line >= 0) text << ':' << mark.line + 1 << ':' << mark.column + 1;
+    text << ": " << key << ": " << message;
+    throw MotionError(text.str());
+  }
+
+  void requireMap(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsMap()) fail(node, key, "expected a mapping (key: value pairs), got " + describe(node));
+  }
+
+  void rejectUnknownKeys(const YAML::Node& map, const std::string& key, const std::set<std::string>& allowed) const {
+    for (const auto& entry : map) {
+      const std::string name = entry.first.Scalar();
+      if (allowed.count(name) == 0) {
+        std::string list;
+        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        fail(entry.first, key.empty() ? name : key + "." + name, "unknown key; expected one of: " + list);
+      }
+    }
+  }
+
+  const YAML::Node require(const YAML::Node& map, const std::string& name, const std::string& key) const {
+    const YAML::Node child = map[name];
+    if (!child) fail(map, key.empty() ? name : key + "." + name, "missing");
+    return child;
+  }
+
+  double number(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsScalar()) fail(node, key, "expected a number, got " + describe(node));
+    double value = 0.0;
+    try {
+      value = node.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(node, key, "expected a number, got '" + node.Scalar() + "'");
+    }
+    if (!std::isfinite(value)) fail(node, key, "expected a finite number, got '" + node.Scalar() + "'");
+    return value;
+  }
+
+  std::vector<double> numbers(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsSequence()) fail(node, key, "expected a list of numbers, got " + describe(node));
+    std::vector<double> values;
+    for (std::size_t i = 0; i < node.size(); ++i) values.push_back(number(node[i], key + "[" + std::to_string(i + 1) + "]"));
+    return values;
+  }
+
+  FourierSeries series(const YAML::Node& node, const std::string& key, double default_period) const {
+    requireMap(node, key);
+    rejectUnknownKeys(node, key, {"a0", "a", "b", "period", "phase", "rms_residual"});
+    FourierSeries s;
+    s.period = default_period;
+    s.a0 = number(require(node, "a0", key), key + ".a0");
+    if (node["a"]) s.a = numbers(node["a"], key + ".a");
+    if (node["b"]) s.b = numbers(node["b"], key + ".b");
+    if (s.a.size() != s.b.size()) {
+      fail(node, key, "wrong coefficient counts: " + std::to_string(s.a.size()) + " in a but " +
+                          std::to_string(s.b.size()) + " in b; both must list a_1..a_m and b_1..b_m");
+    }
+    if (node["period"]) {
+      s.period = number(node["period"], key + ".period");
+      if (s.period <= 0.0) fail(node["period"], key + ".period", "must be > 0 seconds");
+    }
+    if (node["phase"]) s.phase = number(node["phase"], key + ".phase");
+    if (node["rms_residual"]) {
+      if (number(node["rms_residual"], key + ".rms_residual") < 0.0) {
+        fail(node["rms_residual"], key + ".rms_residual", "must be >= 0");
+      }
+    }
+    return s;
+  }
+
+ private:
+  static std::string describe(const YAML::Node& node) {
+    switch (node.Type()) {
+      case YAML::NodeType::Null: return "nothing (null)";
+      case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
+      case YAML::NodeType::Sequence: return "a list";
+      case YAML::NodeType::Map: return "a mapping";
+      default: return "an undefined value";
+    }
+  }
+
+  std::string source_;
+};
+
+template <std::size_t N>
+std::set<std::string> namesOf(const std::array<const char*, N>& names) {
+  return std::set<std::string>(names.begin(), names.end());
+}
+
+}  // namespace
+
+Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_name) {
+  YAML::Node document;
+  try {
+    document = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& error) {
+    std::ostringstream text;
+    text << source_name << ':' << error.mark.line + 1 << ':' << error.mark.column + 1 << ": not valid YAML: " << error.msg;
+    throw MotionError(text.str());
+  }
+  const MotionYamlReader reader(source_name);
+  if (!document || document.IsNull()) throw MotionError(source_name + ": the motion file is empty");
+  reader.requireMap(document, "(top level)");
+  reader.rejectUnknownKeys(document, "", {"name", "period", "joints", "root"});
+
+  Motion motion;
+  if (document["name"]) {
+    if (!document["name"].IsScalar()) reader.fail(document["name"], "name", "expected a text");
+    motion.name = document["name"].Scalar();
+  }
+  const YAML::Node period = reader.require(document, "period", "");
+  motion.period = reader.number(period, "period");
+  if (motion.period <= 0.0) reader.fail(period, "period", "must be > 0 seconds, got " + period.Scalar());
+
+  const YAML::Node joints = reader.require(document, "joints", "");
+  reader.requireMap(joints, "joints");
+  reader.rejectUnknownKeys(joints, "joints", namesOf(humanJointNames()));
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    const std::string joint_key = std::string("joints.") + humanJointNames()[j];
+    const YAML::Node joint = reader.require(joints, humanJointNames()[j], "joints");
+    reader.requireMap(joint, joint_key);
+    reader.rejectUnknownKeys(joint, joint_key, namesOf(kDofNames));
+    for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
+      const std::string dof_key = joint_key + "." + kDofNames[d];
+      motion.dofs[j * kDofsPerJoint + d] = reader.series(reader.require(joint, kDofNames[d], joint_key), dof_key, motion.period);
+    }
+  }
+
+  const YAML::Node root = reader.require(document, "root", "");
+  reader.requireMap(root, "root");
+  reader.rejectUnknownKeys(root, "root", {"forward_speed", "translation", "rotation"});
+  motion.root.forward_speed = reader.number(reader.require(root, "forward_speed", "root"), "root.forward_speed");
+  const YAML::Node translation = reader.require(root, "translation", "root");
+  reader.requireMap(translation, "root.translation");
+  reader.rejectUnknownKeys(translation, "root.translation", namesOf(kRootTranslationNames));
+  const YAML::Node rotation = reader.require(root, "rotation", "root");
+  reader.requireMap(rotation, "root.rotation");
+  reader.rejectUnknownKeys(rotation, "root.rotation", namesOf(kRootRotationNames));
+  for (std::size_t k = 0; k < 3; ++k) {
+    motion.root.translation[k] = reader.series(reader.require(translation, kRootTranslationNames[k], "root.translation"),
+                                               std::string("root.translation.") + kRootTranslationNames[k], motion.period);
+    motion.root.rotation[k] = reader.series(reader.require(rotation, kRootRotationNames[k], "root.rotation"),
+                                            std::string("root.rotation.") + kRootRotationNames[k], motion.period);
+  }
+  try {
+    motion.validate();
+  } catch (const MotionError& error) {
+    throw MotionError(source_name + ": " + error.what());
+  }
+  return motion;
+}
+
+Motion loadMotionFile(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw MotionError(path + ": cannot open the motion file");
+  std::stringstream text;
+  text << file.rdbuf();
+  return parseMotionYaml(text.str(), path);
+}
+
+namespace {
+
+void writeList(std::ostream& out, const std::vector<double>& values) {
+  out << '[';
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i];
+  out << ']';
+}
+
+void writeSeries(std::ostream& out, const FourierSeries& s, double default_period, const std::string& note) {
+  out << "{a0: " << s.a0;
+  if (s.order() > 0) {
+    out << ", a: ";
+    writeList(out, s.a);
+    out << ", b: ";
+    writeList(out, s.b);
+  }
+  if (s.period != default_period) out << ", period: " << s.period;
+  if (s.phase != 0.0) out << ", phase: " << s.phase;
+  out << '}';
+  if (!note.empty()) out << "  # " << note;
+  out << '\n';
+}
+
+}  // namespace
+
+void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string& header_comment,
+                     const std::map<std::string, std::string>& notes) {
+  motion.validate();
+  const auto note = [&](std::size_t i) {
+    const auto found = notes.find(motion.seriesName(i));
+    return found == notes.end() ? std::string() : found->second;
+  };
+  std::ostringstream text;
+  text << std::setprecision(std::numeric_limits<double>::max_digits10);
+  std::istringstream header(header_comment);
+  for (std::string line; std::getline(header, line);) text << "# " << line << '\n';
+  if (!motion.name.empty()) text << "name: " << motion.name << '\n';
+  text << "period: " << motion.period << '\n' << "joints:\n";
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    text << "  " << humanJointNames()[j] << ":\n";
+    for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
+      text << "    " << kDofNames[d] << ": ";
+      writeSeries(text, motion.dofs[j * kDofsPerJoint + d], motion.period, note(j * kDofsPerJoint + d));
+    }
+  }
+  text << "root:\n  forward_speed: " << motion.root.forward_speed << "\n  translation:\n";
+  for (std::size_t k = 0; k < 3; ++k) {
+    text << "    " << kRootTranslationNames[k] << ": ";
+    writeSeries(text, motion.root.translation[k], motion.period, note(kDofCount + k));
+  }
+  text << "  rotation:\n";
+  for (std::size_t k = 0; k < 3; ++k) {
+    text << "    " << kRootRotationNames[k] << ": ";
+    writeSeries(text, motion.root.rotation[k], motion.period, note(kDofCount + 3 + k));
+  }
+  out << text.str();
+}
+
+}  // namespace dressed_human

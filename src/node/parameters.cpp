@@ -1,0 +1,63 @@
+#include "parameters.h"
+
+#include <cmath>
+
+#include <xmlrpcpp/XmlRpcValue.h>
+
+namespace dressed_human {
+namespace {
+
+const char* typeName(const XmlRpc::XmlRpcValue& value) {
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean: return "a boolean";
+    case XmlRpc::XmlRpcValue::TypeInt: return "an integer";
+    case XmlRpc::XmlRpcValue::TypeDouble: return "a number";
+    case XmlRpc::XmlRpcValue::TypeString: return "a string";
+    case XmlRpc::XmlRpcValue::TypeArray: return "a list";
+    case XmlRpc::XmlRpcValue::TypeStruct: return "a dictionary";
+    default: return "an unsupported value";
+  }
+}
+
+}  // namespace
+
+double Parameters::number(const std::string& name, double fallback) const {
+  XmlRpc::XmlRpcValue value;
+  if (!node_.getParam(name, value)) return fallback;
+  double result = 0.0;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+    result = static_cast<double>(value);
+  } else if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+    result = static_cast<int>(value);
+  } else {
+    throw ParameterError("parameter " + fullName(name) + " must be a number, got " + typeName(value));
+  }
+  if (!std::isfinite(result)) throw ParameterError("parameter " + fullName(name) + " must be finite");
+  return result;
+}
+
+bool Parameters::boolean(const std::string& name, bool fallback) const {
+  XmlRpc::XmlRpcValue value;
+  if (!node_.getParam(name, value)) return fallback;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+    throw ParameterError("parameter " + fullName(name) + " must be true or false, got " + typeName(value));
+  }
+  return static_cast<bool>(value);
+}
+
+std::string Parameters::text(const std::string& name, const std::string& fallback) const {
+  XmlRpc::XmlRpcValue value;
+  if (!node_.getParam(name, value)) return fallback;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) return std::to_string(static_cast<int>(value));
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeString) {
+    throw ParameterError("parameter " + fullName(name) + " must be a string, got " + typeName(value));
+  }
+  return static_cast<std::string>(value);
+}
+
+std::string Parameters::requiredText(const std::string& name) const {
+  if (!node_.hasParam(name)) throw ParameterError("parameter " + fullName(name) + " is not set");
+  return text(name, "");
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,29 @@
+#pragma once
+// Typed reading of ROS parameters: a wrong type or value names the parameter.
+
+#include <stdexcept>
+#include <string>
+
+#include <ros/node_handle.h>
+
+namespace dressed_human {
+
+struct ParameterError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Parameters {
+ public:
+  explicit Parameters(const ros::NodeHandle& node) : node_(node) {}
+
+  double number(const std::string& name, double fallback) const;
+  bool boolean(const std::string& name, bool fallback) const;
+  std::string text(const std::string& name, const std::string& fallback) const;
+  std::string requiredText(const std::string& name) const;
+  std::string fullName(const std::string& name) const { return node_.resolveName(name); }
+
+ private:
+  ros::NodeHandle node_;
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,171 @@
+#include "skeleton_publisher.h"
+
+#include <cctype>
+#include <cmath>
+
+#include <ros/package.h>
+
+#include "dressed_human/core/motion_file.h"
+#include "parameters.h"
+
+namespace dressed_human {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kMaxRate = 10000.0;
+
+void copy(const RigidTransform& from, geometry_msgs::Transform& to) {
+  to.translation.x = from.translation.x();
+  to.translation.y = from.translation.y();
+  to.translation.z = from.translation.z();
+  to.rotation.x = from.rotation.x();
+  to.rotation.y = from.rotation.y();
+  to.rotation.z = from.rotation.z();
+  to.rotation.w = from.rotation.w();
+}
+
+geometry_msgs::TransformStamped named(const std::string& parent, const std::string& child) {
+  geometry_msgs::TransformStamped transform;
+  transform.header.frame_id = parent;
+  transform.child_frame_id = child;
+  transform.transform.rotation.w = 1.0;
+  return transform;
+}
+
+}  // namespace
+
+SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::NodeHandle& private_node) {
+  const Parameters parameters(private_node);
+  SkeletonPublisherSettings s;
+  const std::string package = ros::package::getPath("dressed_human");
+  s.motion_file = parameters.text("motion_file", package.empty() ? "" : package + "/config/motions/walk.yaml");
+  if (s.motion_file.empty()) {
+    throw ParameterError("parameter " + parameters.fullName("motion_file") +
+                         " is not set and the dressed_human package path is unknown");
+  }
+  s.rate = parameters.number("rate", s.rate);
+  if (s.rate <= 0.0 || s.rate > kMaxRate) {
+    throw ParameterError("parameter " + parameters.fullName("rate") + " must be in (0, " +
+                         std::to_string(static_cast<int>(kMaxRate)) + "] Hz, got " + std::to_string(s.rate));
+  }
+  s.speed_factor = parameters.number("speed_factor", s.speed_factor);
+  if (s.speed_factor < 0.0) {
+    throw ParameterError("parameter " + parameters.fullName("speed_factor") + " must be >= 0, got " +
+                         std::to_string(s.speed_factor));
+  }
+  s.start_phase = parameters.number("start_phase", s.start_phase);
+  s.loop = parameters.boolean("loop", s.loop);
+  s.body_id = parameters.text("body_id", s.body_id);
+  for (unsigned char c : s.body_id) {
+    if (!std::isalnum(c)) {
+      throw ParameterError("parameter " + parameters.fullName("body_id") + " must be letters and digits only, got '" +
+                           s.body_id + "'");
+    }
+  }
+  s.world_frame = parameters.text("world_frame", s.world_frame);
+  if (s.world_frame.empty()) throw ParameterError("parameter " + parameters.fullName("world_frame") + " is empty");
+  s.origin_x = parameters.number("origin_x", s.origin_x);
+  s.origin_y = parameters.number("origin_y", s.origin_y);
+  s.origin_yaw = parameters.number("origin_yaw", s.origin_yaw);
+  s.publish_joint_states = parameters.boolean("publish_joint_states", s.publish_joint_states);
+  return s;
+}
+
+SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle private_node)
+    : settings_(SkeletonPublisherSettings::fromParameters(private_node)) {
+  const Parameters parameters(node);
+  const Skeleton skeleton = Skeleton::fromUrdf(parameters.requiredText("robot_description"));
+  const std::string wanted_suffix = settings_.body_id.empty() ? "" : "_" + settings_.body_id;
+  if (!wanted_suffix.empty() && skeleton.suffix() != wanted_suffix) {
+    if (!skeleton.suffix().empty()) {
+      throw ParameterError("parameter " + private_node.resolveName("body_id") + " is '" + settings_.body_id +
+                           "' but robot_description's frames carry the suffix '" + skeleton.suffix() + "'");
+    }
+    extra_suffix_ = wanted_suffix;
+  }
+  kinematics_ = std::make_unique<ForwardKinematics>(skeleton);
+  evaluator_ = std::make_unique<MotionEvaluator>(loadMotionFile(settings_.motion_file));
+
+  transforms_.push_back(named(settings_.world_frame, published(skeleton.rootFrame())));
+  for (const ArticulatedJoint& joint : skeleton.joints()) {
+    const Bone& bone = skeleton.bone(static_cast<std::size_t>(joint.bone));
+    const std::string parent = bone.parent < 0 ? skeleton.rootFrame()
+                                               : skeleton.frameName(skeleton.bone(static_cast<std::size_t>(bone.parent)).name);
+    const std::array<std::string, 4> chain = {parent, joint.intermediate_links[0], joint.intermediate_links[1],
+                                              skeleton.frameName(bone.name)};
+    for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
+      transforms_.push_back(named(published(chain[d]), published(chain[d + 1])));
+      joint_state_.name.push_back(published(joint.urdf_joints[d]));
+    }
+  }
+  joint_state_.position.resize(kDofCount);
+  joint_state_.velocity.resize(kDofCount);
+
+  if (settings_.publish_joint_states) {
+    joint_state_publisher_ = node.advertise<sensor_msgs::JointState>("joint_states", 10);
+  }
+  timer_ = node.createTimer(ros::Duration(1.0 / settings_.rate), &SkeletonPublisher::onTimer, this);
+  ROS_INFO("skeleton_publisher: %s at %.1f Hz (speed x%.2f), root %s in %s", settings_.motion_file.c_str(),
+           settings_.rate, settings_.speed_factor, published(skeleton.rootFrame()).c_str(),
+           settings_.world_frame.c_str());
+}
+
+void SkeletonPublisher::publishStaticTransforms(const ros::Time& stamp) {
+  const Skeleton& skeleton = kinematics_->skeleton();
+  std::vector<geometry_msgs::TransformStamped> fixed;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const Bone& bone = skeleton.bone(b);
+    if (bone.joint >= 0) continue;
+    const std::string parent = bone.parent < 0 ? skeleton.rootFrame()
+                                               : skeleton.frameName(skeleton.bone(static_cast<std::size_t>(bone.parent)).name);
+    geometry_msgs::TransformStamped transform = named(published(parent), published(skeleton.frameName(bone.name)));
+    transform.header.stamp = stamp;
+    copy({kinematics_->scaledRestTranslation(b), bone.rest_rotation}, transform.transform);
+    fixed.push_back(transform);
+  }
+  static_broadcaster_.sendTransform(fixed);
+}
+
+void SkeletonPublisher::onTimer(const ros::TimerEvent&) {
+  const ros::Time now = ros::Time::now();
+  if (now.isZero()) return;  // simulated time has not started yet
+  if (started_ && now < last_time_) {
+    ROS_INFO("skeleton_publisher: time jumped back from %.3f to %.3f s (bag loop?): restarting the motion",
+             last_time_.toSec(), now.toSec());
+    started_ = false;
+  }
+  if (!started_) {
+    start_time_ = now;
+    started_ = true;
+    publishStaticTransforms(now);
+  }
+  last_time_ = now;
+
+  const double cycle = evaluator_->motion().period;
+  double elapsed = (now - start_time_).toSec() * settings_.speed_factor;
+  if (!settings_.loop) elapsed = std::min(elapsed, cycle);
+  const double time = elapsed + settings_.start_phase / kTwoPi * cycle;
+
+  RigidTransform root;
+  evaluator_->evaluate(time, angles_, root, &velocities_);
+  const Eigen::AngleAxisd heading(settings_.origin_yaw, Eigen::Vector3d::UnitZ());
+  root.translation = Eigen::Vector3d(settings_.origin_x, settings_.origin_y, 0.0) + heading * root.translation;
+  root.rotation = heading * root.rotation;
+  kinematics_->compute(root, angles_, pose_);
+
+  copy(pose_.root, transforms_[0].transform);
+  for (std::size_t i = 0; i < kDofCount; ++i) copy(pose_.dof_transforms[i], transforms_[i + 1].transform);
+  for (auto& transform : transforms_) transform.header.stamp = now;
+  broadcaster_.sendTransform(transforms_);
+
+  if (settings_.publish_joint_states) {
+    joint_state_.header.stamp = now;
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+      joint_state_.position[i] = angles_[i];
+      joint_state_.velocity[i] = velocities_[i] * settings_.speed_factor;
+    }
+    joint_state_publisher_.publish(joint_state_);
+  }
+}
+
+}  // namespace dressed_human

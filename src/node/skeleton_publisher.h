@@ -1,0 +1,64 @@
+#pragma once
+// ROS adapter: evaluates the motion at ROS time and publishes the skeleton as TF and JointState.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "dressed_human/core/forward_kinematics.h"
+#include "dressed_human/core/motion_evaluator.h"
+
+namespace dressed_human {
+
+struct SkeletonPublisherSettings {
+  std::string motion_file;
+  double rate = 100.0;          // Hz
+  double speed_factor = 1.0;    // motion seconds per ROS second
+  double start_phase = 0.0;     // radians of the motion cycle at start
+  bool loop = true;             // false: play one cycle, then hold the last pose
+  std::string body_id;          // frames get "_<id>" unless the URDF already has it
+  std::string world_frame = "world";
+  double origin_x = 0.0, origin_y = 0.0, origin_yaw = 0.0;  // where the walk starts in world_frame
+  bool publish_joint_states = true;
+
+  // Reads the private parameters of `private_node`; throws ParameterError naming the bad one.
+  static SkeletonPublisherSettings fromParameters(const ros::NodeHandle& private_node);
+};
+
+class SkeletonPublisher {
+ public:
+  // Throws (ParameterError, SkeletonError, MotionError) with a message naming what is wrong.
+  SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle private_node);
+
+ private:
+  void onTimer(const ros::TimerEvent&);
+  void publishStaticTransforms(const ros::Time& stamp);
+  std::string published(const std::string& urdf_name) const { return urdf_name + extra_suffix_; }
+
+  SkeletonPublisherSettings settings_;
+  std::unique_ptr<ForwardKinematics> kinematics_;
+  std::unique_ptr<MotionEvaluator> evaluator_;
+  std::string extra_suffix_;  // appended to URDF names when body_id is set and the URDF has none
+
+  JointAngles angles_{};
+  JointAngles velocities_{};
+  SkeletonPose pose_;
+  std::vector<geometry_msgs::TransformStamped> transforms_;  // root, then the 48 DOFs
+  sensor_msgs::JointState joint_state_;
+
+  tf2_ros::TransformBroadcaster broadcaster_;
+  tf2_ros::StaticTransformBroadcaster static_broadcaster_;
+  ros::Publisher joint_state_publisher_;
+  ros::Timer timer_;
+  ros::Time start_time_;
+  ros::Time last_time_;
+  bool started_ = false;
+};
+
+}  // namespace dressed_human
