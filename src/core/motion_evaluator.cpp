@@ -35,9 +35,10 @@ MotionEvaluator::MotionEvaluator(const Motion& motion) : motion_(motion) {
 void MotionEvaluator::evaluate(double time, JointAngles& angles, RigidTransform& root, JointAngles* velocities) {
   for (const Clock& clock : clocks_) {
     if (clock.order == 0) continue;
-    // Reduce to one cycle first so that long runs keep full precision in the phase.
-    const double cycles = time / clock.period;
-    const double t = kTwoPi * (cycles - std::floor(cycles)) + clock.phase;
+    // Reduce to one cycle first (fmod is exact) so that long runs keep full precision in the phase.
+    double cycle_time = std::fmod(time, clock.period);
+    if (cycle_time < 0.0) cycle_time += clock.period;
+    const double t = kTwoPi * cycle_time / clock.period + clock.phase;
     double s1 = 0.0;
     double c1 = 0.0;
     ::sincos(t, &s1, &c1);
