@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""Every bad parameter stops skeleton_publisher with a non-zero exit and a message naming it."""
+import os
+import subprocess
+import unittest
+
+import roslib.packages
+import rospkg
+import rostest
+
+PACKAGE = rospkg.RosPack().get_path("dressed_human")
+BAD_MOTION = os.path.join(PACKAGE, "test", "data", "bad_motions", "coefficient_nan.yaml")
+
+
+def run_node(*arguments):
+    executable = roslib.packages.find_node("dressed_human", "skeleton_publisher")[0]
+    result = subprocess.run([executable] + list(arguments), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            timeout=30, universal_newlines=True)
+    return result.returncode, result.stdout
+
+
+class BadParametersTest(unittest.TestCase):
+    def assertRejected(self, expected, *arguments):
+        # A node name per case: private parameters given on the command line stay on the
+        # parameter server, and must not leak into the next case.
+        node_name = "publisher_" + self.id().split(".")[-1]
+        expected = expected.replace("{node}", node_name)
+        code, output = run_node("__name:=" + node_name, *arguments)
+        self.assertNotEqual(code, 0, "skeleton_publisher accepted %s:\n%s" % (arguments, output))
+        self.assertIn("FATAL", output)
+        self.assertIn(expected, output)
+
+    def test_rate_out_of_range(self):
+        self.assertRejected("parameter /{node}/rate must be in (0, 10000] Hz", "_rate:=-5")
+
+    def test_rate_wrong_type(self):
+        self.assertRejected("parameter /{node}/rate must be a number, got a string", "_rate:=fast")
+
+    def test_speed_factor_negative(self):
+        self.assertRejected("parameter /{node}/speed_factor must be >= 0", "_speed_factor:=-1")
+
+    def test_loop_wrong_type(self):
+        self.assertRejected("parameter /{node}/loop must be true or false, got a string", "_loop:=maybe")
+
+    def test_body_id_characters(self):
+        self.assertRejected("parameter /{node}/body_id must be letters and digits only", "_body_id:=a-b")
+
+    def test_body_id_against_suffixed_urdf(self):
+        self.assertRejected("parameter /other_id/{node}/body_id is '2' but robot_description's frames "
+                            "carry the suffix '_3'", "__ns:=/other_id", "_body_id:=2")
+
+    def test_missing_motion_file(self):
+        self.assertRejected("/nonexistent/walk.yaml: cannot open the motion file", "_motion_file:=/nonexistent/walk.yaml")
+
+    def test_invalid_motion_file(self):
+        self.assertRejected("coefficient_nan.yaml:4:25: joints.waist.y.a[2]: expected a finite number",
+                            "_motion_file:=" + BAD_MOTION)
+
+    def test_missing_robot_description(self):
+        self.assertRejected("parameter /nowhere/robot_description is not set", "__ns:=/nowhere")
+
+    def test_invalid_robot_description(self):
+        self.assertRejected("the URDF root link must be 'body' or 'body_<id>', found 'pelvis'", "__ns:=/bad_urdf")
+
+    def test_good_parameters_run(self):
+        executable = roslib.packages.find_node("dressed_human", "skeleton_publisher")[0]
+        process = subprocess.Popen([executable, "__ns:=/other_id", "_body_id:=3", "_rate:=1000"],
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+        try:
+            with self.assertRaises(subprocess.TimeoutExpired):
+                process.wait(timeout=3)  # still running: it accepted its parameters
+        finally:
+            process.terminate()
+            process.wait(timeout=10)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dressed_human", "bad_parameters", BadParametersTest)
