@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""CPU of skeleton_publisher against robot_state_publisher, in one run, at 100 Hz and 1 kHz.
+
+Both publish TF for the same URDF at the same rate: our node from its Fourier motion; RSP from a
+JointState stream at that rate (produced by a second skeleton_publisher whose own TF goes nowhere;
+its CPU is not counted). Each TF stream has one subscriber. CPU is read from /proc (user+system
+time) over the same window, several windows per rate; medians are reported.
+
+Usage: bench/node_cpu.py [--seconds 10] [--windows 3] [--markdown docs/node_cpu.md]
+Needs the package built (build/devel/setup.bash) and a free ROS master port.
+"""
+import argparse
+import os
+import signal
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TICKS = os.sysconf("SC_CLK_TCK")
+
+
+def cpu_seconds(pid):
+    with open("/proc/%d/stat" % pid) as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / TICKS  # utime, stime
+
+
+def start(command, env):
+    return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            preexec_fn=os.setsid)
+
+
+def stop(process):
+    try:
+        os.killpg(process.pid, signal.SIGINT)
+        process.wait(timeout=15)
+    except (ProcessLookupError, subprocess.TimeoutExpired):
+        os.killpg(process.pid, signal.SIGKILL)
+
+
+def measure(rate, seconds, windows, env, urdf):
+    node = os.path.join(ROOT, "build", "devel", "lib", "dressed_human", "skeleton_publisher")
+    rsp = "/usr/lib/robot_state_publisher/robot_state_publisher"
+    processes = []
+    try:
+        subprocess.run(["rosparam", "set", "/robot_description", urdf], env=env, check=True)
+        subprocess.run(["rosparam", "set", "/rsp/robot_description", urdf], env=env, check=True)
+        ours = start([node, "__name:=ours", "_rate:=%g" % rate, "_publish_joint_states:=false"], env)
+        source = start([node, "__name:=joint_source", "_rate:=%g" % rate, "/tf:=/unused_tf",
+                        "/tf_static:=/unused_tf_static"], env)
+        theirs = start([rsp, "__ns:=/rsp", "_publish_frequency:=%g" % rate, "joint_states:=/joint_states",
+                        "/tf:=/rsp/tf", "/tf_static:=/rsp/tf_static"], env)
+        listeners = [start(["rostopic", "hz", topic], env) for topic in ("/tf", "/rsp/tf")]
+        processes = [ours, source, theirs] + listeners
+        time.sleep(4.0)  # connections settle
+        samples = {"skeleton_publisher": [], "robot_state_publisher": []}
+        for _ in range(windows):
+            begin = {name: cpu_seconds(p.pid) for name, p in (("skeleton_publisher", ours), ("robot_state_publisher", theirs))}
+            t0 = time.monotonic()
+            time.sleep(seconds)
+            elapsed = time.monotonic() - t0
+            for name, p in (("skeleton_publisher", ours), ("robot_state_publisher", theirs)):
+                samples[name].append(100.0 * (cpu_seconds(p.pid) - begin[name]) / elapsed)
+        return {name: statistics.median(values) for name, values in samples.items()}, samples
+    finally:
+        for process in processes:
+            stop(process)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--windows", type=int, default=3)
+    parser.add_argument("--rates", type=float, nargs="+", default=[100.0, 1000.0])
+    parser.add_argument("--markdown", default="")
+    args = parser.parse_args()
+
+    env = dict(os.environ, ROS_HOSTNAME="localhost", ROS_MASTER_URI="http://localhost:11411")
+    env["PATH"] = "/usr/bin:" + env.get("PATH", "")
+    with open(os.path.join(ROOT, "urdf", "human.urdf")) as f:
+        urdf = f.read()
+    master = start(["roscore", "-p", "11411"], env)
+    try:
+        time.sleep(4.0)
+        rows = []
+        for rate in args.rates:
+            medians, samples = measure(rate, args.seconds, args.windows, env, urdf)
+            ratio = medians["skeleton_publisher"] / medians["robot_state_publisher"]
+            rows.append((rate, medians["skeleton_publisher"], medians["robot_state_publisher"], ratio))
+            print("rate %g Hz: samples %s" % (rate, samples), file=sys.stderr)
+    finally:
+        stop(master)
+
+    cpu = os.popen("grep -m1 'model name' /proc/cpuinfo").read().split(":")[-1].strip()
+    lines = ["| TF rate | skeleton_publisher CPU | robot_state_publisher CPU | ratio |",
+             "|---|---|---|---|"]
+    for rate, ours, theirs, ratio in rows:
+        lines.append("| %g Hz | %.2f %% | %.2f %% | %.2f |" % (rate, ours, theirs, ratio))
+    lines.append("")
+    lines.append("Median of %d windows of %g s, %% of one core, on %s (%d cores); `bench/node_cpu.py`."
+                 % (args.windows, args.seconds, cpu, os.cpu_count()))
+    table = "\n".join(lines)
+    print(table)
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write(table + "\n")
+
+
+if __name__ == "__main__":
+    main()

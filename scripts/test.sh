@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test: the core's gtests, the rostests, and the
+# core's gtests again under AddressSanitizer + UndefinedBehaviorSanitizer. Exits non-zero if any
+# test fails. Usage: scripts/test.sh   (from anywhere; CI runs it through .ci/run)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+jobs=$(nproc 2>/dev/null || echo 2)
+
+echo "== installing Debian packages (if missing)"
+scripts/install_deps.sh
+
+# Debian's python must come first: a pyenv/conda python3 breaks catkin and rostest.
+export PATH="/usr/bin:$PATH"
+export ROS_HOSTNAME=localhost ROSCONSOLE_STDOUT_LINE_BUFFERED=1 PYTHONUNBUFFERED=1
+# Containers and chroots sometimes lack a resolvable localhost, which the ROS master needs.
+grep -qE '^127\.0\.0\.1[[:space:]].*\blocalhost\b' /etc/hosts 2>/dev/null || echo "127.0.0.1 localhost" >> /etc/hosts
+
+echo "== building (build/)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$jobs"
+
+echo "== building the core with ASan+UBSan (build_sanitize/)"
+cmake -S . -B build_sanitize -DDRESSED_HUMAN_CORE_ONLY=ON -DDRESSED_HUMAN_SANITIZE=ON \
+      -DDRESSED_HUMAN_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=Debug
+cmake --build build_sanitize -j"$jobs"
+
+status=0
+echo "== core tests under ASan+UBSan"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build_sanitize --output-on-failure -j"$jobs" || status=1
+
+echo "== all tests (core gtests and rostests)"
+ctest --test-dir build --output-on-failure || status=1
+
+if [ "$status" -ne 0 ]; then
+  echo "scripts/test.sh: SOME TESTS FAILED" >&2
+fi
+exit "$status"
