@@ -17,6 +17,8 @@ import subprocess
 import sys
 import time
 
+import rosgraph
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TICKS = os.sysconf("SC_CLK_TCK")
 
@@ -45,8 +47,9 @@ def measure(rate, seconds, windows, env, urdf):
     rsp = "/usr/lib/robot_state_publisher/robot_state_publisher"
     processes = []
     try:
-        subprocess.run(["rosparam", "set", "/robot_description", urdf], env=env, check=True)
-        subprocess.run(["rosparam", "set", "/rsp/robot_description", urdf], env=env, check=True)
+        master = rosgraph.Master("/node_cpu_benchmark", master_uri=env["ROS_MASTER_URI"])
+        master.setParam("/robot_description", urdf)
+        master.setParam("/rsp/robot_description", urdf)
         ours = start([node, "__name:=ours", "_rate:=%g" % rate, "_publish_joint_states:=false"], env)
         source = start([node, "__name:=joint_source", "_rate:=%g" % rate, "/tf:=/unused_tf",
                         "/tf_static:=/unused_tf_static"], env)

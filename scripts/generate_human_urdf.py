@@ -111,7 +111,7 @@ def rpy_from_matrix(m):
 
 
 def fmt(values):
-    return " ".join(repr(0.0 if abs(v) < 1e-15 else float(v)) for v in values)
+    return " ".join(repr(0.0 if abs(v) < 1e-15 else round(float(v), 12)) for v in values)
 
 
 def capsule_visual(length, radius, colour):
