@@ -1,0 +1,73 @@
+// The cell structure behind SkinRelief (paper 004 §3-4): Voronoi ridge cells (皮野) on a torus,
+// wobbled furrow walls, and nested levels with parent -> child links. Built once per parameter
+// set; SkinRelief evaluates heights from it.
+//
+// Why half-plane clipping instead of Boost.Polygon's voronoi_builder: each level-1 cell is the
+// intersection of the bisector half-planes of the ~30 seeds in its lattice window (exact in double
+// precision, O(cells)), and the same clipper gives the hierarchy what it really needs -- child
+// cells restricted to their parent polygon -- as well as the periodic images and the anisotropic
+// (stretched) metric of the directionality, none of which Boost's integer-input sweepline builds.
+// The test suite checks level-1 cells against Boost.Polygon's diagram of the same seeds.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace dressed_human {
+
+struct SkinReliefParameters;
+
+namespace skin_detail {
+
+/// One straight furrow segment bounding a cell, seen from that cell, plus its midpoint-displaced
+/// wobble. Everything is in the owning cell's frame (its periodic image at offset 0).
+struct Wall {
+  Eigen::Vector2d start;     ///< segment start in the shared (canonical) direction
+  Eigen::Vector2d tangent;   ///< unit, shared direction for both cells of the wall
+  Eigen::Vector2d normal;    ///< unit, out of the owning cell
+  double length = 0.0;
+  double centre_distance = 0.0;  ///< (start - centre) . normal, > 0
+  double centre_u = 0.0;         ///< (centre - start) . tangent / length
+  int wobble = -1;               ///< profile index into CellLevel::wobble_samples, -1 straight
+  double wobble_sign = 1.0;      ///< +1 when a positive profile sample moves the wall along `normal`
+  double wobble_extent = 0.0;    ///< max |profile sample|: the wall stays within +-extent of the line
+  int neighbour = -1;            ///< cell across the wall on this level; -1 for an inherited parent wall
+  Eigen::Vector2i neighbour_offset = Eigen::Vector2i::Zero();  ///< neighbour's periodic image
+};
+
+struct Cell {
+  Eigen::Vector2d centre;          ///< seed, in the cell's frame (level 1: inside [0,1)^2)
+  std::vector<Eigen::Vector2d> polygon;  ///< straight cell polygon, counter-clockwise
+  int first_wall = 0, wall_count = 0;
+  int parent = -1;                 ///< index on the previous level (-1 on level 1)
+  std::vector<int> children;       ///< indices on the next level
+  double wobble_margin = 0.0;      ///< max |wobble| of its walls (bounding-box padding)
+};
+
+struct CellLevel {
+  double spacing = 0.0;       ///< lattice spacing of the seeds (before stretching)
+  double depth = 0.0;         ///< relief depth in tile units
+  Eigen::Matrix2d metric = Eigen::Matrix2d::Identity();  ///< G: |d|^2 = d^T G d (stretch)
+  int subdivisions = 0;       ///< wobble profile has 2^subdivisions segments
+  std::vector<Cell> cells;
+  std::vector<Wall> walls;
+  std::vector<double> wobble_samples;  ///< (2^subdivisions + 1) samples per profile
+  // Level-1 acceleration grid: bucket -> candidate (cell, periodic offset) whose padded
+  // polygon overlaps the bucket, in CSR form.
+  int buckets_x = 0, buckets_y = 0;
+  std::vector<int> bucket_start;
+  std::vector<int> bucket_cell;
+  std::vector<Eigen::Vector2i> bucket_offset;
+};
+
+/// Build all levels. Throws std::invalid_argument for bad parameters (named).
+std::vector<CellLevel> buildCellHierarchy(const SkinReliefParameters& parameters);
+
+/// Validates parameters, throwing std::invalid_argument naming the first bad field.
+void validateParameters(const SkinReliefParameters& parameters);
+
+}  // namespace skin_detail
+}  // namespace dressed_human

@@ -1,0 +1,106 @@
+// Skin relief from a hierarchical Voronoi division (SPEC §5, paper 004): ridge cells (皮野)
+// bounded by furrows (皮溝), as a tileable height + normal map.
+//
+// Tile: the unit square [0,1)^2, periodic in both directions so the map wraps around a limb and
+// repeats without seams. Heights are in tile units (multiply by the physical tile size).
+// Pipeline per level (paper 004 §4):
+//  * seeds on a triangular lattice, each moved by uniform noise (jitter) -- §5.2, Fig. 14;
+//  * Voronoi cells of the seeds; level > 1 divides every parent cell again (children clipped to the
+//    parent polygon, parent -> child links kept) -- §4.3, Figs. 8-9;
+//  * cell walls wobbled by midpoint displacement, one shared polyline per wall -- Fig. 3, 15;
+//  * height: cast the ray centre -> p to the (wobbled) wall, s = |p - c| / |hit - c|, and read the
+//    Bezier cross-section at x = 1 - s (0 at the edge, 1 at the centre) -- §4.1, Figs. 4-7;
+//  * roundness: the ray parameter is combined over walls by a q-norm instead of a max, which
+//    stretches the profile away from the polygon corners and rounds the contours (Figs. 12-13);
+//  * directionality: distances in a metric stretched by `direction_stretch` along
+//    `direction_angle`, which elongates the cells like scaling their vertices (§4.2, Fig. 17);
+//  * height and gradient summed over levels (§4.3, Fig. 10).
+// Normals come from the exact gradient of the summed height field, so the normal map and the
+// height map describe the same surface (the paper uses the radial slope only, which ignores the
+// along-wall component where the ray meets a wall obliquely).
+#pragma once
+
+#include "dressed_human/core/bezier_profile.h"
+#include "dressed_human/core/buckling_pattern.h"  // ReliefSample
+#include "dressed_human/core/relief_map.h"
+#include "dressed_human/core/skin_cell_hierarchy.h"
+
+#include <array>
+#include <cstdint>
+
+namespace dressed_human {
+
+struct SkinReliefParameters {
+  double cell_size = 1.0 / 12.0;  ///< level-1 seed spacing in tile units, (0, 1]
+  int levels = 1;                 ///< hierarchy depth, 1..3
+  double child_cell_ratio = 0.4;  ///< child spacing / parent spacing, [0.1, 0.8]
+  double jitter = 0.35;           ///< uniform seed displacement, fraction of spacing, [0, 0.5]
+  double wobble = 0.12;           ///< midpoint displacement amplitude / wall length, [0, 0.3]
+  int wobble_subdivisions = 3;    ///< midpoint-displacement depth, 0..6
+  double wobble_roughness = 0.5;  ///< amplitude factor per subdivision, [0, 1]
+  BezierProfile profile = BezierProfile::fromEdgeSlope(3.0);  ///< cross-section ("slope")
+  double roundness = 0.0;         ///< 0 = polygonal contours, 1 = round, [0, 1]
+  double direction_angle = 0.0;   ///< radians from +u, direction the cells are stretched along
+  double direction_stretch = 1.0; ///< >= 1, 1 = no directionality
+  int directional_levels = 3;     ///< the stretch applies to levels 1..directional_levels
+  std::array<double, 3> level_depth{{0.08, 0.05, 0.035}};  ///< relief depth / level spacing, >= 0
+  std::uint32_t seed = 1;         ///< RNG seed (std::mt19937): same seed -> same map
+};
+
+class SkinRelief {
+ public:
+  /// Builds the cell hierarchy. Throws std::invalid_argument naming a bad parameter.
+  explicit SkinRelief(const SkinReliefParameters& parameters);
+
+  const SkinReliefParameters& parameters() const { return parameters_; }
+  int levelCount() const { return static_cast<int>(levels_.size()); }
+  std::size_t cellCount(int level) const { return levelAt(level).cells.size(); }
+  /// Parent index on level - 1 (-1 on level 0). Levels are numbered from 0 here.
+  int parentOf(int level, int cell) const;
+  const std::vector<int>& childrenOf(int level, int cell) const;
+  const skin_detail::CellLevel& levelAt(int level) const;
+
+  /// Height and gradient at tile point p (any real coordinates; wrapped into the tile), summed
+  /// over levels [0, level_limit) (level_limit < 0 = all).
+  ReliefSample sample(const Eigen::Vector2d& point, int level_limit = -1) const;
+  /// Only one level's contribution (the cells are still found through their parents).
+  ReliefSample sampleLevel(const Eigen::Vector2d& point, int level) const;
+  /// Cell index per level containing the point (after the wobble).
+  std::vector<int> cellsAt(const Eigen::Vector2d& point) const;
+
+  /// Render the tile at pixel centres ((column + 0.5) / width, (row + 0.5) / height).
+  /// only_level >= 0 renders that level alone. Level-1 cells are found with the bucket grid.
+  ReliefMap render(int width, int height, int only_level = -1) const;
+  /// Same map with level-1 cells found by scanning every seed and its 9 periodic images, and
+  /// children by scanning every seed of the level (keeping those of the pixel's parent): the
+  /// brute-force nearest-seed reference for tests and the benchmark.
+  ReliefMap renderBruteForce(int width, int height) const;
+
+ private:
+  struct Hit {
+    int cell = -1;
+    Eigen::Vector2i offset = Eigen::Vector2i::Zero();
+  };
+  // Straight (pre-wobble) hits of the previous pixel, reused while the point stays inside the
+  // same cell's bisector half-planes -- consecutive pixels mostly share cells.
+  struct RowCache {
+    Hit straight[3];
+    Hit parent[3];
+    bool valid[3] = {false, false, false};
+  };
+  bool insideStraightCell(int level, const Hit& hit, const Eigen::Vector2d& point) const;
+  Hit findLevelZero(const Eigen::Vector2d& point, bool brute_force) const;
+  Hit findChild(int level, const Hit& parent, const Eigen::Vector2d& point, bool brute_force) const;
+  Hit applyWobble(int level, Hit hit, const Eigen::Vector2d& point) const;
+  void accumulate(int level, const Hit& hit, const Eigen::Vector2d& point, ReliefSample& sum) const;
+  ReliefSample evaluate(const Eigen::Vector2d& point, int first_level, int end_level, bool brute_force,
+                        RowCache* cache = nullptr) const;
+  ReliefMap renderWith(int width, int height, int only_level, bool brute_force) const;
+
+  SkinReliefParameters parameters_;
+  std::vector<skin_detail::CellLevel> levels_;
+  BezierProfileTable profile_table_;
+  int roundness_exponent_ = 0;  // 0 = max (polygonal)
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,143 @@
+#!/usr/bin/python3
+"""Regenerate docs/relief/: run the relief_images tool, then assemble the figure panels.
+
+Usage: scripts/make_relief_figures.py [build_dir]   (default: build_relief next to this repo's root)
+The tool writes raw PNGs/CSVs into <build_dir>/relief_raw/; this script composes into docs/relief/
+  fig6_buckling_solution.png      h1, w, h2, h1+h2 and the bend vs alpha (seed Fig. 6, Lx = Ly = 1)
+  fig8_wrinkles_vs_compression.png  X / Y-Y / I wrinkles for alpha 1 .. 0.6, exact and 8 Gaussians
+  wrinkle_growth.png              one map, compression growing row by row
+  gaussian_rms_vs_terms.png       RMS error of the Gaussian approximation vs number of Gaussians
+  fig11_slope.png ... fig17_direction.png, fig18_skin.png   skin parameter sweeps (paper 004)
+  skin_tiling_2x2.png             the shaded skin tile repeated 2 x 2 (seams would show here)
+  skin_mip_levels.png             normal map mip chain
+"""
+import csv
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image as mpimg  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build_relief")
+OUT = os.path.join(ROOT, "docs", "relief")
+# Raw tool output (uncompressed PNGs, ~13 MB) stays in the build tree; only panels go to docs/.
+RAW = os.path.join(BUILD, "relief_raw")
+
+
+def grid(names, titles, path, columns, suptitle, cell=2.6):
+    rows = (len(names) + columns - 1) // columns
+    fig, axes = plt.subplots(rows, columns, figsize=(cell * columns, cell * rows + 0.5), squeeze=False)
+    for axis in axes.flat:
+        axis.axis("off")
+    for axis, name, title in zip(axes.flat, names, titles):
+        image = mpimg.imread(os.path.join(RAW, name + ".png"))
+        axis.imshow(image, cmap="gray", vmin=0, vmax=1, interpolation="nearest")
+        axis.set_title(title, fontsize=9)
+    fig.suptitle(suptitle, fontsize=11)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, path), dpi=110)
+    plt.close(fig)
+
+
+def read_csv(name):
+    with open(os.path.join(RAW, name)) as handle:
+        return list(csv.DictReader(handle))
+
+
+def main():
+    os.makedirs(RAW, exist_ok=True)
+    tool = os.path.join(BUILD, "relief_images")
+    if not os.path.exists(tool):
+        sys.exit(f"{tool} not found: build first (cmake --build {BUILD} --target relief_images)")
+    subprocess.run([tool, RAW], check=True)
+
+    rows = read_csv("buckling_solution.csv")
+    alpha = np.array([float(r["alpha"]) for r in rows])
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    for key, label in [("h1", "h1"), ("w", "w"), ("h2", "h2"), ("thickness", "h1 + h2")]:
+        left.plot(alpha, [float(r[key]) for r in rows], label=label)
+    left.set_xlabel("alpha (1 = uncompressed)")
+    left.set_title("Eq. 9-10 solved, L_x = L_y = 1")
+    left.invert_xaxis()
+    left.legend()
+    right.plot(alpha, [float(r["bend_angle_deg"]) for r in rows])
+    right.set_xlabel("alpha")
+    right.set_ylabel("bend 2 atan(w/h2) [deg]")
+    right.invert_xaxis()
+    right.set_title("bend between chained Y/X base planes")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "fig6_buckling_solution.png"), dpi=110)
+    plt.close(fig)
+
+    alphas = ["100", "095", "090", "080", "070", "060"]
+    names, titles = [], []
+    for chain, label in [("X", "X-X"), ("X_gauss8", "X-X, 8 Gaussians"), ("YY", "Y-Y"), ("YY_gauss8", "Y-Y, 8 Gaussians"), ("I", "I")]:
+        for a in alphas:
+            names.append(f"wrinkle_{chain}_alpha{a}")
+            titles.append(f"{label}  alpha={int(a) / 100:.2f}")
+    grid(names, titles, "fig8_wrinkles_vs_compression.png", len(alphas),
+         "Buckling wrinkles growing with compression (Lambert, Eq. 12)", cell=2.2)
+    grid(["wrinkle_growth_exact", "wrinkle_growth_gauss8"], ["exact folds", "8 Gaussians"], "wrinkle_growth.png", 2,
+         "alpha per row: 1.0, 0.97, 0.92, 0.85, 0.75, 0.6 (top to bottom)", cell=4.0)
+
+    errors = read_csv("gaussian_error.csv")
+    fig, axis = plt.subplots(figsize=(6.5, 4.5))
+    for pattern in ["I", "Y", "X"]:
+        for a, style in [("0.8", "--"), ("0.6", "-")]:
+            picked = [r for r in errors if r["pattern"] == pattern and r["alpha"] == a]
+            axis.plot([int(r["terms"]) for r in picked], [float(r["rms_error"]) / float(r["max_height"]) for r in picked],
+                      style, marker="o", label=f"{pattern}, alpha={a}")
+    axis.set_xscale("log", base=2)
+    axis.set_yscale("log")
+    axis.set_xlabel("number of Gaussians K")
+    axis.set_ylabel("RMS error / h1")
+    axis.set_title("Gaussian approximation vs exact fold surface")
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "gaussian_rms_vs_terms.png"), dpi=110)
+    plt.close(fig)
+
+    sweeps = [
+        ("fig11_slope.png", "Cross-section slope (paper 004 Fig. 11)",
+         ["skin_slope_0.8", "skin_slope_3", "skin_slope_12", "skin_slope_late"],
+         ["edge slope 0.8", "edge slope 3", "edge slope 12", "late rise, sharp crest"]),
+        ("fig13_roundness.png", "Roundness (Figs. 12-13)",
+         ["skin_roundness_000", "skin_roundness_040", "skin_roundness_100"], ["roundness 0", "0.4", "1"]),
+        ("fig14_jitter.png", "Seed jitter on the triangular lattice (Fig. 14)",
+         ["skin_jitter_000", "skin_jitter_020", "skin_jitter_045"], ["jitter 0", "0.2", "0.45"]),
+        ("fig15_wobble.png", "Midpoint-displacement wobble (Fig. 15)",
+         ["skin_wobble_000", "skin_wobble_012", "skin_wobble_025"], ["wobble 0", "0.12", "0.25"]),
+        ("fig16_levels.png", "Hierarchy levels (Fig. 16)",
+         ["skin_levels_1", "skin_levels_2", "skin_levels_3"], ["1 level", "2 levels", "3 levels"]),
+        ("fig17_direction.png", "Directionality, stretch 2.5 (Fig. 17)",
+         ["skin_direction_none", "skin_direction_horizontal", "skin_direction_vertical"], ["none", "horizontal", "vertical"]),
+        ("fig18_skin.png", "Combined skin (Fig. 18: a none, b vertical, c horizontal, f level 1 only)",
+         ["skin_fig18_a", "skin_fig18_b", "skin_fig18_c", "skin_fig18_f"], ["(a)", "(b)", "(c)", "(f)"]),
+    ]
+    for path, title, names, labels in sweeps:
+        grid(names, labels, path, len(names), title, cell=3.2)
+
+    tile = mpimg.imread(os.path.join(RAW, "skin_shaded_mip0.png"))
+    fig, axis = plt.subplots(figsize=(8, 8))
+    axis.imshow(np.tile(tile, (2, 2)), cmap="gray", vmin=0, vmax=1, interpolation="nearest")
+    axis.axis("off")
+    axis.set_title("512x512 skin tile repeated 2x2: no seams")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "skin_tiling_2x2.png"), dpi=110)
+    plt.close(fig)
+
+    mips = sorted(n[:-4] for n in os.listdir(RAW) if n.startswith("skin_normal_mip"))
+    grid(mips, [m.replace("skin_normal_", "") for m in mips], "skin_mip_levels.png", len(mips),
+         "Tangent-space normal map mip chain (gradient box filter)", cell=2.4)
+    print("figures in", OUT)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,74 @@
+#include "dressed_human/core/lambert_shading.h"
+#include "dressed_human/core/png_writer.h"
+#include "dressed_human/core/relief_map.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace dressed_human {
+namespace {
+
+TEST(PngWriter, ChecksumsMatchKnownValues) {
+  const std::string iend = "IEND";
+  EXPECT_EQ(crc32OfBytes(reinterpret_cast<const std::uint8_t*>(iend.data()), iend.size()), 0xAE426082u);
+  const std::string wiki = "Wikipedia";
+  EXPECT_EQ(adler32OfBytes(reinterpret_cast<const std::uint8_t*>(wiki.data()), wiki.size()), 0x11E60398u);
+}
+
+TEST(PngWriter, WritesAValidLookingFile) {
+  const std::string path = ::testing::TempDir() + "relief_test.png";
+  std::vector<std::uint8_t> pixels(300 * 250 * 3);  // > 65535 bytes: several stored blocks
+  for (std::size_t at = 0; at < pixels.size(); ++at) pixels[at] = static_cast<std::uint8_t>(at * 7);
+  writePng8(path, 300, 250, 3, pixels);
+  std::ifstream stream(path, std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), pixels.size());
+  EXPECT_EQ(bytes[1], 'P');
+  EXPECT_EQ(bytes[12], 'I');
+  EXPECT_EQ(bytes[16 + 3], 300 % 256);  // width, big-endian
+  EXPECT_EQ(std::string(bytes.end() - 8, bytes.end() - 4), "IEND");
+  std::remove(path.c_str());
+  EXPECT_THROW(writePng8(path, 3, 3, 3, pixels), std::invalid_argument);
+  EXPECT_THROW(writePng8(path, 300, 250, 5, pixels), std::invalid_argument);
+}
+
+TEST(ReliefMap, MipChainAveragesHeightAndGradient) {
+  ReliefMap map(8, 4);
+  for (int row = 0; row < 4; ++row) {
+    for (int column = 0; column < 8; ++column) {
+      map.heights[map.index(column, row)] = static_cast<float>(column + 10 * row);
+      map.slope_u[map.index(column, row)] = 1.0f;
+      map.slope_v[map.index(column, row)] = static_cast<float>(row);
+    }
+  }
+  const std::vector<ReliefMap> chain = buildMipChain(map);
+  ASSERT_EQ(chain.size(), 3u);  // 8x4, 4x2, 2x1 (stops at the odd height)
+  EXPECT_EQ(chain[1].width, 4);
+  EXPECT_EQ(chain[1].height, 2);
+  EXPECT_FLOAT_EQ(chain[1].heights[chain[1].index(0, 0)], 0.25f * (0 + 1 + 10 + 11));
+  EXPECT_FLOAT_EQ(chain[1].slope_v[chain[1].index(1, 1)], 2.5f);
+  for (const ReliefMap& level : chain) {
+    for (int row = 0; row < level.height; ++row)
+      for (int column = 0; column < level.width; ++column) EXPECT_NEAR(level.normalAt(column, row).norm(), 1.0f, 1e-6f);
+  }
+  EXPECT_EQ(buildMipChain(map, 2).size(), 2u);
+  EXPECT_THROW(ReliefMap(0, 3), std::invalid_argument);
+}
+
+TEST(LambertShading, Equation12) {
+  EXPECT_DOUBLE_EQ(lambertIntensity({0, 0, 2}, {0, 0, 5}, 0.8, 0.5), 0.4);
+  EXPECT_NEAR(lambertIntensity({1, 0, 1}, {0, 0, 1}), std::sqrt(0.5), 1e-15);
+  EXPECT_DOUBLE_EQ(lambertIntensity({0, 0, -1}, {0, 0, 1}), 0.0);
+  EXPECT_THROW(lambertIntensity({0, 0, 0}, {0, 0, 1}), std::invalid_argument);
+  ReliefMap flat(2, 2);
+  const std::vector<std::uint8_t> grey = shadeReliefMap(flat, {0, 0, 1});
+  EXPECT_EQ(grey[0], 255);
+}
+
+}  // namespace
+}  // namespace dressed_human
