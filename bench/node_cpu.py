@@ -20,13 +20,16 @@ import time
 import rosgraph
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TICKS = os.sysconf("SC_CLK_TCK")
+MOTION = os.path.join(ROOT, "config", "motions", "walk.yaml")
 
 
 def cpu_seconds(pid):
-    with open("/proc/%d/stat" % pid) as f:
-        fields = f.read().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / TICKS  # utime, stime
+    """CPU time of the process so far, from the scheduler's nanosecond counter (all threads)."""
+    total = 0
+    for thread in os.listdir("/proc/%d/task" % pid):
+        with open("/proc/%d/task/%s/schedstat" % (pid, thread)) as f:
+            total += int(f.read().split()[0])
+    return total * 1e-9
 
 
 def start(command, env):
@@ -50,8 +53,9 @@ def measure(rate, seconds, windows, env, urdf):
         master = rosgraph.Master("/node_cpu_benchmark", master_uri=env["ROS_MASTER_URI"])
         master.setParam("/robot_description", urdf)
         master.setParam("/rsp/robot_description", urdf)
-        ours = start([node, "__name:=ours", "_rate:=%g" % rate, "_publish_joint_states:=false"], env)
-        source = start([node, "__name:=joint_source", "_rate:=%g" % rate, "/tf:=/unused_tf",
+        ours = start([node, "__name:=ours", "_rate:=%g" % rate, "_publish_joint_states:=false",
+                      "_motion_file:=" + MOTION], env)
+        source = start([node, "__name:=joint_source", "_rate:=%g" % rate, "_motion_file:=" + MOTION, "/tf:=/unused_tf",
                         "/tf_static:=/unused_tf_static"], env)
         theirs = start([rsp, "__ns:=/rsp", "_publish_frequency:=%g" % rate, "joint_states:=/joint_states",
                         "/tf:=/rsp/tf", "/tf_static:=/rsp/tf_static"], env)
@@ -66,6 +70,9 @@ def measure(rate, seconds, windows, env, urdf):
             elapsed = time.monotonic() - t0
             for name, p in (("skeleton_publisher", ours), ("robot_state_publisher", theirs)):
                 samples[name].append(100.0 * (cpu_seconds(p.pid) - begin[name]) / elapsed)
+        for process in processes:
+            if process.poll() is not None:
+                raise RuntimeError("%s exited early with code %s" % (process.args[0], process.returncode))
         return {name: statistics.median(values) for name, values in samples.items()}, samples
     finally:
         for process in processes:

@@ -23,13 +23,13 @@ if [ -n "${DISPLAY:-}" ]; then
 fi
 
 echo "demo: no DISPLAY: running rviz under Xvfb; screenshots go to $root/build/demo_screenshot.png"
-screenshot_loop() {
-  while sleep 5; do
-    import -window root "$root/build/demo_screenshot.png.tmp.png" 2>/dev/null &&
-      mv "$root/build/demo_screenshot.png.tmp.png" "$root/build/demo_screenshot.png"
-  done
-}
-export -f screenshot_loop
-export root
-exec xvfb-run -a -s "-screen 0 1280x1024x24" bash -c \
-  'screenshot_loop & exec roslaunch dressed_human demo.launch rviz_args:=--disable-anti-aliasing "$@"' demo "$@"
+# xvfb-run is a /bin/sh (dash) script, and dash drops exported bash functions from the
+# environment: the screenshot loop is written out inside the command instead. It stops when
+# roslaunch (which replaces the inner bash, so has its PID) exits.
+exec xvfb-run -a -s "-screen 0 1280x1024x24" bash -c '
+  shot=$1; shift
+  (while sleep 5 && kill -0 $$ 2>/dev/null; do
+     import -window root "$shot.tmp.png" 2>/dev/null && mv "$shot.tmp.png" "$shot"
+   done) &
+  exec roslaunch dressed_human demo.launch rviz_args:=--disable-anti-aliasing "$@"' \
+  demo "$root/build/demo_screenshot.png" "$@"

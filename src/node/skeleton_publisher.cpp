@@ -86,7 +86,7 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
   kinematics_ = std::make_unique<ForwardKinematics>(skeleton);
   evaluator_ = std::make_unique<MotionEvaluator>(loadMotionFile(settings_.motion_file));
 
-  transforms_.push_back(named(settings_.world_frame, published(skeleton.rootFrame())));
+  transforms_.transforms.push_back(named(settings_.world_frame, published(skeleton.rootFrame())));
   for (const ArticulatedJoint& joint : skeleton.joints()) {
     const Bone& bone = skeleton.bone(static_cast<std::size_t>(joint.bone));
     const std::string parent = bone.parent < 0 ? skeleton.rootFrame()
@@ -94,17 +94,17 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
     const std::array<std::string, 4> chain = {parent, joint.intermediate_links[0], joint.intermediate_links[1],
                                               skeleton.frameName(bone.name)};
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
-      transforms_.push_back(named(published(chain[d]), published(chain[d + 1])));
+      transforms_.transforms.push_back(named(published(chain[d]), published(chain[d + 1])));
       joint_state_.name.push_back(published(joint.urdf_joints[d]));
     }
   }
   joint_state_.position.resize(kDofCount);
   joint_state_.velocity.resize(kDofCount);
 
+  tf_publisher_ = node.advertise<tf2_msgs::TFMessage>("/tf", 100);
   if (settings_.publish_joint_states) {
     joint_state_publisher_ = node.advertise<sensor_msgs::JointState>("joint_states", 10);
   }
-  timer_ = node.createTimer(ros::Duration(1.0 / settings_.rate), &SkeletonPublisher::onTimer, this);
   ROS_INFO("skeleton_publisher: %s at %.1f Hz (speed x%.2f), root %s in %s", settings_.motion_file.c_str(),
            settings_.rate, settings_.speed_factor, published(skeleton.rootFrame()).c_str(),
            settings_.world_frame.c_str());
@@ -126,7 +126,18 @@ void SkeletonPublisher::publishStaticTransforms(const ros::Time& stamp) {
   static_broadcaster_.sendTransform(fixed);
 }
 
-void SkeletonPublisher::onTimer(const ros::TimerEvent&) {
+void SkeletonPublisher::run() {
+  // Under simulated time, sleeping from time zero never returns: wait for the first /clock.
+  if (!ros::Time::waitForValid()) return;
+  ros::Rate rate(settings_.rate);
+  while (ros::ok()) {
+    tick();
+    ros::spinOnce();
+    rate.sleep();
+  }
+}
+
+void SkeletonPublisher::tick() {
   const ros::Time now = ros::Time::now();
   if (now.isZero()) return;  // simulated time has not started yet
   if (started_ && now < last_time_) {
@@ -153,10 +164,11 @@ void SkeletonPublisher::onTimer(const ros::TimerEvent&) {
   root.rotation = heading * root.rotation;
   kinematics_->compute(root, angles_, pose_);
 
-  copy(pose_.root, transforms_[0].transform);
-  for (std::size_t i = 0; i < kDofCount; ++i) copy(pose_.dof_transforms[i], transforms_[i + 1].transform);
-  for (auto& transform : transforms_) transform.header.stamp = now;
-  broadcaster_.sendTransform(transforms_);
+  auto& transforms = transforms_.transforms;
+  copy(pose_.root, transforms[0].transform);
+  for (std::size_t i = 0; i < kDofCount; ++i) copy(pose_.dof_transforms[i], transforms[i + 1].transform);
+  for (auto& transform : transforms) transform.header.stamp = now;
+  tf_publisher_.publish(transforms_);
 
   if (settings_.publish_joint_states) {
     joint_state_.header.stamp = now;

@@ -9,7 +9,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/static_transform_broadcaster.h>
-#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include "dressed_human/core/forward_kinematics.h"
 #include "dressed_human/core/motion_evaluator.h"
@@ -36,8 +36,13 @@ class SkeletonPublisher {
   // Throws (ParameterError, SkeletonError, MotionError) with a message naming what is wrong.
   SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle private_node);
 
+  // Publishes at the configured rate until ROS shuts down. Ticks run in the calling thread,
+  // paced by ros::Rate (simulated time aware): a ros::Timer would hand every tick from the timer
+  // thread to the spinner thread, and those context switches cost more than the tick itself.
+  void run();
+
  private:
-  void onTimer(const ros::TimerEvent&);
+  void tick();
   void publishStaticTransforms(const ros::Time& stamp);
   std::string published(const std::string& urdf_name) const { return urdf_name + extra_suffix_; }
 
@@ -49,13 +54,14 @@ class SkeletonPublisher {
   JointAngles angles_{};
   JointAngles velocities_{};
   SkeletonPose pose_;
-  std::vector<geometry_msgs::TransformStamped> transforms_;  // root, then the 48 DOFs
+  // Root, then the 48 DOFs; frame names are set once and the message is published in place
+  // (tf2_ros::TransformBroadcaster would copy every frame name on every tick).
+  tf2_msgs::TFMessage transforms_;
   sensor_msgs::JointState joint_state_;
 
-  tf2_ros::TransformBroadcaster broadcaster_;
+  ros::Publisher tf_publisher_;
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;
   ros::Publisher joint_state_publisher_;
-  ros::Timer timer_;
   ros::Time start_time_;
   ros::Time last_time_;
   bool started_ = false;

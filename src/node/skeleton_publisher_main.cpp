@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle private_node("~");
   try {
     dressed_human::SkeletonPublisher publisher(node, private_node);
-    ros::spin();
+    publisher.run();
   } catch (const std::exception& error) {
     ROS_FATAL("skeleton_publisher: %s", error.what());
     return 1;
