@@ -15,7 +15,7 @@ packages=(
   ros-robot-state-publisher joint-state-publisher tf2-tools python3-tf2-ros
   python3-sensor-msgs python3-tf2-msgs python3-geometry-msgs
   # tests and benchmarks
-  libgtest-dev googletest libbenchmark-dev
+  libgtest-dev googletest libbenchmark-dev clang libclang-rt-14-dev
   # headless rviz and screenshots
   xvfb xauth x11-apps mesa-utils libgl1-mesa-dri imagemagick
   # charts

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes config/motions/walk.yaml: a hand-made walk from textbook gait keyframes (degrees over the
+"""Writes config/motions/hand_made_walk.yaml: a hand-made walk from textbook gait keyframes (degrees over the
 gait cycle, left heel strike at 0 %), turned into Eq. 1 coefficients by a discrete Fourier
 transform of the piecewise-linear keyframe curve. Standard library only.
 
@@ -94,7 +94,7 @@ def main():
               "    roll: %s" % series(sine(math.radians(3), 2)),
               "    pitch: %s" % series(),
               "    yaw: %s" % series(cosine(math.radians(-4)))]
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "motions", "walk.yaml")
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "motions", "hand_made_walk.yaml")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 

@@ -33,6 +33,9 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 echo "== all tests (core gtests and rostests)"
 ctest --test-dir build --output-on-failure || status=1
 
+echo "== fuzzing the motion-capture parsers (short run; fuzz/run_fuzzers.sh 600 for the long one)"
+fuzz/run_fuzzers.sh "${FUZZ_SECONDS:-20}" "$root/build_fuzz" || status=1
+
 if [ "$status" -ne 0 ]; then
   echo "scripts/test.sh: SOME TESTS FAILED" >&2
 fi

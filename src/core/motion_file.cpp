@@ -189,7 +189,8 @@ void writeList(std::ostream& out, const std::vector<double>& values) {
   out << ']';
 }
 
-void writeSeries(std::ostream& out, const FourierSeries& s, double default_period, const std::string& note) {
+void writeSeries(std::ostream& out, const FourierSeries& s, double default_period, const std::string& note,
+                 const double* rms_residual) {
   out << "{a0: " << s.a0;
   if (s.order() > 0) {
     out << ", a: ";
@@ -199,6 +200,7 @@ void writeSeries(std::ostream& out, const FourierSeries& s, double default_perio
   }
   if (s.period != default_period) out << ", period: " << s.period;
   if (s.phase != 0.0) out << ", phase: " << s.phase;
+  if (rms_residual) out << ", rms_residual: " << *rms_residual;
   out << '}';
   if (!note.empty()) out << "  # " << note;
   out << '\n';
@@ -207,11 +209,16 @@ void writeSeries(std::ostream& out, const FourierSeries& s, double default_perio
 }  // namespace
 
 void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string& header_comment,
-                     const std::map<std::string, std::string>& notes) {
+                     const std::map<std::string, std::string>& notes,
+                     const std::map<std::string, double>& rms_residuals) {
   motion.validate();
   const auto note = [&](std::size_t i) {
     const auto found = notes.find(motion.seriesName(i));
     return found == notes.end() ? std::string() : found->second;
+  };
+  const auto residual = [&](std::size_t i) -> const double* {
+    const auto found = rms_residuals.find(motion.seriesName(i));
+    return found == rms_residuals.end() ? nullptr : &found->second;
   };
   std::ostringstream text;
   text << std::setprecision(std::numeric_limits<double>::max_digits10);
@@ -223,18 +230,20 @@ void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string&
     text << "  " << humanJointNames()[j] << ":\n";
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
       text << "    " << kDofNames[d] << ": ";
-      writeSeries(text, motion.dofs[j * kDofsPerJoint + d], motion.period, note(j * kDofsPerJoint + d));
+      writeSeries(text, motion.dofs[j * kDofsPerJoint + d], motion.period, note(j * kDofsPerJoint + d),
+                  residual(j * kDofsPerJoint + d));
     }
   }
   text << "root:\n  forward_speed: " << motion.root.forward_speed << "\n  translation:\n";
   for (std::size_t k = 0; k < 3; ++k) {
     text << "    " << kRootTranslationNames[k] << ": ";
-    writeSeries(text, motion.root.translation[k], motion.period, note(kDofCount + k));
+    writeSeries(text, motion.root.translation[k], motion.period, note(kDofCount + k), residual(kDofCount + k));
   }
   text << "  rotation:\n";
   for (std::size_t k = 0; k < 3; ++k) {
     text << "    " << kRootRotationNames[k] << ": ";
-    writeSeries(text, motion.root.rotation[k], motion.period, note(kDofCount + 3 + k));
+    writeSeries(text, motion.root.rotation[k], motion.period, note(kDofCount + 3 + k),
+                residual(kDofCount + 3 + k));
   }
   out << text.str();
 }

@@ -30,8 +30,10 @@ Motion loadMotionFile(const std::string& path);
 Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_name);
 
 // Writes a motion in the layout above; `notes` (series name -> text) become comments after
-// each series, e.g. a fit's order and residual.
+// each series, e.g. a fit's order and residual; `rms_residuals` (series name -> value) are
+// written as each series' rms_residual key.
 void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string& header_comment = "",
-                     const std::map<std::string, std::string>& notes = {});
+                     const std::map<std::string, std::string>& notes = {},
+                     const std::map<std::string, double>& rms_residuals = {});
 
 }  // namespace dressed_human

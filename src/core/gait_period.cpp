@@ -1,0 +1,110 @@
+#include "dressed_human/core/gait_period.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "dressed_human/core/motion.h"
+
+namespace dressed_human {
+namespace {
+
+std::vector<double> withoutStraightLine(const std::vector<double>& values) {
+  const double n = static_cast<double>(values.size());
+  double mean_i = 0.0;
+  double mean_v = 0.0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    mean_i += static_cast<double>(i) / n;
+    mean_v += values[i] / n;
+  }
+  double covariance = 0.0;
+  double variance = 0.0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    covariance += (static_cast<double>(i) - mean_i) * (values[i] - mean_v);
+    variance += (static_cast<double>(i) - mean_i) * (static_cast<double>(i) - mean_i);
+  }
+  const double slope = variance > 0.0 ? covariance / variance : 0.0;
+  std::vector<double> residual(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) residual[i] = values[i] - mean_v - slope * (static_cast<double>(i) - mean_i);
+  return residual;
+}
+
+std::string seconds(double value) {
+  std::ostringstream text;
+  text.precision(3);
+  text << value << " s";
+  return text.str();
+}
+
+}  // namespace
+
+PeriodEstimate estimateGaitPeriod(const std::vector<std::vector<double>>& channels, double frame_time,
+                                  const PeriodOptions& options) {
+  if (!std::isfinite(frame_time) || frame_time <= 0.0) throw MotionError("period estimation: the frame time must be > 0");
+  if (channels.empty()) throw MotionError("period estimation: no channels");
+  const std::size_t frames = channels.front().size();
+  std::vector<std::vector<double>> detrended;
+  double energy = 0.0;
+  for (const std::vector<double>& channel : channels) {
+    if (channel.size() != frames) throw MotionError("period estimation: channels of different lengths");
+    for (const double v : channel) {
+      if (!std::isfinite(v)) throw MotionError("period estimation: a sample is not a finite number");
+    }
+    detrended.push_back(withoutStraightLine(channel));
+    for (const double v : detrended.back()) energy += v * v;
+  }
+  const std::size_t min_lag = std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(options.min_period / frame_time)));
+  std::size_t max_lag = frames / 2;
+  if (options.max_period > 0.0) {
+    max_lag = std::min(max_lag, static_cast<std::size_t>(std::floor(options.max_period / frame_time)));
+  }
+  const double duration = static_cast<double>(frames) * frame_time;
+  if (max_lag < min_lag + 2) {
+    throw MotionError("too few frames to estimate the period: " + std::to_string(frames) + " frames (" +
+                      seconds(duration) + ") do not hold two cycles of at least " + seconds(options.min_period) +
+                      "; give the period (--period) if the record is a single cycle");
+  }
+  if (!(energy > 1e-20)) throw MotionError("no motion: every channel is constant, there is no period to find");
+
+  PeriodEstimate estimate;
+  estimate.autocorrelation.assign(max_lag + 1, 0.0);
+  for (std::size_t lag = 0; lag <= max_lag; ++lag) {
+    double product = 0.0;
+    double head = 0.0;
+    double tail = 0.0;
+    for (const std::vector<double>& x : detrended) {
+      for (std::size_t i = 0; i + lag < frames; ++i) {
+        product += x[i] * x[i + lag];
+        head += x[i] * x[i];
+        tail += x[i + lag] * x[i + lag];
+      }
+    }
+    estimate.autocorrelation[lag] = head > 0.0 && tail > 0.0 ? product / std::sqrt(head * tail) : 0.0;
+  }
+  const std::vector<double>& r = estimate.autocorrelation;
+  std::size_t best = 0;
+  for (std::size_t lag = min_lag; lag < max_lag; ++lag) {
+    const bool peak = r[lag] >= r[lag - 1] && r[lag] > r[lag + 1];
+    if (peak && (best == 0 || r[lag] > r[best])) best = lag;
+  }
+  if (best == 0) {
+    throw MotionError("no clear period: the autocorrelation has no peak between " + seconds(min_lag * frame_time) +
+                      " and " + seconds(max_lag * frame_time) + " (is this a periodic motion, with two cycles?)");
+  }
+  if (r[best] < options.min_correlation) {
+    std::ostringstream text;
+    text.precision(3);
+    text << "no clear period: the best autocorrelation peak is " << r[best] << " at " << seconds(best * frame_time)
+         << ", below " << options.min_correlation << " (the motion does not repeat)";
+    throw MotionError(text.str());
+  }
+  const double curvature = r[best - 1] - 2.0 * r[best] + r[best + 1];
+  double shift = curvature < 0.0 ? 0.5 * (r[best - 1] - r[best + 1]) / curvature : 0.0;
+  shift = std::max(-0.5, std::min(0.5, shift));
+  estimate.period = (static_cast<double>(best) + shift) * frame_time;
+  estimate.correlation = r[best];
+  return estimate;
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,355 @@
+// fit_motion: motion capture (BVH, OpenSim .mot/.sto) -> our Fourier motion YAML (SPEC Eq. 1).
+// Prints the period, each series' order and residual, and the joint-position error; optionally a
+// CSV of accuracy and evaluation cost against the order, for scripts/chart_fourier_order.py.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dressed_human/core/bvh_file.h"
+#include "dressed_human/core/fit_accuracy.h"
+#include "dressed_human/core/forward_kinematics.h"
+#include "dressed_human/core/mocap_joint_map.h"
+#include "dressed_human/core/mocap_retarget.h"
+#include "dressed_human/core/motion_evaluator.h"
+#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/motion_fit.h"
+#include "dressed_human/core/opensim_motion_file.h"
+#include "dressed_human/core/skeleton.h"
+
+namespace dh = dressed_human;
+
+namespace {
+
+constexpr double kRadiansToDegrees = 180.0 / 3.14159265358979323846;
+
+const char* const kUsage =
+    "Usage: fit_motion INPUT [options]\n"
+    "Fits our skeleton's motion (one Fourier series per DOF, SPEC Eq. 1) to motion capture and\n"
+    "writes it as a motion YAML file.\n"
+    "\n"
+    "INPUT: a BVH file (.bvh) or an OpenSim motion file (.mot, .sto).\n"
+    "Options:\n"
+    "  -o, --output FILE     write the motion YAML here (default: standard output)\n"
+    "  --format bvh|mot      input format (default: from the extension)\n"
+    "  --map FILE            joint map YAML (default: built-in CMU BVH / ASF names, OpenSim gait2392)\n"
+    "  --urdf FILE           our skeleton (default: urdf/human.urdf)\n"
+    "  --period SECONDS      gait period (default: estimated by autocorrelation; needs two cycles)\n"
+    "  --tolerance-deg D     RMS residual every angle series must reach, degrees (default 0.5)\n"
+    "  --tolerance-mm MM     RMS residual every root translation series must reach, mm (default 2)\n"
+    "  --max-order M         cap on the order m of any series (default 8)\n"
+    "  --order M             every series gets exactly order M (no tolerance search)\n"
+    "  --skip-frames N       drop N frames at the start (default: auto, drops a leading bind-pose frame)\n"
+    "  --name NAME           motion name in the file (default: the input's file name stem)\n"
+    "  --sweep-csv FILE      also write accuracy and evaluation cost for m = 1..--sweep-max\n"
+    "  --sweep-max M         highest order of the sweep (default 12)\n"
+    "  --timing-calls N      MotionEvaluator::evaluate calls timed per order in the sweep (default 200000)\n"
+    "  -q, --quiet           no report on standard error\n"
+    "  -h, --help            this text\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Arguments {
+  std::string input;
+  std::string output;
+  std::string format;
+  std::string map;
+  std::string urdf = "urdf/human.urdf";
+  std::string name;
+  std::string sweep_csv;
+  std::size_t sweep_max = 12;
+  std::size_t timing_calls = 200000;
+  bool quiet = false;
+  dh::MotionFitOptions fit;
+};
+
+double parseNumber(const std::string& option, const std::string& text, double minimum) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value) || value < minimum) {
+    std::ostringstream message;
+    message << option << " expects a number >= " << minimum << ", got '" << text << "'";
+    throw UsageError(message.str());
+  }
+  return value;
+}
+
+std::size_t parseCount(const std::string& option, const std::string& text, std::size_t minimum) {
+  const double value = parseNumber(option, text, static_cast<double>(minimum));
+  if (value != std::floor(value) || value > 1e9) throw UsageError(option + " expects a whole number, got '" + text + "'");
+  return static_cast<std::size_t>(value);
+}
+
+std::string stem(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = name.find_last_of('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+std::string extension(const std::string& path) {
+  const std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  const std::size_t dot = name.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : name.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+Arguments parseArguments(int argc, char** argv) {
+  Arguments args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (arg == "-o" || arg == "--output") {
+      args.output = value();
+    } else if (arg == "--format") {
+      args.format = value();
+      if (args.format != "bvh" && args.format != "mot") throw UsageError("--format must be 'bvh' or 'mot'");
+    } else if (arg == "--map") {
+      args.map = value();
+    } else if (arg == "--urdf") {
+      args.urdf = value();
+    } else if (arg == "--period") {
+      args.fit.period = parseNumber(arg, value(), 1e-6);
+    } else if (arg == "--tolerance-deg") {
+      args.fit.tolerance_degrees = parseNumber(arg, value(), 0.0);
+    } else if (arg == "--tolerance-mm") {
+      args.fit.tolerance_metres = parseNumber(arg, value(), 0.0) / 1000.0;
+    } else if (arg == "--max-order") {
+      args.fit.max_order = parseCount(arg, value(), 1);
+    } else if (arg == "--order") {
+      args.fit.fixed_order = parseCount(arg, value(), 1);
+    } else if (arg == "--skip-frames") {
+      args.fit.skip_frames = static_cast<int>(parseCount(arg, value(), 0));
+    } else if (arg == "--name") {
+      args.name = value();
+    } else if (arg == "--sweep-csv") {
+      args.sweep_csv = value();
+    } else if (arg == "--sweep-max") {
+      args.sweep_max = parseCount(arg, value(), 1);
+    } else if (arg == "--timing-calls") {
+      args.timing_calls = parseCount(arg, value(), 1);
+    } else if (arg == "-q" || arg == "--quiet") {
+      args.quiet = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option '" + arg + "'");
+    } else if (args.input.empty()) {
+      args.input = arg;
+    } else {
+      throw UsageError("more than one input file ('" + args.input + "' and '" + arg + "')");
+    }
+  }
+  if (args.input.empty()) throw UsageError("no input file");
+  if (args.format.empty()) {
+    const std::string ext = extension(args.input);
+    if (ext == "bvh") args.format = "bvh";
+    else if (ext == "mot" || ext == "sto") args.format = "mot";
+    else throw UsageError("cannot tell the format of '" + args.input + "' from its extension; use --format bvh|mot");
+  }
+  if (args.name.empty()) args.name = stem(args.input);
+  args.fit.name = args.name;
+  return args;
+}
+
+dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleton) {
+  dh::JointMapFile map_file;
+  if (!args.map.empty()) map_file = dh::loadJointMapFile(args.map);
+  if (args.format == "bvh") {
+    const dh::BvhClip clip = dh::loadBvhFile(args.input);
+    if (!args.map.empty() && map_file.kind != "bvh") {
+      throw dh::JointMapError(args.map + ": a BVH input needs a map of kind 'bvh', this one is '" + map_file.kind + "'");
+    }
+    const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input) : map_file.bvh;
+    return dh::retargetBvh(clip, map, skeleton, args.input);
+  }
+  const dh::OpenSimTable table = dh::loadOpenSimMotionFile(args.input);
+  if (!args.map.empty() && map_file.kind != "coordinates") {
+    throw dh::JointMapError(args.map + ": an OpenSim input needs a map of kind 'coordinates', this one is '" +
+                            map_file.kind + "'");
+  }
+  return dh::retargetCoordinates(table, args.map.empty() ? dh::builtinOpenSimGaitMap() : map_file.coordinates,
+                                 skeleton, args.input);
+}
+
+std::string commandLine(int argc, char** argv) {
+  std::string text = "fit_motion";
+  for (int i = 1; i < argc; ++i) text += std::string(" ") + argv[i];
+  return text;
+}
+
+std::string format(double value, int precision) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(precision) << value;
+  return text.str();
+}
+
+// Nanoseconds per MotionEvaluator::evaluate call and per evaluate + forward kinematics: the
+// fastest of several rounds, since other processes share the machine and only add time.
+std::pair<double, double> timeEvaluation(const dh::Motion& motion, const dh::Skeleton& skeleton, std::size_t calls) {
+  dh::MotionEvaluator evaluator(motion);
+  const dh::ForwardKinematics kinematics(skeleton);
+  dh::JointAngles angles{};
+  dh::RigidTransform root;
+  dh::SkeletonPose pose;
+  double checksum = 0.0;
+  using Clock = std::chrono::steady_clock;
+  constexpr int kRounds = 7;
+  const std::size_t per_round = std::max<std::size_t>(1, calls / kRounds);
+  double best_evaluate = 1e300;
+  double best_with_fk = 1e300;
+  for (int round = 0; round < kRounds; ++round) {
+    const auto start = Clock::now();
+    for (std::size_t i = 0; i < per_round; ++i) {
+      evaluator.evaluate(1e-3 * static_cast<double>(i), angles, root);
+      checksum += angles[i % dh::kDofCount];
+    }
+    const auto middle = Clock::now();
+    for (std::size_t i = 0; i < per_round; ++i) {
+      evaluator.evaluate(1e-3 * static_cast<double>(i), angles, root);
+      kinematics.compute(root, angles, pose);
+      checksum += pose.bone_in_world[i % dh::kBoneCount].translation.x();
+    }
+    const auto end = Clock::now();
+    best_evaluate = std::min(best_evaluate, std::chrono::duration<double, std::nano>(middle - start).count());
+    best_with_fk = std::min(best_with_fk, std::chrono::duration<double, std::nano>(end - middle).count());
+  }
+  if (!std::isfinite(checksum)) std::cerr << "";  // keeps the loops from being optimised away
+  return {best_evaluate / static_cast<double>(per_round), best_with_fk / static_cast<double>(per_round)};
+}
+
+void writeSweep(const Arguments& args, const dh::Skeleton& skeleton, const dh::SampledMotion& sampled,
+                const dh::MotionFit& fit) {
+  std::ofstream csv(args.sweep_csv);
+  if (!csv) throw std::runtime_error(args.sweep_csv + ": cannot write the sweep CSV");
+  csv << "order,mean_rms_deg,max_rms_deg,joint_error_capture_mean_cm,joint_error_capture_max_cm,"
+         "joint_error_samples_mean_cm,joint_error_samples_max_cm,root_error_mean_cm,unsmoothed_error_capture_mean_cm,"
+         "evaluate_ns,evaluate_fk_ns\n";
+  const std::size_t limit = (fit.times.size() - 1) / 2;
+  for (std::size_t order = 1; order <= args.sweep_max; ++order) {
+    if (order > limit) break;
+    const dh::MotionFit refit = dh::refitWithOrder(fit, order);
+    const dh::FitAccuracy accuracy = dh::measureFitAccuracy(skeleton, sampled, refit, refit.motion);
+    const auto [evaluate_ns, evaluate_fk_ns] = timeEvaluation(refit.motion, skeleton, args.timing_calls);
+    csv << order << ',' << accuracy.mean_rms_degrees << ',' << accuracy.max_rms_degrees << ','
+        << accuracy.against_capture.mean_cm << ',' << accuracy.against_capture.max_cm << ','
+        << accuracy.against_samples.mean_cm << ',' << accuracy.against_samples.max_cm << ','
+        << accuracy.root_translation.mean_cm << ',' << accuracy.unsmoothed_against_capture.mean_cm << ',' << evaluate_ns << ',' << evaluate_fk_ns << '\n';
+    if (!args.quiet) {
+      std::cerr << "  m=" << order << ": RMS mean " << format(accuracy.mean_rms_degrees, 3) << " deg (max "
+                << format(accuracy.max_rms_degrees, 3) << "), joints vs capture " << format(accuracy.against_capture.mean_cm, 2)
+                << " cm, vs samples " << format(accuracy.against_samples.mean_cm, 3) << " cm, evaluate "
+                << format(evaluate_ns, 1) << " ns, +FK " << format(evaluate_fk_ns, 1) << " ns\n";
+    }
+  }
+}
+
+void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::MotionFit& fit,
+            const dh::FitAccuracy& accuracy) {
+  std::ostream& out = std::cerr;
+  out << "fit_motion: " << args.input << ": " << sampled.times.size() << " frames (" << fit.skipped_frames << " skipped at the start), period "
+      << format(fit.motion.period, 4) << " s ("
+      << (fit.period_estimated ? "autocorrelation peak " + format(fit.period_estimate.correlation, 3) : "given")
+      << "), fitted over " << fit.cycles << " whole cycle(s) = " << fit.frames_used << " frames, order cap "
+      << fit.max_order_allowed << "\n";
+  out << "  forward speed " << format(fit.motion.root.forward_speed, 3) << " m/s\n";
+  for (std::size_t i = 0; i < dh::Motion::kSeriesCount; ++i) {
+    const dh::SeriesFitReport& r = fit.reports[i];
+    out << "  " << std::left << std::setw(24) << fit.motion.seriesName(i) << std::right;
+    if (!r.driven) {
+      out << " held at rest (not in the source)\n";
+      continue;
+    }
+    out << " m=" << std::setw(2) << r.order << "  RMS "
+        << (r.is_angle ? format(r.rms_residual * kRadiansToDegrees, 3) + " deg" : format(r.rms_residual * 1000.0, 2) + " mm")
+        << (r.reached_tolerance ? "" : "  (tolerance not reached at the cap)") << "\n";
+  }
+  out << "  angle RMS residual: mean " << format(accuracy.mean_rms_degrees, 3) << " deg, max "
+      << format(accuracy.max_rms_degrees, 3) << " deg\n";
+  if (accuracy.against_capture.samples > 0) {
+    out << "  joint positions vs the capture's own FK (scaled to our stature, root-relative): mean "
+        << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2)
+        << " cm (the unsmoothed retarget: mean " << format(accuracy.unsmoothed_against_capture.mean_cm, 2)
+        << " cm: bone proportions differ)\n";
+  }
+  out << "  joint positions vs our skeleton on the unsmoothed angles: mean " << format(accuracy.against_samples.mean_cm, 3)
+      << " cm, max " << format(accuracy.against_samples.max_cm, 3) << " cm; root translation: mean "
+      << format(accuracy.root_translation.mean_cm, 3) << " cm\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Arguments args;
+  try {
+    args = parseArguments(argc, argv);
+  } catch (const UsageError& error) {
+    std::cerr << "fit_motion: " << error.what() << "\n\n" << kUsage;
+    return 2;
+  }
+  try {
+    const dh::Skeleton skeleton = dh::Skeleton::fromUrdfFile(args.urdf);
+    const dh::SampledMotion sampled = readCapture(args, skeleton);
+    const dh::MotionFit fit = dh::fitMotion(sampled, args.fit);
+    const dh::FitAccuracy accuracy = dh::measureFitAccuracy(skeleton, sampled, fit, fit.motion);
+    if (!args.quiet) report(args, sampled, fit, accuracy);
+
+    std::map<std::string, std::string> notes;
+    std::map<std::string, double> residuals;
+    for (std::size_t i = 0; i < dh::Motion::kSeriesCount; ++i) {
+      const dh::SeriesFitReport& r = fit.reports[i];
+      const std::string name = fit.motion.seriesName(i);
+      if (!r.driven) {
+        notes[name] = "not in the source: held at rest";
+        continue;
+      }
+      residuals[name] = r.rms_residual;
+      notes[name] = "m=" + std::to_string(r.order) + ", RMS " +
+                    (r.is_angle ? format(r.rms_residual * kRadiansToDegrees, 3) + " deg"
+                                : format(r.rms_residual * 1000.0, 2) + " mm") +
+                    (r.reached_tolerance ? "" : " (tolerance not reached)");
+    }
+    std::ostringstream header;
+    header << "Fitted to motion capture by:\n  " << commandLine(argc, argv) << "\n"
+           << "Source: " << args.input << " (" << sampled.times.size() << " frames, " << fit.skipped_frames
+           << " skipped at the start); period "
+           << format(fit.motion.period, 4) << " s "
+           << (fit.period_estimated ? "(estimated: autocorrelation peak " + format(fit.period_estimate.correlation, 3) + ")"
+                                    : "(given)")
+           << ", fitted over " << fit.cycles << " whole cycle(s).\n"
+           << "Least-squares Fourier series per DOF (Eq. 1, radians; root translation in metres): order m\n"
+           << "the smallest reaching RMS " << args.fit.tolerance_degrees << " deg / " << args.fit.tolerance_metres * 1000.0
+           << " mm, capped at " << fit.max_order_allowed << "; rms_residual in radians or metres.\n"
+           << "Joint positions vs the capture's own FK (scaled to our stature): mean "
+           << format(accuracy.against_capture.mean_cm, 2) << " cm; vs the unsmoothed retarget: mean "
+           << format(accuracy.against_samples.mean_cm, 3) << " cm.";
+    std::ostringstream text;
+    dh::writeMotionYaml(fit.motion, text, header.str(), notes, residuals);
+    if (args.output.empty()) {
+      std::cout << text.str();
+    } else {
+      std::ofstream out(args.output);
+      if (!out || !(out << text.str())) throw std::runtime_error(args.output + ": cannot write the motion file");
+    }
+    if (!args.sweep_csv.empty()) writeSweep(args, skeleton, sampled, fit);
+  } catch (const std::exception& error) {
+    std::cerr << "fit_motion: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

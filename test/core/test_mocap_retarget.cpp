@@ -1,0 +1,212 @@
+// Retargeting: a BVH written from our own skeleton (our rest pose in BVH's Y-up axes, a rotation
+// order unlike ours) comes back as exactly the joint angles that made it; the CMU walk retargets
+// to a walk; joint maps name what is missing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "dressed_human/core/bvh_file.h"
+#include "dressed_human/core/forward_kinematics.h"
+#include "dressed_human/core/mocap_joint_map.h"
+#include "dressed_human/core/mocap_retarget.h"
+#include "dressed_human/core/motion.h"
+
+namespace dressed_human {
+namespace {
+
+const std::string kSource = DRESSED_HUMAN_SOURCE_DIR;
+constexpr double kPi = 3.14159265358979323846;
+
+// Our axes (x forward, y left, z up) -> BVH axes (x left, y up, z forward).
+Eigen::Matrix3d bvhFromOurs() {
+  Eigen::Matrix3d m;
+  m << 0, 1, 0, 0, 0, 1, 1, 0, 0;
+  return m;
+}
+
+const std::array<const char*, kBoneCount> kCmuNameOfBone = {
+    "Spine", "Spine1", "Neck1", "Head", "", "LeftArm", "LeftForeArm", "LeftHand", "", "RightArm",
+    "RightForeArm", "RightHand", "", "LeftUpLeg", "LeftLeg", "LeftFoot", "", "RightUpLeg", "RightLeg", "RightFoot"};
+
+// A BVH of our skeleton: joints at our proximal joints (clavicles and hip bones folded into their
+// parents), channels "Yrotation Zrotation Xrotation", frames from the given poses.
+std::string bvhOfOurSkeleton(const Skeleton& skeleton, const std::vector<std::pair<RigidTransform, JointAngles>>& poses) {
+  const ForwardKinematics kinematics(skeleton);
+  SkeletonPose rest;
+  kinematics.compute(RigidTransform(), JointAngles{}, rest);
+  const Eigen::Matrix3d m = bvhFromOurs();
+  // BVH joint of every bone: the bone itself, or for a fixed bone its nearest articulated ancestor.
+  std::vector<int> bvh_parent_bone(kBoneCount, -1);
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    int parent = skeleton.bone(b).parent;
+    while (parent >= 0 && std::string(kCmuNameOfBone[static_cast<std::size_t>(parent)]).empty()) {
+      parent = skeleton.bone(static_cast<std::size_t>(parent)).parent;
+    }
+    bvh_parent_bone[b] = parent;
+  }
+  std::ostringstream text;
+  text.precision(17);
+  text << "HIERARCHY\nROOT Hips\n{\nOFFSET 0 0 0\nCHANNELS 6 Xposition Yposition Zposition Yrotation Zrotation Xrotation\n";
+  // Writes the subtree of BVH joints under `parent_bone` (-1: the root).
+  std::function<void(int)> write = [&](int parent_bone) {
+    const Eigen::Vector3d parent_position =
+        parent_bone < 0 ? Eigen::Vector3d::Zero() : rest.bone_in_world[static_cast<std::size_t>(parent_bone)].translation;
+    bool any_child = false;
+    for (std::size_t b = 0; b < kBoneCount; ++b) {
+      if (std::string(kCmuNameOfBone[b]).empty() || bvh_parent_bone[b] != parent_bone) continue;
+      any_child = true;
+      const Eigen::Vector3d offset = m * (rest.bone_in_world[b].translation - parent_position);
+      text << "JOINT " << kCmuNameOfBone[b] << "\n{\nOFFSET " << offset.transpose()
+           << "\nCHANNELS 3 Yrotation Zrotation Xrotation\n";
+      write(static_cast<int>(b));
+      text << "}\n";
+    }
+    if (!any_child && parent_bone >= 0) {
+      const auto& bone = rest.bone_in_world[static_cast<std::size_t>(parent_bone)];
+      const Eigen::Vector3d end = m * (bone.rotation * Eigen::Vector3d(0, 0, skeleton.bone(static_cast<std::size_t>(parent_bone)).length));
+      text << "End Site\n{\nOFFSET " << end.transpose() << "\n}\n";
+    }
+  };
+  write(-1);
+  text << "}\nMOTION\nFrames: " << poses.size() << "\nFrame Time: 0.01\n";
+  // Channel values: the BVH global rotation of a joint is m W R0^T m^T (W: our bone's world
+  // rotation, R0: at rest); its local rotation relative to the BVH parent, as Ry Rz Rx.
+  const auto euler = [](const Eigen::Matrix3d& r) -> Eigen::Vector3d { return r.eulerAngles(1, 2, 0) * 180.0 / kPi; };
+  for (const auto& [root, angles] : poses) {
+    SkeletonPose pose;
+    kinematics.compute(root, angles, pose);
+    const auto global = [&](int bone) -> Eigen::Matrix3d {
+      const Eigen::Matrix3d w = bone < 0 ? pose.root.rotation.toRotationMatrix()
+                                         : pose.bone_in_world[static_cast<std::size_t>(bone)].rotation.toRotationMatrix();
+      const Eigen::Matrix3d r0 = bone < 0 ? Eigen::Matrix3d::Identity()
+                                          : rest.bone_in_world[static_cast<std::size_t>(bone)].rotation.toRotationMatrix();
+      return m * w * r0.transpose() * m.transpose();
+    };
+    text << (m * root.translation).transpose() << ' ' << euler(global(-1)).transpose();
+    std::function<void(int)> frame = [&](int parent_bone) {
+      for (std::size_t b = 0; b < kBoneCount; ++b) {
+        if (std::string(kCmuNameOfBone[b]).empty() || bvh_parent_bone[b] != parent_bone) continue;
+        text << ' ' << euler(global(parent_bone).transpose() * global(static_cast<int>(b))).transpose();
+        frame(static_cast<int>(b));
+      }
+    };
+    frame(-1);
+    text << '\n';
+  }
+  return text.str();
+}
+
+TEST(MocapRetarget, OwnSkeletonRoundTripsExactly) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> angle(-0.6, 0.6);  // away from the gimbal of the x DOF
+  std::vector<std::pair<RigidTransform, JointAngles>> poses;
+  for (int k = 0; k < 5; ++k) {
+    RigidTransform root;
+    root.translation = Eigen::Vector3d(0.3 * k, 0.05, 0.95);
+    root.rotation = Eigen::AngleAxisd(angle(random), Eigen::Vector3d::UnitZ()) *
+                    Eigen::AngleAxisd(0.2 * angle(random), Eigen::Vector3d::UnitX());
+    JointAngles angles{};
+    for (double& a : angles) a = angle(random);
+    poses.emplace_back(root, angles);
+  }
+  const BvhClip clip = parseBvh(bvhOfOurSkeleton(skeleton, poses), "own.bvh");
+  const SampledMotion motion = retargetBvh(clip, chooseBvhJointMap(clip, "own.bvh"), skeleton, "own.bvh");
+  ASSERT_EQ(motion.angles.size(), poses.size());
+  EXPECT_NEAR(motion.reference_scale, 1.0, 1e-9);
+  EXPECT_NEAR(motion.root_scale, 1.0, 1e-9);
+  const ForwardKinematics kinematics(skeleton);
+  for (std::size_t f = 0; f < poses.size(); ++f) {
+    for (std::size_t i = 0; i < kDofCount; ++i) {
+      EXPECT_NEAR(motion.angles[f][i], poses[f].second[i], 1e-9) << "frame " << f << " " << Motion().seriesName(i);
+    }
+    EXPECT_LT(motion.root[f].rotation.angularDistance(poses[f].first.rotation), 1e-9);
+    EXPECT_LT((motion.root[f].translation - poses[f].first.translation).norm(), 1e-9);
+    SkeletonPose pose;
+    RigidTransform root = poses[f].first;
+    root.translation.setZero();
+    kinematics.compute(root, poses[f].second, pose);
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      const Eigen::Vector3d& ours = pose.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation;
+      EXPECT_LT((motion.reference_joint_positions[f][j] - ours).norm(), 1e-9) << humanJointNames()[j];
+    }
+  }
+}
+
+TEST(MocapRetarget, CmuWalkBendsKneesForward) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
+  const std::string path = kSource + "/data/motion/cmu_02_01_walk.bvh";
+  const BvhClip clip = loadBvhFile(path);
+  const BvhJointMap map = chooseBvhJointMap(clip, path);
+  EXPECT_EQ(map.name, "CMU BVH");
+  const SampledMotion motion = retargetBvh(clip, map, skeleton, path);
+  double max_knee = -10.0;
+  double min_knee = 10.0;
+  for (std::size_t f = 1; f < motion.angles.size(); ++f) {  // frame 0 is the capture's bind pose
+    for (const std::size_t knee : {11u, 14u}) {
+      max_knee = std::max(max_knee, motion.angles[f][knee * kDofsPerJoint]);
+      min_knee = std::min(min_knee, motion.angles[f][knee * kDofsPerJoint]);
+    }
+  }
+  EXPECT_GT(max_knee, 50.0 * kPi / 180.0);  // swing-phase flexion, +y
+  EXPECT_GT(min_knee, -5.0 * kPi / 180.0);  // never bends backwards
+}
+
+TEST(MocapJointMap, MissingJointsAreNamed) {
+  const std::string path = kSource + "/data/motion/cmu_02_01_walk.bvh";
+  BvhClip clip = loadBvhFile(path);
+  clip.joints[static_cast<std::size_t>(clip.findJoint("LeftLeg"))].name = "LeftShin";
+  clip.joints[static_cast<std::size_t>(clip.findJoint("Head"))].name = "Skull";
+  try {
+    chooseBvhJointMap(clip, path);
+    FAIL() << "a renamed joint must be reported";
+  } catch (const JointMapError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("LeftLeg"), std::string::npos) << message;
+    EXPECT_NE(message.find("Head"), std::string::npos) << message;
+    EXPECT_NE(message.find("--map"), std::string::npos) << message;
+  }
+}
+
+TEST(MocapJointMap, YamlMapForOtherNames) {
+  const JointMapFile file = parseJointMapYaml(
+      "kind: bvh\nroot: pelvis\njoints: {waist: s1, torso: s2, neck: n, head: h, l_shoulder: la, l_elbow: lf,"
+      " l_wrist: ~, r_shoulder: ra, r_elbow: rf, r_wrist: ~, l_hip: lt, l_knee: ls, l_ankle: lfoot,"
+      " r_hip: rt, r_knee: rs, r_ankle: rfoot}\n",
+      "map.yaml");
+  EXPECT_EQ(file.kind, "bvh");
+  EXPECT_EQ(file.bvh.root, "pelvis");
+  EXPECT_EQ(file.bvh.joints[11], "ls");
+  EXPECT_TRUE(file.bvh.joints[6].empty());
+  EXPECT_THROW(parseJointMapYaml("kind: bvh\nroot: p\njoints: {waist: s}\n", "m.yaml"), JointMapError);
+  EXPECT_THROW(parseJointMapYaml("kind: bvh\nroot: p\njoints: {elbow: s}\n", "m.yaml"), JointMapError);
+  EXPECT_THROW(parseJointMapYaml("kind: c3d\n", "m.yaml"), JointMapError);
+  const JointMapFile coordinates = parseJointMapYaml(
+      "kind: coordinates\nroot: {translation: [tx, ty, ~], rotation: [[tilt, 0, 0, 1]]}\n"
+      "joints: {waist: ~, torso: ~, neck: ~, head: ~, l_shoulder: ~, l_elbow: ~, l_wrist: ~, r_shoulder: ~,"
+      " r_elbow: ~, r_wrist: ~, l_hip: [[hip_l, 0, 0, 2]], l_knee: ~, l_ankle: ~, r_hip: ~, r_knee: ~, r_ankle: ~}\n",
+      "coordinates.yaml");
+  ASSERT_EQ(coordinates.coordinates.joints[10].size(), 1u);
+  EXPECT_NEAR(coordinates.coordinates.joints[10][0].axis.z(), 1.0, 1e-12);  // normalised
+  EXPECT_TRUE(coordinates.coordinates.root_translation[2].empty());
+}
+
+TEST(MocapRetarget, EulerSplitsInverseTheirCompositions) {
+  const Eigen::Vector3d yxz(0.3, -0.4, 2.9);
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) *
+                             Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ())).toRotationMatrix();
+  EXPECT_LT((decomposeYxz(r) - yxz).norm(), 1e-12);
+  const Eigen::Vector3d rpy(-0.2, 0.5, -3.0);
+  const Eigen::Matrix3d q = (Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) *
+                             Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(rpy[0], Eigen::Vector3d::UnitX())).toRotationMatrix();
+  EXPECT_LT((decomposeRollPitchYaw(q) - rpy).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace dressed_human
