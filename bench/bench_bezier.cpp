@@ -20,7 +20,7 @@ PatchSurface limb(int stacks) {
     const double z = 0.02 * r;
     rings.push_back({z, 0.05 + 0.02 * std::sin(7.0 * z), 0.04 + 0.015 * std::cos(5.0 * z)});
   }
-  return make_generalized_cylinder(rings, 0.0, 0.0);
+  return makeGeneralizedCylinder(rings, 0.0, 0.0);
 }
 
 // Grid evaluation: each patch on a (level+1)^2 grid, the default level being Tessellator's.
@@ -34,7 +34,7 @@ void BM_EvaluateGrid(benchmark::State& state) {
   const SurfaceSampleArrays out{positions.data(), normals.data(), tangents_u.data(), tangents_v.data()};
   for (auto _ : state) {
     for (const BezierPatch& patch : surface.patches) {
-      patch.evaluate_grid(table, table, out);
+      patch.evaluateGrid(table, table, out);
       benchmark::ClobberMemory();
     }
   }
@@ -47,7 +47,7 @@ BENCHMARK(BM_EvaluateGrid)->Arg(Tessellator::kDefaultLevel)->Arg(4)->Arg(16)->Ar
 // The same with a collapsed edge in every patch (caps): the limit-normal path on one row in level+1.
 void BM_EvaluateGridWithPoles(benchmark::State& state) {
   const int level = static_cast<int>(state.range(0));
-  const PatchSurface surface = make_generalized_cylinder(
+  const PatchSurface surface = makeGeneralizedCylinder(
       {{0.0, 0.05, 0.05}, {0.1, 0.05, 0.05}, {0.2, 0.05, 0.05}, {0.3, 0.05, 0.05}}, 0.05, 0.05);
   std::vector<BezierPatch> caps(surface.patches.begin() + 4, surface.patches.end());
   const BernsteinTable table = BernsteinTable::uniform(level);
@@ -57,7 +57,7 @@ void BM_EvaluateGridWithPoles(benchmark::State& state) {
   const SurfaceSampleArrays out{positions.data(), normals.data(), tangents_u.data(), tangents_v.data()};
   for (auto _ : state) {
     for (const BezierPatch& patch : caps) {
-      patch.evaluate_grid(table, table, out);
+      patch.evaluateGrid(table, table, out);
       benchmark::ClobberMemory();
     }
   }
@@ -83,15 +83,15 @@ void BM_Tessellate100PatchesPerFrame(benchmark::State& state) {
   const int level = static_cast<int>(state.range(0));
   const PatchSurface surface = limb(25);
   Tessellator tessellator;
-  tessellator.tessellate_uniform(surface.patches, surface.topology, level);
+  tessellator.tessellateUniform(surface.patches, surface.topology, level);
   for (auto _ : state) {
     benchmark::DoNotOptimize(
-        tessellator.tessellate_uniform(surface.patches, surface.topology, level).positions.data());
+        tessellator.tessellateUniform(surface.patches, surface.topology, level).positions.data());
   }
-  state.counters["vertices"] = static_cast<double>(tessellator.mesh().vertex_count());
-  state.counters["triangles"] = static_cast<double>(tessellator.mesh().triangle_count());
+  state.counters["vertices"] = static_cast<double>(tessellator.mesh().vertexCount());
+  state.counters["triangles"] = static_cast<double>(tessellator.mesh().triangleCount());
   state.counters["vertices/s"] =
-      benchmark::Counter(static_cast<double>(tessellator.mesh().vertex_count()),
+      benchmark::Counter(static_cast<double>(tessellator.mesh().vertexCount()),
                          benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_Tessellate100PatchesPerFrame)->Arg(Tessellator::kDefaultLevel)->Arg(16)
@@ -103,9 +103,9 @@ void BM_Tessellate100PatchesAdaptive(benchmark::State& state) {
   Tessellator tessellator;
   for (auto _ : state) {
     benchmark::DoNotOptimize(
-        tessellator.tessellate_to_error(surface.patches, surface.topology, 2e-4).positions.data());
+        tessellator.tessellateToError(surface.patches, surface.topology, 2e-4).positions.data());
   }
-  state.counters["triangles"] = static_cast<double>(tessellator.mesh().triangle_count());
+  state.counters["triangles"] = static_cast<double>(tessellator.mesh().triangleCount());
 }
 BENCHMARK(BM_Tessellate100PatchesAdaptive)->Unit(benchmark::kMicrosecond);
 
@@ -115,7 +115,7 @@ void BM_Tessellate100PatchesLayoutBuild(benchmark::State& state) {
   for (auto _ : state) {
     Tessellator tessellator;
     benchmark::DoNotOptimize(
-        tessellator.tessellate_uniform(surface.patches, surface.topology).positions.data());
+        tessellator.tessellateUniform(surface.patches, surface.topology).positions.data());
   }
 }
 BENCHMARK(BM_Tessellate100PatchesLayoutBuild)->Unit(benchmark::kMicrosecond);

@@ -1,12 +1,15 @@
 #!/usr/bin/python3
 """Speed-vs-accuracy chart of uniform vs adaptive Bezier tessellation.
 
+Surfaces: two synthetic test sets (capsule, body) and the real skin (config/bodies/default.yaml)
+posed in the walk.
+
 Runs the C++ tool `tessellation_accuracy` (or reads its CSV), writes the CSV next to the chart and
 plots max geometric error (mm) against triangle count and against per-frame tessellation time.
 Also prints, for every adaptive point, how many times more triangles uniform tessellation needs
 for the same error (log-log interpolation along the uniform curve).
 
-    /usr/bin/python3 scripts/chart_tessellation.py --tool build_bezier/tessellation_accuracy
+    /usr/bin/python3 scripts/chart_tessellation.py --tool build_skin/tessellation_accuracy
     /usr/bin/python3 scripts/chart_tessellation.py --csv docs/tessellation_accuracy.csv
 """
 import argparse
@@ -30,7 +33,7 @@ def load(args):
         with open(args.csv) as f:
             text = f.read()
     else:
-        text = subprocess.run([args.tool], check=True, capture_output=True, text=True).stdout
+        text = subprocess.run([args.tool, ROOT], check=True, capture_output=True, text=True).stdout
         with open(os.path.join(ROOT, "docs", "tessellation_accuracy.csv"), "w") as f:
             f.write(text)
     rows = list(csv.DictReader(io.StringIO(text)))
@@ -61,7 +64,7 @@ def uniform_triangles_at(error, uniform_triangles, uniform_errors):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--tool", default=os.path.join(ROOT, "build_bezier", "tessellation_accuracy"))
+    parser.add_argument("--tool", default=os.path.join(ROOT, "build_skin", "tessellation_accuracy"))
     parser.add_argument("--csv", help="read this CSV instead of running the tool")
     parser.add_argument("--out", default=os.path.join(ROOT, "docs", "tessellation_speed_vs_accuracy.png"))
     args = parser.parse_args()
@@ -101,11 +104,14 @@ def main():
     figure.suptitle("Bicubic Bezier tessellation, uniform vs adaptive\n" + "\n".join(summary), fontsize=10)
     figure.text(0.01, 0.01,
                 "Why the ratio differs: adaptive saves where patches differ (body: torso, arm and finger "
-                "patches span 20x in size). On the capsule every patch needs nearly the same level, so only "
-                "the spread between them is saved (~1.7x).\nThe error bound behind the adaptive levels is about "
-                "2x the measured error. Times: best of 5 rounds on a shared 2-core machine; expect noise.",
+                "patches span 20x in size). On the capsule every patch needs nearly the same level (~1.7x). "
+                "On the real skin (188 patches, walk pose) most triangles lie on the large\ntrunk and thigh "
+                "quarter-cylinders, which all need about the same level, so adaptive saves only ~1.6x there: "
+                "the >= 3x goal is met on the body test set, not on the skin. The error bound behind the "
+                "adaptive levels is 1.0-2x the\nmeasured error. Times: best of 5 rounds on a shared 2-core "
+                "machine under load from other builds; expect noise.",
                 fontsize=8, va="bottom")
-    figure.tight_layout(rect=(0, 0.06, 1, 1))
+    figure.tight_layout(rect=(0, 0.08, 1, 1))
     os.makedirs(os.path.dirname(args.out), exist_ok=True)
     figure.savefig(args.out, dpi=110)
     print("\n".join(summary))

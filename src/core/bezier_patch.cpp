@@ -18,7 +18,7 @@ namespace {
 // regular normal, so where exactly the switch happens does not show.
 constexpr double kDegenerateCrossRelative = 1e-10;
 
-void require_unit_parameter(double t, const char* name) {
+void requireUnitParameter(double t, const char* name) {
   if (!(t >= 0.0 && t <= 1.0)) {
     std::ostringstream message;
     message << "Bezier patch parameter " << name << " = " << t << " is outside [0, 1]";
@@ -30,7 +30,7 @@ void require_unit_parameter(double t, const char* name) {
 using ControlNet = Eigen::Matrix<double, 3, 16>;
 using ControlRow = Eigen::Matrix<double, 3, 4>;
 
-ControlNet as_matrix(const BezierPatch::ControlPoints& points) {
+ControlNet asMatrix(const BezierPatch::ControlPoints& points) {
   ControlNet net;
   for (int c = 0; c < 16; ++c) net.col(c) = points[c];
   return net;
@@ -38,7 +38,7 @@ ControlNet as_matrix(const BezierPatch::ControlPoints& points) {
 
 }  // namespace
 
-std::array<Eigen::Vector4d, 4> cubic_bernstein_derivatives(double t) {
+std::array<Eigen::Vector4d, 4> cubicBernsteinDerivatives(double t) {
   const double s = 1.0 - t;
   std::array<Eigen::Vector4d, 4> d;
   d[0] << s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t;
@@ -48,16 +48,16 @@ std::array<Eigen::Vector4d, 4> cubic_bernstein_derivatives(double t) {
   return d;
 }
 
-BernsteinWeights cubic_bernstein_weights(double t) {
-  const std::array<Eigen::Vector4d, 4> d = cubic_bernstein_derivatives(t);
+BernsteinWeights cubicBernsteinWeights(double t) {
+  const std::array<Eigen::Vector4d, 4> d = cubicBernsteinDerivatives(t);
   return BernsteinWeights{d[0], d[1], d[2]};
 }
 
 BernsteinTable::BernsteinTable(const std::vector<double>& parameters) : parameters_(parameters) {
   weights_.reserve(parameters_.size());
   for (double t : parameters_) {
-    require_unit_parameter(t, "t of a BernsteinTable");
-    weights_.push_back(cubic_bernstein_weights(t));
+    requireUnitParameter(t, "t of a BernsteinTable");
+    weights_.push_back(cubicBernsteinWeights(t));
   }
 }
 
@@ -71,9 +71,9 @@ BernsteinTable BernsteinTable::uniform(int segments) {
   return BernsteinTable(parameters);
 }
 
-BernsteinTable BernsteinTable::uniform_interior(int segments) {
+BernsteinTable BernsteinTable::uniformInterior(int segments) {
   if (segments < 1) {
-    throw std::invalid_argument("BernsteinTable::uniform_interior needs at least 1 segment, got " +
+    throw std::invalid_argument("BernsteinTable::uniformInterior needs at least 1 segment, got " +
                                 std::to_string(segments));
   }
   std::vector<double> parameters;
@@ -94,7 +94,7 @@ BezierPatch::BezierPatch(const ControlPoints& control_points) : control_points_(
       }
     }
   }
-  net_ = as_matrix(control_points_);
+  net_ = asMatrix(control_points_);
   box_min_ = box_max_ = control_points_[0];
   for (const Eigen::Vector3d& p : control_points_) {
     box_min_ = box_min_.cwiseMin(p);
@@ -111,7 +111,7 @@ BezierPatch::BezierPatch(const ControlPoints& control_points) : control_points_(
 namespace {
 
 // sum_j weight_j * (v-row j): the patch restricted to one v, as a cubic curve in u.
-ControlRow contract_v(const ControlNet& net, const Eigen::Vector4d& v_weights) {
+ControlRow contractV(const ControlNet& net, const Eigen::Vector4d& v_weights) {
   return v_weights[0] * net.middleCols<4>(0) + v_weights[1] * net.middleCols<4>(4) +
          v_weights[2] * net.middleCols<4>(8) + v_weights[3] * net.middleCols<4>(12);
 }
@@ -119,21 +119,21 @@ ControlRow contract_v(const ControlNet& net, const Eigen::Vector4d& v_weights) {
 }  // namespace
 
 Eigen::Vector3d BezierPatch::position(double u, double v) const {
-  require_unit_parameter(u, "u");
-  require_unit_parameter(v, "v");
+  requireUnitParameter(u, "u");
+  requireUnitParameter(v, "v");
   const ControlNet& net = net_;
-  return contract_v(net, cubic_bernstein_weights(v).value) * cubic_bernstein_weights(u).value;
+  return contractV(net, cubicBernsteinWeights(v).value) * cubicBernsteinWeights(u).value;
 }
 
 PatchDerivatives BezierPatch::derivatives(double u, double v) const {
-  require_unit_parameter(u, "u");
-  require_unit_parameter(v, "v");
+  requireUnitParameter(u, "u");
+  requireUnitParameter(v, "v");
   const ControlNet& net = net_;
-  const BernsteinWeights bu = cubic_bernstein_weights(u);
-  const BernsteinWeights bv = cubic_bernstein_weights(v);
-  const ControlRow row = contract_v(net, bv.value);
-  const ControlRow row_dv = contract_v(net, bv.first_derivative);
-  const ControlRow row_dv2 = contract_v(net, bv.second_derivative);
+  const BernsteinWeights bu = cubicBernsteinWeights(u);
+  const BernsteinWeights bv = cubicBernsteinWeights(v);
+  const ControlRow row = contractV(net, bv.value);
+  const ControlRow row_dv = contractV(net, bv.first_derivative);
+  const ControlRow row_dv2 = contractV(net, bv.second_derivative);
   PatchDerivatives d;
   d.position = row * bu.value;
   d.d_du = row * bu.first_derivative;
@@ -146,29 +146,29 @@ PatchDerivatives BezierPatch::derivatives(double u, double v) const {
 
 Eigen::Vector3d BezierPatch::normal(double u, double v) const {
   const PatchDerivatives d = derivatives(u, v);
-  return unit_normal(d.d_du, d.d_dv, u, v);
+  return unitNormal(d.d_du, d.d_dv, u, v);
 }
 
 PatchSample BezierPatch::sample(double u, double v) const {
-  require_unit_parameter(u, "u");
-  require_unit_parameter(v, "v");
-  return sample(cubic_bernstein_weights(u), u, cubic_bernstein_weights(v), v);
+  requireUnitParameter(u, "u");
+  requireUnitParameter(v, "v");
+  return sample(cubicBernsteinWeights(u), u, cubicBernsteinWeights(v), v);
 }
 
 PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u,
                                 const BernsteinWeights& v_weights, double v) const {
   const ControlNet& net = net_;
-  const ControlRow row = contract_v(net, v_weights.value);
-  const ControlRow row_dv = contract_v(net, v_weights.first_derivative);
+  const ControlRow row = contractV(net, v_weights.value);
+  const ControlRow row_dv = contractV(net, v_weights.first_derivative);
   PatchSample s;
   s.position = row * u_weights.value;
   s.d_du = row * u_weights.first_derivative;
   s.d_dv = row_dv * u_weights.value;
-  s.normal = unit_normal(s.d_du, s.d_dv, u, v);
+  s.normal = unitNormal(s.d_du, s.d_dv, u, v);
   return s;
 }
 
-void BezierPatch::evaluate_grid(const BernsteinTable& u_table, const BernsteinTable& v_table,
+void BezierPatch::evaluateGrid(const BernsteinTable& u_table, const BernsteinTable& v_table,
                                 const SurfaceSampleArrays& out) const {
   const ControlNet& net = net_;
   const std::size_t u_count = u_table.size();
@@ -176,8 +176,8 @@ void BezierPatch::evaluate_grid(const BernsteinTable& u_table, const BernsteinTa
   for (std::size_t b = 0; b < v_table.size(); ++b) {
     // Contracting over v once per row leaves 4 points per u sample: 3 small mat-vec products.
     const BernsteinWeights& bv = v_table.weights(b);
-    const ControlRow row = contract_v(net, bv.value);
-    const ControlRow row_dv = contract_v(net, bv.first_derivative);
+    const ControlRow row = contractV(net, bv.value);
+    const ControlRow row_dv = contractV(net, bv.first_derivative);
     for (std::size_t a = 0; a < u_count; ++a, ++k) {
       const BernsteinWeights& bu = u_table.weights(a);
       const Eigen::Vector3d position = row * bu.value;
@@ -188,7 +188,7 @@ void BezierPatch::evaluate_grid(const BernsteinTable& u_table, const BernsteinTa
       const Eigen::Vector3d normal =
           cross_squared > degenerate_cross_squared_
               ? Eigen::Vector3d(cross / std::sqrt(cross_squared))
-              : limit_normal(u_table.parameter(a), v_table.parameter(b));
+              : limitNormal(u_table.parameter(a), v_table.parameter(b));
       out.positions[k] = position.cast<float>();
       out.normals[k] = normal.cast<float>();
       out.tangents_u[k] = d_du.cast<float>();
@@ -197,12 +197,12 @@ void BezierPatch::evaluate_grid(const BernsteinTable& u_table, const BernsteinTa
   }
 }
 
-Eigen::Vector3d BezierPatch::unit_normal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv,
+Eigen::Vector3d BezierPatch::unitNormal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv,
                                          double u, double v) const {
   const Eigen::Vector3d cross = d_du.cross(d_dv);
   const double cross_squared = cross.squaredNorm();
   if (cross_squared > degenerate_cross_squared_) return cross / std::sqrt(cross_squared);
-  return limit_normal(u, v);
+  return limitNormal(u, v);
 }
 
 // Limit normal at a point where d_du x d_dv vanishes (a collapsed edge such as a cap's pole, a
@@ -220,13 +220,13 @@ Eigen::Vector3d BezierPatch::unit_normal(const Eigen::Vector3d& d_du, const Eige
 // is dv (F_uv x F_v), the classical pole normal, the same for every approach direction; where two
 // collapsed edges meet, orders 2+ take over. Approaching toward the patch centre picks the
 // one-sided limit from the inside at corners, where the limit may depend on the direction.
-Eigen::Vector3d BezierPatch::limit_normal(double u, double v) const {
+Eigen::Vector3d BezierPatch::limitNormal(double u, double v) const {
   const ControlNet& net = net_;
-  const std::array<Eigen::Vector4d, 4> bu = cubic_bernstein_derivatives(u);
-  const std::array<Eigen::Vector4d, 4> bv = cubic_bernstein_derivatives(v);
+  const std::array<Eigen::Vector4d, 4> bu = cubicBernsteinDerivatives(u);
+  const std::array<Eigen::Vector4d, 4> bv = cubicBernsteinDerivatives(v);
   Eigen::Vector3d derivative[4][4];  // [a][b] = d^{a+b}F / du^a dv^b
   for (int b = 0; b < 4; ++b) {
-    const ControlRow row = contract_v(net, bv[b]);
+    const ControlRow row = contractV(net, bv[b]);
     for (int a = 0; a < 4; ++a) derivative[a][b] = row * bu[a];
   }
 

@@ -17,7 +17,7 @@ const double kQuarterCircleHandle = 4.0 * (std::sqrt(2.0) - 1.0) / 3.0;
 const Eigen::Vector2d kAxisDirection[4] = {{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}};
 
 // Control point i (0..3) of quarter q of an ellipse of semi-axes (rx, ry) at height z.
-Eigen::Vector3d quarter_arc_point(int q, int i, double rx, double ry, double z) {
+Eigen::Vector3d quarterArcPoint(int q, int i, double rx, double ry, double z) {
   const Eigen::Vector2d& start = kAxisDirection[q];
   const Eigen::Vector2d& end = kAxisDirection[(q + 1) % 4];
   Eigen::Vector2d unit;
@@ -32,23 +32,23 @@ Eigen::Vector3d quarter_arc_point(int q, int i, double rx, double ry, double z) 
 
 }  // namespace
 
-PatchSurface make_generalized_cylinder(const std::vector<CylinderRing>& rings,
+PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings,
                                        double bottom_cap_height, double top_cap_height) {
   if (rings.size() < 4 || (rings.size() - 1) % 3 != 0) {
-    throw std::invalid_argument("make_generalized_cylinder: needs 3k + 1 rings (k >= 1), got " +
+    throw std::invalid_argument("makeGeneralizedCylinder: needs 3k + 1 rings (k >= 1), got " +
                                 std::to_string(rings.size()));
   }
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const CylinderRing& ring = rings[r];
     if (!std::isfinite(ring.z) || !(ring.radius_x > 0.0) || !(ring.radius_y > 0.0) ||
         !std::isfinite(ring.radius_x) || !std::isfinite(ring.radius_y)) {
-      throw std::invalid_argument("make_generalized_cylinder: ring " + std::to_string(r) +
+      throw std::invalid_argument("makeGeneralizedCylinder: ring " + std::to_string(r) +
                                   " needs a finite z and finite radii > 0");
     }
   }
   for (double height : {bottom_cap_height, top_cap_height}) {
     if (!(height >= 0.0) || !std::isfinite(height)) {
-      throw std::invalid_argument("make_generalized_cylinder: cap heights must be finite and >= 0");
+      throw std::invalid_argument("makeGeneralizedCylinder: cap heights must be finite and >= 0");
     }
   }
 
@@ -61,7 +61,7 @@ PatchSurface make_generalized_cylinder(const std::vector<CylinderRing>& rings,
     for (int j = 0; j < 4; ++j) {
       for (int i = 0; i < 4; ++i) {
         points[BezierPatch::index(i, j)] =
-            quarter_arc_point(q, i, rows[j].radius_x, rows[j].radius_y, rows[j].z);
+            quarterArcPoint(q, i, rows[j].radius_x, rows[j].radius_y, rows[j].z);
       }
     }
     patches.emplace_back(points);
@@ -100,16 +100,16 @@ PatchSurface make_generalized_cylinder(const std::vector<CylinderRing>& rings,
   for (int q = 0; q < 4; ++q) {
     const int next = (q + 1) % 4;
     for (int s = 0; s < stacks; ++s) {
-      topology.link(side(s, q), PatchEdge::u1, side(s, next), PatchEdge::u0, false);
-      if (s + 1 < stacks) topology.link(side(s, q), PatchEdge::v1, side(s + 1, q), PatchEdge::v0, false);
+      topology.link(side(s, q), PatchEdge::kU1, side(s, next), PatchEdge::kU0, false);
+      if (s + 1 < stacks) topology.link(side(s, q), PatchEdge::kV1, side(s + 1, q), PatchEdge::kV0, false);
     }
     if (bottom_cap) {
-      topology.link(bottom_first + q, PatchEdge::u1, bottom_first + next, PatchEdge::u0, false);
-      topology.link(bottom_first + q, PatchEdge::v1, side(0, q), PatchEdge::v0, false);
+      topology.link(bottom_first + q, PatchEdge::kU1, bottom_first + next, PatchEdge::kU0, false);
+      topology.link(bottom_first + q, PatchEdge::kV1, side(0, q), PatchEdge::kV0, false);
     }
     if (top_cap) {
-      topology.link(top_first + q, PatchEdge::u1, top_first + next, PatchEdge::u0, false);
-      topology.link(side(stacks - 1, q), PatchEdge::v1, top_first + q, PatchEdge::v0, false);
+      topology.link(top_first + q, PatchEdge::kU1, top_first + next, PatchEdge::kU0, false);
+      topology.link(side(stacks - 1, q), PatchEdge::kV1, top_first + q, PatchEdge::kV0, false);
     }
   }
   return PatchSurface{std::move(patches), std::move(topology)};

@@ -19,24 +19,24 @@ constexpr double kCollapsedRelative = 1e-9;
 // grade C0 precision.
 constexpr double kLinkMismatchRelative = 1e-6;
 
-int edge_index(PatchEdge edge) { return static_cast<int>(edge); }
+int edgeIndex(PatchEdge edge) { return static_cast<int>(edge); }
 
-const char* edge_name(PatchEdge edge) {
+const char* edgeName(PatchEdge edge) {
   switch (edge) {
-    case PatchEdge::v0: return "v=0";
-    case PatchEdge::u1: return "u=1";
-    case PatchEdge::v1: return "v=1";
-    case PatchEdge::u0: return "u=0";
+    case PatchEdge::kV0: return "v=0";
+    case PatchEdge::kU1: return "u=1";
+    case PatchEdge::kV1: return "v=1";
+    case PatchEdge::kU0: return "u=0";
   }
   return "?";
 }
 
 // Edges are traversed counter-clockwise around the (u,v) square inside the tessellator, so that
 // the patch interior is always on the left. v0 and u1 run along their parameter, v1 and u0 against.
-bool runs_against_parameter(int edge) { return edge >= 2; }
+bool runsAgainstParameter(int edge) { return edge >= 2; }
 
 // (u, v) of point k of m on edge e, k counted counter-clockwise.
-Eigen::Vector2d edge_point_parameters(int edge, int k, int m) {
+Eigen::Vector2d edgePointParameters(int edge, int k, int m) {
   const double t = static_cast<double>(k) / m;
   switch (edge) {
     case 0: return {t, 0.0};
@@ -46,7 +46,7 @@ Eigen::Vector2d edge_point_parameters(int edge, int k, int m) {
   }
 }
 
-bool edges_coincide(const std::array<Eigen::Vector3d, 4>& a, const std::array<Eigen::Vector3d, 4>& b,
+bool edgesCoincide(const std::array<Eigen::Vector3d, 4>& a, const std::array<Eigen::Vector3d, 4>& b,
                     bool reversed, double tolerance) {
   for (int k = 0; k < 4; ++k) {
     if ((a[k] - b[reversed ? 3 - k : k]).norm() > tolerance) return false;
@@ -54,7 +54,7 @@ bool edges_coincide(const std::array<Eigen::Vector3d, 4>& a, const std::array<Ei
   return true;
 }
 
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
   while (parent[x] != x) {
     parent[x] = parent[parent[x]];
     x = parent[x];
@@ -63,30 +63,30 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 }
 
 void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b) {
-  a = find_root(parent, a);
-  b = find_root(parent, b);
+  a = findRoot(parent, a);
+  b = findRoot(parent, b);
   // The smaller slot stays root so ownership does not depend on the order of the unions.
   if (a < b) parent[b] = a; else if (b < a) parent[a] = b;
 }
 
-// Curvature constant K of the bound K / n^2 (see geometric_error_bound).
-double error_bound_constant(const BezierPatch& patch) {
+// Curvature constant K of the bound K / n^2 (see geometricErrorBound).
+double errorBoundConstant(const BezierPatch& patch) {
   double second_u = 0.0;
   double second_v = 0.0;
   double twist = 0.0;
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
       if (i < 2) {
-        second_u = std::max(second_u, (patch.control_point(i + 2, j) - 2.0 * patch.control_point(i + 1, j) +
-                                       patch.control_point(i, j)).norm());
+        second_u = std::max(second_u, (patch.controlPoint(i + 2, j) - 2.0 * patch.controlPoint(i + 1, j) +
+                                       patch.controlPoint(i, j)).norm());
       }
       if (j < 2) {
-        second_v = std::max(second_v, (patch.control_point(i, j + 2) - 2.0 * patch.control_point(i, j + 1) +
-                                       patch.control_point(i, j)).norm());
+        second_v = std::max(second_v, (patch.controlPoint(i, j + 2) - 2.0 * patch.controlPoint(i, j + 1) +
+                                       patch.controlPoint(i, j)).norm());
       }
       if (i < 3 && j < 3) {
-        twist = std::max(twist, (patch.control_point(i + 1, j + 1) - patch.control_point(i + 1, j) -
-                                 patch.control_point(i, j + 1) + patch.control_point(i, j)).norm());
+        twist = std::max(twist, (patch.controlPoint(i + 1, j + 1) - patch.controlPoint(i + 1, j) -
+                                 patch.controlPoint(i, j + 1) + patch.controlPoint(i, j)).norm());
       }
     }
   }
@@ -96,7 +96,7 @@ double error_bound_constant(const BezierPatch& patch) {
   return (bound_uu + 2.0 * bound_uv + bound_vv) / 8.0;
 }
 
-int smallest_level_for(double constant, double allowed, int max_level) {
+int smallestLevelFor(double constant, double allowed, int max_level) {
   if (!(allowed > 0.0)) return max_level;
   const double exact = std::sqrt(constant / allowed);
   if (!(exact < max_level)) return max_level;
@@ -105,7 +105,7 @@ int smallest_level_for(double constant, double allowed, int max_level) {
   return level;
 }
 
-void require_level_limit(int max_level) {
+void requireLevelLimit(int max_level) {
   if (max_level < 1 || max_level > Tessellator::kMaxLevel) {
     throw std::invalid_argument("tessellation max_level must be in [1, " +
                                 std::to_string(Tessellator::kMaxLevel) + "], got " +
@@ -115,21 +115,21 @@ void require_level_limit(int max_level) {
 
 }  // namespace
 
-std::array<Eigen::Vector3d, 4> edge_control_points(const BezierPatch& patch, PatchEdge edge) {
+std::array<Eigen::Vector3d, 4> edgeControlPoints(const BezierPatch& patch, PatchEdge edge) {
   std::array<Eigen::Vector3d, 4> points;
   for (int k = 0; k < 4; ++k) {
     switch (edge) {
-      case PatchEdge::v0: points[k] = patch.control_point(k, 0); break;
-      case PatchEdge::u1: points[k] = patch.control_point(3, k); break;
-      case PatchEdge::v1: points[k] = patch.control_point(k, 3); break;
-      case PatchEdge::u0: points[k] = patch.control_point(0, k); break;
+      case PatchEdge::kV0: points[k] = patch.controlPoint(k, 0); break;
+      case PatchEdge::kU1: points[k] = patch.controlPoint(3, k); break;
+      case PatchEdge::kV1: points[k] = patch.controlPoint(k, 3); break;
+      case PatchEdge::kU0: points[k] = patch.controlPoint(0, k); break;
     }
   }
   return points;
 }
 
-bool is_collapsed(const BezierPatch& patch, PatchEdge edge) {
-  const std::array<Eigen::Vector3d, 4> points = edge_control_points(patch, edge);
+bool isCollapsed(const BezierPatch& patch, PatchEdge edge) {
+  const std::array<Eigen::Vector3d, 4> points = edgeControlPoints(patch, edge);
   const double tolerance = kCollapsedRelative * patch.scale();
   for (int k = 1; k < 4; ++k) {
     if ((points[k] - points[0]).norm() > tolerance) return false;
@@ -142,8 +142,8 @@ bool is_collapsed(const BezierPatch& patch, PatchEdge edge) {
 PatchTopology::PatchTopology(std::size_t patch_count)
     : patch_count_(patch_count), edge_linked_(4 * patch_count, false) {}
 
-bool PatchTopology::is_linked(std::uint32_t patch, PatchEdge edge) const {
-  return patch < patch_count_ && edge_linked_[4 * patch + edge_index(edge)];
+bool PatchTopology::isLinked(std::uint32_t patch, PatchEdge edge) const {
+  return patch < patch_count_ && edge_linked_[4 * patch + edgeIndex(edge)];
 }
 
 void PatchTopology::link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t patch_b,
@@ -155,25 +155,25 @@ void PatchTopology::link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t 
     }
   }
   if (patch_a == patch_b && edge_a == edge_b) {
-    throw std::invalid_argument("PatchTopology::link: edge " + std::string(edge_name(edge_a)) +
+    throw std::invalid_argument("PatchTopology::link: edge " + std::string(edgeName(edge_a)) +
                                 " of patch " + std::to_string(patch_a) + " linked to itself");
   }
   for (auto [patch, edge] : {std::pair{patch_a, edge_a}, std::pair{patch_b, edge_b}}) {
-    if (edge_linked_[4 * patch + edge_index(edge)]) {
-      throw std::invalid_argument("PatchTopology::link: edge " + std::string(edge_name(edge)) +
+    if (edge_linked_[4 * patch + edgeIndex(edge)]) {
+      throw std::invalid_argument("PatchTopology::link: edge " + std::string(edgeName(edge)) +
                                   " of patch " + std::to_string(patch) +
                                   " is already linked; an edge meets at most one other edge");
     }
   }
-  edge_linked_[4 * patch_a + edge_index(edge_a)] = true;
-  edge_linked_[4 * patch_b + edge_index(edge_b)] = true;
+  edge_linked_[4 * patch_a + edgeIndex(edge_a)] = true;
+  edge_linked_[4 * patch_b + edgeIndex(edge_b)] = true;
   links_.push_back(EdgeLink{patch_a, edge_a, patch_b, edge_b, reversed});
 }
 
-PatchTopology PatchTopology::from_coincident_edges(const std::vector<BezierPatch>& patches,
+PatchTopology PatchTopology::fromCoincidentEdges(const std::vector<BezierPatch>& patches,
                                                    double tolerance) {
   if (!(tolerance >= 0.0)) {
-    throw std::invalid_argument("PatchTopology::from_coincident_edges: tolerance must be >= 0");
+    throw std::invalid_argument("PatchTopology::fromCoincidentEdges: tolerance must be >= 0");
   }
   PatchTopology topology(patches.size());
   const std::size_t edge_count = 4 * patches.size();
@@ -181,16 +181,16 @@ PatchTopology PatchTopology::from_coincident_edges(const std::vector<BezierPatch
   std::vector<bool> collapsed(edge_count);
   for (std::size_t e = 0; e < edge_count; ++e) {
     const PatchEdge edge = static_cast<PatchEdge>(e % 4);
-    points[e] = edge_control_points(patches[e / 4], edge);
+    points[e] = edgeControlPoints(patches[e / 4], edge);
     // Poles coincide with every other pole at the same place: they are not shared edges.
-    collapsed[e] = is_collapsed(patches[e / 4], edge);
+    collapsed[e] = isCollapsed(patches[e / 4], edge);
   }
   for (std::size_t a = 0; a < edge_count; ++a) {
     if (collapsed[a]) continue;
     for (std::size_t b = a + 1; b < edge_count; ++b) {
       if (collapsed[b]) continue;
       for (bool reversed : {false, true}) {
-        if (!edges_coincide(points[a], points[b], reversed, tolerance)) continue;
+        if (!edgesCoincide(points[a], points[b], reversed, tolerance)) continue;
         topology.link(static_cast<std::uint32_t>(a / 4), static_cast<PatchEdge>(a % 4),
                       static_cast<std::uint32_t>(b / 4), static_cast<PatchEdge>(b % 4), reversed);
         break;
@@ -210,17 +210,17 @@ PatchTopology PatchTopology::from_coincident_edges(const std::vector<BezierPatch
 // vertices' u (and v) is at most h^2 / 4 gives |F - L| <= (M_uu + 2 M_uv + M_vv) h^2 / 8.
 // M_uu <= 6 max |second u-differences of P|, M_vv likewise, M_uv <= 9 max |twists of P|
 // (the derivative patches are Bezier patches on those differences: convex hull property).
-double geometric_error_bound(const BezierPatch& patch, int level) {
-  if (level < 1) throw std::invalid_argument("geometric_error_bound: level must be >= 1");
-  return error_bound_constant(patch) / (static_cast<double>(level) * level);
+double geometricErrorBound(const BezierPatch& patch, int level) {
+  if (level < 1) throw std::invalid_argument("geometricErrorBound: level must be >= 1");
+  return errorBoundConstant(patch) / (static_cast<double>(level) * level);
 }
 
-int level_for_geometric_error(const BezierPatch& patch, double max_error, int max_level) {
-  require_level_limit(max_level);
+int levelForGeometricError(const BezierPatch& patch, double max_error, int max_level) {
+  requireLevelLimit(max_level);
   if (!(max_error > 0.0) || !std::isfinite(max_error)) {
-    throw std::invalid_argument("level_for_geometric_error: max_error must be finite and > 0");
+    throw std::invalid_argument("levelForGeometricError: max_error must be finite and > 0");
   }
-  return smallest_level_for(error_bound_constant(patch), max_error, max_level);
+  return smallestLevelFor(errorBoundConstant(patch), max_error, max_level);
 }
 
 // Projection uses the distance to the nearest point of the control net's bounding box, which
@@ -228,26 +228,26 @@ int level_for_geometric_error(const BezierPatch& patch, double max_error, int ma
 // the centre of the view, f = height / (2 tan(fov / 2)) being the focal length in pixels. Off
 // the view axis the true size is up to 1 / cos^2 of the off-axis angle larger; the camera's
 // orientation is not part of the query, so that factor is left to the caller's pixel budget.
-int level_for_screen_error(const BezierPatch& patch, const CameraView& camera,
+int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
                            double max_error_pixels, int max_level) {
-  require_level_limit(max_level);
+  requireLevelLimit(max_level);
   if (!camera.position.allFinite() || !(camera.vertical_fov_radians > 0.0) ||
       !(camera.vertical_fov_radians < kPi) || !(camera.viewport_height_pixels > 0.0) ||
       !std::isfinite(camera.viewport_height_pixels)) {
     throw std::invalid_argument(
-        "level_for_screen_error: camera needs a finite position, 0 < fov < pi and a viewport "
+        "levelForScreenError: camera needs a finite position, 0 < fov < pi and a viewport "
         "height > 0");
   }
   if (!(max_error_pixels > 0.0) || !std::isfinite(max_error_pixels)) {
-    throw std::invalid_argument("level_for_screen_error: max_error_pixels must be finite and > 0");
+    throw std::invalid_argument("levelForScreenError: max_error_pixels must be finite and > 0");
   }
   const Eigen::Vector3d nearest =
-      camera.position.cwiseMax(patch.bounding_box_min()).cwiseMin(patch.bounding_box_max());
+      camera.position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
   const double distance = (nearest - camera.position).norm();
   if (!(distance > 0.0)) return max_level;
   const double focal_pixels =
       camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
-  return smallest_level_for(error_bound_constant(patch), max_error_pixels * distance / focal_pixels,
+  return smallestLevelFor(errorBoundConstant(patch), max_error_pixels * distance / focal_pixels,
                             max_level);
 }
 
@@ -272,7 +272,7 @@ struct Tessellator::PatchLayout {
 Tessellator::Tessellator() = default;
 Tessellator::~Tessellator() = default;
 
-const BernsteinTable& Tessellator::boundary_table(int level) {
+const BernsteinTable& Tessellator::boundaryTable(int level) {
   if (boundary_tables_.size() <= static_cast<std::size_t>(level)) boundary_tables_.resize(level + 1);
   if (!boundary_tables_[level]) {
     boundary_tables_[level] = std::make_unique<BernsteinTable>(BernsteinTable::uniform(level));
@@ -280,38 +280,38 @@ const BernsteinTable& Tessellator::boundary_table(int level) {
   return *boundary_tables_[level];
 }
 
-const BernsteinTable& Tessellator::interior_table(int level) {
+const BernsteinTable& Tessellator::interiorTable(int level) {
   if (interior_tables_.size() <= static_cast<std::size_t>(level)) interior_tables_.resize(level + 1);
   if (!interior_tables_[level]) {
     interior_tables_[level] =
-        std::make_unique<BernsteinTable>(BernsteinTable::uniform_interior(level));
+        std::make_unique<BernsteinTable>(BernsteinTable::uniformInterior(level));
   }
   return *interior_tables_[level];
 }
 
-const TriangleMesh& Tessellator::tessellate_uniform(const std::vector<BezierPatch>& patches,
+const TriangleMesh& Tessellator::tessellateUniform(const std::vector<BezierPatch>& patches,
                                                     const PatchTopology& topology, int level) {
   requested_levels_.assign(patches.size(), level);
   return tessellate(patches, topology, requested_levels_);
 }
 
-const TriangleMesh& Tessellator::tessellate_to_error(const std::vector<BezierPatch>& patches,
+const TriangleMesh& Tessellator::tessellateToError(const std::vector<BezierPatch>& patches,
                                                      const PatchTopology& topology,
                                                      double max_error, int max_level) {
   requested_levels_.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
-    requested_levels_[p] = level_for_geometric_error(patches[p], max_error, max_level);
+    requested_levels_[p] = levelForGeometricError(patches[p], max_error, max_level);
   }
   return tessellate(patches, topology, requested_levels_);
 }
 
-const TriangleMesh& Tessellator::tessellate_for_camera(const std::vector<BezierPatch>& patches,
+const TriangleMesh& Tessellator::tessellateForCamera(const std::vector<BezierPatch>& patches,
                                                        const PatchTopology& topology,
                                                        const CameraView& camera,
                                                        double max_error_pixels, int max_level) {
   requested_levels_.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
-    requested_levels_[p] = level_for_screen_error(patches[p], camera, max_error_pixels, max_level);
+    requested_levels_[p] = levelForScreenError(patches[p], camera, max_error_pixels, max_level);
   }
   return tessellate(patches, topology, requested_levels_);
 }
@@ -319,9 +319,9 @@ const TriangleMesh& Tessellator::tessellate_for_camera(const std::vector<BezierP
 const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patches,
                                             const PatchTopology& topology,
                                             const std::vector<int>& levels) {
-  if (topology.patch_count() != patches.size() || levels.size() != patches.size()) {
+  if (topology.patchCount() != patches.size() || levels.size() != patches.size()) {
     throw std::invalid_argument("Tessellator: " + std::to_string(patches.size()) + " patches, but " +
-                                std::to_string(topology.patch_count()) + " in the topology and " +
+                                std::to_string(topology.patchCount()) + " in the topology and " +
                                 std::to_string(levels.size()) + " levels");
   }
   for (std::size_t p = 0; p < levels.size(); ++p) {
@@ -335,11 +335,11 @@ const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patc
     const BezierPatch& a = patches[link.patch_a];
     const BezierPatch& b = patches[link.patch_b];
     const double tolerance = kLinkMismatchRelative * std::max(a.scale(), b.scale());
-    if (!edges_coincide(edge_control_points(a, link.edge_a), edge_control_points(b, link.edge_b),
+    if (!edgesCoincide(edgeControlPoints(a, link.edge_a), edgeControlPoints(b, link.edge_b),
                         link.reversed, tolerance)) {
       std::ostringstream message;
-      message << "Tessellator: edge " << edge_name(link.edge_a) << " of patch " << link.patch_a
-              << " and edge " << edge_name(link.edge_b) << " of patch " << link.patch_b
+      message << "Tessellator: edge " << edgeName(link.edge_a) << " of patch " << link.patch_a
+              << " and edge " << edgeName(link.edge_b) << " of patch " << link.patch_b
               << " are linked" << (link.reversed ? " (reversed)" : "")
               << " but their control points differ by more than " << tolerance;
       throw std::invalid_argument(message.str());
@@ -348,23 +348,23 @@ const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patc
   collapsed_edges_.resize(4 * patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
     for (int e = 0; e < 4; ++e) {
-      collapsed_edges_[4 * p + e] = is_collapsed(patches[p], static_cast<PatchEdge>(e)) ? 1 : 0;
+      collapsed_edges_[4 * p + e] = isCollapsed(patches[p], static_cast<PatchEdge>(e)) ? 1 : 0;
     }
   }
   if (!has_layout_ || layout_patch_count_ != patches.size() || layout_requested_levels_ != levels ||
-      layout_collapsed_edges_ != collapsed_edges_ || !layout_matches(topology)) {
+      layout_collapsed_edges_ != collapsed_edges_ || !layoutMatches(topology)) {
     layout_requested_levels_ = levels;
-    build_layout(patches, topology);
+    buildLayout(patches, topology);
   }
-  evaluate_vertices(patches);
+  evaluateVertices(patches);
   return mesh_;
 }
 
-bool Tessellator::layout_matches(const PatchTopology& topology) const {
+bool Tessellator::layoutMatches(const PatchTopology& topology) const {
   return layout_links_ == topology.links();
 }
 
-void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
+void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
                                const PatchTopology& topology) {
   const std::size_t patch_count = patches.size();
   layout_patch_count_ = patch_count;
@@ -380,8 +380,8 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
   for (const EdgeLink& link : layout_links_) {
     const int shared = std::max(layout_requested_levels_[link.patch_a],
                                 layout_requested_levels_[link.patch_b]);
-    edge_level[4 * link.patch_a + edge_index(link.edge_a)] = shared;
-    edge_level[4 * link.patch_b + edge_index(link.edge_b)] = shared;
+    edge_level[4 * link.patch_a + edgeIndex(link.edge_a)] = shared;
+    edge_level[4 * link.patch_b + edgeIndex(link.edge_b)] = shared;
   }
   // A level-1 patch has no inner vertex to stitch a finer edge to: give it one.
   levels_ = layout_requested_levels_;
@@ -411,13 +411,13 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
     }
   }
   for (const EdgeLink& link : layout_links_) {
-    const int ea = edge_index(link.edge_a);
-    const int eb = edge_index(link.edge_b);
+    const int ea = edgeIndex(link.edge_a);
+    const int eb = edgeIndex(link.edge_b);
     const int m = edge_level[4 * link.patch_a + ea];
     for (int along = 0; along <= m; ++along) {  // index by increasing edge parameter of edge a
       const int along_b = link.reversed ? m - along : along;
-      const int ka = runs_against_parameter(ea) ? m - along : along;
-      const int kb = runs_against_parameter(eb) ? m - along_b : along_b;
+      const int ka = runsAgainstParameter(ea) ? m - along : along;
+      const int kb = runsAgainstParameter(eb) ? m - along_b : along_b;
       unite(parent, slot(link.patch_a, ea, ka), slot(link.patch_b, eb, kb));
     }
   }
@@ -435,7 +435,7 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
     PatchLayout& layout = patch_layouts_[p];
     layout.level = n;
     layout.interior_first_vertex = vertex_count;
-    layout.interior = &interior_table(n);
+    layout.interior = &interiorTable(n);
     for (int j = 1; j < n; ++j) {
       for (int i = 1; i < n; ++i) {
         mesh_.uv.emplace_back(static_cast<float>(i) / n, static_cast<float>(j) / n);
@@ -444,18 +444,18 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
     vertex_count += static_cast<std::uint32_t>((n - 1) * (n - 1));
     for (int e = 0; e < 4; ++e) {
       const int m = edge_level[4 * p + e];
-      const BernsteinTable& table = boundary_table(m);
+      const BernsteinTable& table = boundaryTable(m);
       for (int k = 0; k <= m; ++k) {
         const std::uint32_t s = slot(p, e, k);
-        const std::uint32_t root = find_root(parent, s);
+        const std::uint32_t root = findRoot(parent, s);
         if (root_vertex[root] == kUnassigned) {
           root_vertex[root] = vertex_count++;
-          const Eigen::Vector2d uv = edge_point_parameters(e, k, m);
+          const Eigen::Vector2d uv = edgePointParameters(e, k, m);
           // Parameter k/m along the edge, or 1 - k/m = (m-k)/m, or exactly 0 or 1: all in `table`.
           auto weights_of = [&](double t) -> const BernsteinWeights* {
             if (t == 0.0) return &table.weights(0);
             if (t == 1.0) return &table.weights(m);
-            return &table.weights(runs_against_parameter(e) ? m - k : k);
+            return &table.weights(runsAgainstParameter(e) ? m - k : k);
           };
           owned_boundary_vertices_.push_back(OwnedBoundaryVertex{
               root_vertex[root], static_cast<std::uint32_t>(p), uv.x(), uv.y(), weights_of(uv.x()),
@@ -489,7 +489,7 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
     };
     auto boundary = [&](int e, int k) {
       const int m = edge_level[4 * p + e];
-      return Corner{slot_vertex[slot(p, e, k)], edge_point_parameters(e, k, m)};
+      return Corner{slot_vertex[slot(p, e, k)], edgePointParameters(e, k, m)};
     };
     auto emit = [&](const Corner& a, const Corner& b, const Corner& c) {
       // Welded poles turn some triangles into segments: drop them.
@@ -515,7 +515,7 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
     // Stitch each edge's vertices (m + 1, parameters k/m) to the side of the inner grid facing it
     // (n - 1 vertices, parameters (k+1)/n), walking both counter-clockwise and always advancing
     // the row whose next vertex comes first. With m >= n every triangle then spans at most 1/n
-    // in u and in v, which geometric_error_bound relies on.
+    // in u and in v, which geometricErrorBound relies on.
     for (int e = 0; e < 4; ++e) {
       const int m = edge_level[4 * p + e];
       auto inner = [&](int k) {  // k-th inner-ring vertex facing edge e, counter-clockwise
@@ -547,12 +547,12 @@ void Tessellator::build_layout(const std::vector<BezierPatch>& patches,
   has_layout_ = true;
 }
 
-void Tessellator::evaluate_vertices(const std::vector<BezierPatch>& patches) {
+void Tessellator::evaluateVertices(const std::vector<BezierPatch>& patches) {
   for (std::size_t p = 0; p < patches.size(); ++p) {
     const PatchLayout& layout = patch_layouts_[p];
     if (layout.level < 2) continue;
     const std::uint32_t first = layout.interior_first_vertex;
-    patches[p].evaluate_grid(*layout.interior, *layout.interior,
+    patches[p].evaluateGrid(*layout.interior, *layout.interior,
                              SurfaceSampleArrays{&mesh_.positions[first], &mesh_.normals[first],
                                                  &mesh_.tangents_u[first],
                                                  &mesh_.tangents_v[first]});

@@ -7,10 +7,15 @@
 //            the test surface of test_tessellation): curvature varies, patch sizes are similar.
 //   body     body-like set: a torso-sized capsule, an arm-sized one and five finger-sized ones
 //            (112 patches): patch sizes and curvatures vary as much as on the skin.
+//   skin     the real skin (config/bodies/default.yaml on urdf/human.urdf) posed at 30 % of the
+//            walk (config/motions/walk.yaml): the surface the renderer draws.
 // Error: for sample points of every triangle, the distance to the closest point of the
 // triangle's patch (Gauss-Newton from the parametric guess). Also printed: the parametric error
 // |F(x) - L(x)|, the upper bound that the adaptive criterion controls.
 #include "dressed_human/core/generalized_cylinder.h"
+#include "dressed_human/core/motion_evaluator.h"
+#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/skin.h"
 #include "dressed_human/core/tessellation.h"
 
 #include <Eigen/Dense>
@@ -43,12 +48,12 @@ void append(NamedSurface& target, const PatchSurface& part) {
   target.topology = merged;
 }
 
-PatchSurface shifted_capsule(const std::vector<CylinderRing>& rings, double bottom, double top,
+PatchSurface shiftedCapsule(const std::vector<CylinderRing>& rings, double bottom, double top,
                              const Eigen::Vector3d& offset) {
-  const PatchSurface surface = make_generalized_cylinder(rings, bottom, top);
+  const PatchSurface surface = makeGeneralizedCylinder(rings, bottom, top);
   PatchSurface moved{{}, surface.topology};
   for (const BezierPatch& patch : surface.patches) {
-    BezierPatch::ControlPoints points = patch.control_points();
+    BezierPatch::ControlPoints points = patch.controlPoints();
     for (Eigen::Vector3d& p : points) p += offset;
     moved.patches.emplace_back(points);
   }
@@ -57,7 +62,7 @@ PatchSurface shifted_capsule(const std::vector<CylinderRing>& rings, double bott
 
 NamedSurface capsule() {
   NamedSurface s{"capsule", {}, PatchTopology(0)};
-  append(s, make_generalized_cylinder({{0.0, 0.10, 0.08}, {0.10, 0.14, 0.10}, {0.20, 0.05, 0.05},
+  append(s, makeGeneralizedCylinder({{0.0, 0.10, 0.08}, {0.10, 0.14, 0.10}, {0.20, 0.05, 0.05},
                                        {0.30, 0.06, 0.05}, {0.40, 0.07, 0.06}, {0.50, 0.03, 0.035},
                                        {0.60, 0.04, 0.04}},
                                       0.08, 0.03));
@@ -67,19 +72,19 @@ NamedSurface capsule() {
 NamedSurface body() {
   NamedSurface s{"body", {}, PatchTopology(0)};
   // Torso: 0.55 m, chest and waist.
-  append(s, shifted_capsule({{0.00, 0.16, 0.11}, {0.12, 0.17, 0.12}, {0.22, 0.14, 0.10},
+  append(s, shiftedCapsule({{0.00, 0.16, 0.11}, {0.12, 0.17, 0.12}, {0.22, 0.14, 0.10},
                              {0.30, 0.13, 0.09}, {0.40, 0.15, 0.10}, {0.48, 0.17, 0.11},
                              {0.55, 0.15, 0.10}},
                             0.06, 0.05, Eigen::Vector3d::Zero()));
   // Arm: 0.55 m, elbow and wrist.
-  append(s, shifted_capsule({{0.00, 0.045, 0.045}, {0.10, 0.05, 0.045}, {0.18, 0.04, 0.04},
+  append(s, shiftedCapsule({{0.00, 0.045, 0.045}, {0.10, 0.05, 0.045}, {0.18, 0.04, 0.04},
                              {0.27, 0.035, 0.035}, {0.35, 0.04, 0.035}, {0.45, 0.03, 0.025},
                              {0.55, 0.025, 0.02}},
                             0.02, 0.02, Eigen::Vector3d(0.3, 0.0, 0.0)));
   // Fingers: 8 cm, 8-10 mm radius.
   for (int f = 0; f < 5; ++f) {
     const double r = 0.008 + 0.0005 * f;
-    append(s, shifted_capsule({{0.00, r, r}, {0.02, 1.1 * r, r}, {0.04, 0.9 * r, 0.9 * r},
+    append(s, shiftedCapsule({{0.00, r, r}, {0.02, 1.1 * r, r}, {0.04, 0.9 * r, 0.9 * r},
                                {0.05, r, 0.95 * r}, {0.06, 0.95 * r, 0.9 * r}, {0.07, 0.9 * r, 0.85 * r},
                                {0.08, 0.85 * r, 0.8 * r}},
                               0.004, 0.007, Eigen::Vector3d(0.45 + 0.03 * f, 0.0, 0.0)));
@@ -87,8 +92,23 @@ NamedSurface body() {
   return s;
 }
 
+// The default skin in a walk pose; `root` is the package directory.
+NamedSurface skin(const std::string& root) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(root + "/urdf/human.urdf");
+  const BodyDescription body = loadBodyDescriptionFile(root + "/config/bodies/default.yaml", skeleton);
+  MotionEvaluator walk(loadMotionFile(root + "/config/motions/walk.yaml"));
+  JointAngles angles;
+  RigidTransform pelvis;
+  walk.evaluate(0.3 * walk.motion().period, angles, pelvis);
+  SkeletonPose pose;
+  ForwardKinematics(skeleton, body.shape).compute(pelvis, angles, pose);
+  Skin posed(skeleton, body);
+  posed.pose(pose);
+  return NamedSurface{"skin", posed.patches(), posed.topology()};
+}
+
 // Closest point of the patch to p, from the parametric guess; returns the distance.
-double distance_to_patch(const BezierPatch& patch, const Eigen::Vector3d& p, Eigen::Vector2d uv) {
+double distanceToPatch(const BezierPatch& patch, const Eigen::Vector3d& p, Eigen::Vector2d uv) {
   double best = (patch.position(uv.x(), uv.y()) - p).norm();
   for (int iteration = 0; iteration < 4; ++iteration) {
     const PatchDerivatives d = patch.derivatives(uv.x(), uv.y());
@@ -116,8 +136,8 @@ Errors measure(const TriangleMesh& mesh, const Tessellator& tessellator,
                const std::vector<BezierPatch>& patches) {
   constexpr int kSteps = 3;  // 10 sample points per triangle; the 3 corners carry no error
   Errors errors;
-  const auto& corners = tessellator.triangle_corner_parameters();
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+  const auto& corners = tessellator.triangleCornerParameters();
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const BezierPatch& patch = patches[mesh.triangle_patch[t]];
     for (int a = 0; a <= kSteps; ++a) {
       for (int b = 0; a + b <= kSteps; ++b) {
@@ -130,7 +150,7 @@ Errors measure(const TriangleMesh& mesh, const Tessellator& tessellator,
                                         wc * mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
         const double parametric = (on_mesh - patch.position(uv.x(), uv.y())).norm();
         errors.parametric = std::max(errors.parametric, parametric);
-        errors.closest = std::max(errors.closest, std::min(parametric, distance_to_patch(patch, on_mesh, uv)));
+        errors.closest = std::max(errors.closest, std::min(parametric, distanceToPatch(patch, on_mesh, uv)));
       }
     }
   }
@@ -162,26 +182,29 @@ void report(const NamedSurface& surface, const char* method, double parameter, T
   const TriangleMesh& mesh = tessellator.mesh();
   const Errors errors = measure(mesh, tessellator, surface.patches);
   std::printf("%s,%s,%.6g,%zu,%zu,%.6g,%.6g,%.3f,%.3f\n", surface.name.c_str(), method, parameter,
-              mesh.triangle_count(), mesh.vertex_count(), 1e3 * errors.closest, 1e3 * errors.parametric,
+              mesh.triangleCount(), mesh.vertexCount(), 1e3 * errors.closest, 1e3 * errors.parametric,
               frame_us, build_us);
   std::fflush(stdout);
 }
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  const std::string root = argc > 1 ? argv[1] : ".";
   std::printf("surface,method,parameter,triangles,vertices,max_error_mm,max_parametric_error_mm,"
               "tessellate_us,layout_build_us\n");
-  for (const NamedSurface& surface : {capsule(), body()}) {
+  for (const NamedSurface& surface : {capsule(), body(), skin(root)}) {
     for (int level : {1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 40, 48, 64}) {
+      if (surface.name == "skin" && level > 32) break;  // ~1/2 M triangles: enough, and slow to measure
       report(surface, "uniform", level, [&](Tessellator& t) {
-        t.tessellate_uniform(surface.patches, surface.topology, level);
+        t.tessellateUniform(surface.patches, surface.topology, level);
       });
     }
     // Down to where the finest patches reach Tessellator::kMaxLevel (the uniform sweep's end).
     for (double tolerance_mm : {10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05}) {
+      if (surface.name == "skin" && tolerance_mm < 0.1) break;
       report(surface, "adaptive", tolerance_mm, [&](Tessellator& t) {
-        t.tessellate_to_error(surface.patches, surface.topology, 1e-3 * tolerance_mm);
+        t.tessellateToError(surface.patches, surface.topology, 1e-3 * tolerance_mm);
       });
     }
   }

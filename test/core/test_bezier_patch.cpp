@@ -12,7 +12,7 @@
 namespace dressed_human {
 namespace {
 
-BezierPatch::ControlPoints random_control_points(std::mt19937& random) {
+BezierPatch::ControlPoints randomControlPoints(std::mt19937& random) {
   std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
   BezierPatch::ControlPoints points;
   for (Eigen::Vector3d& p : points) p = {coordinate(random), coordinate(random), coordinate(random)};
@@ -21,7 +21,7 @@ BezierPatch::ControlPoints random_control_points(std::mt19937& random) {
 
 // Independent reference: repeated linear interpolation, first along u within each v-row, then
 // along v through the four results.
-Eigen::Vector3d de_casteljau(const std::array<Eigen::Vector3d, 4>& points, double t) {
+Eigen::Vector3d deCasteljau(const std::array<Eigen::Vector3d, 4>& points, double t) {
   std::array<Eigen::Vector3d, 4> level = points;
   for (int size = 3; size > 0; --size) {
     for (int k = 0; k < size; ++k) level[k] = (1.0 - t) * level[k] + t * level[k + 1];
@@ -29,23 +29,23 @@ Eigen::Vector3d de_casteljau(const std::array<Eigen::Vector3d, 4>& points, doubl
   return level[0];
 }
 
-Eigen::Vector3d de_casteljau(const BezierPatch::ControlPoints& points, double u, double v) {
+Eigen::Vector3d deCasteljau(const BezierPatch::ControlPoints& points, double u, double v) {
   std::array<Eigen::Vector3d, 4> column;
   for (int j = 0; j < 4; ++j) {
-    column[j] = de_casteljau({points[BezierPatch::index(0, j)], points[BezierPatch::index(1, j)],
+    column[j] = deCasteljau({points[BezierPatch::index(0, j)], points[BezierPatch::index(1, j)],
                               points[BezierPatch::index(2, j)], points[BezierPatch::index(3, j)]},
                              u);
   }
-  return de_casteljau(column, v);
+  return deCasteljau(column, v);
 }
 
-std::vector<double> parameters_with_ends() {
+std::vector<double> parametersWithEnds() {
   return {0.0, 1e-9, 0.013, 0.2, 0.25, 0.5, 0.61, 0.77, 0.999, 1.0};
 }
 
 TEST(Bernstein, PartitionOfUnityAndDerivativesSumToZero) {
-  for (double t : parameters_with_ends()) {
-    const std::array<Eigen::Vector4d, 4> d = cubic_bernstein_derivatives(t);
+  for (double t : parametersWithEnds()) {
+    const std::array<Eigen::Vector4d, 4> d = cubicBernsteinDerivatives(t);
     EXPECT_NEAR(d[0].sum(), 1.0, 1e-15);
     for (int order = 1; order < 4; ++order) EXPECT_NEAR(d[order].sum(), 0.0, 1e-13);
     for (int i = 0; i < 4; ++i) {
@@ -62,18 +62,18 @@ TEST(Bernstein, TableRejectsParametersOutsideTheUnitInterval) {
   const BernsteinTable table = BernsteinTable::uniform(4);
   ASSERT_EQ(table.size(), 5u);
   EXPECT_DOUBLE_EQ(table.parameter(3), 0.75);
-  EXPECT_EQ(BernsteinTable::uniform_interior(4).size(), 3u);
-  EXPECT_EQ(BernsteinTable::uniform_interior(1).size(), 0u);
+  EXPECT_EQ(BernsteinTable::uniformInterior(4).size(), 3u);
+  EXPECT_EQ(BernsteinTable::uniformInterior(1).size(), 0u);
 }
 
 TEST(BezierPatch, EvaluationMatchesDeCasteljau) {
   std::mt19937 random(1);
   for (int trial = 0; trial < 20; ++trial) {
-    const BezierPatch::ControlPoints points = random_control_points(random);
+    const BezierPatch::ControlPoints points = randomControlPoints(random);
     const BezierPatch patch(points);
-    for (double u : parameters_with_ends()) {
-      for (double v : parameters_with_ends()) {
-        const Eigen::Vector3d expected = de_casteljau(points, u, v);
+    for (double u : parametersWithEnds()) {
+      for (double v : parametersWithEnds()) {
+        const Eigen::Vector3d expected = deCasteljau(points, u, v);
         EXPECT_LT((patch.position(u, v) - expected).norm(), 1e-12) << u << ", " << v;
         EXPECT_LT((patch.derivatives(u, v).position - expected).norm(), 1e-12);
         EXPECT_LT((patch.sample(u, v).position - expected).norm(), 1e-12);
@@ -84,7 +84,7 @@ TEST(BezierPatch, EvaluationMatchesDeCasteljau) {
 
 TEST(BezierPatch, CornersInterpolateTheCornerControlPoints) {
   std::mt19937 random(2);
-  const BezierPatch::ControlPoints points = random_control_points(random);
+  const BezierPatch::ControlPoints points = randomControlPoints(random);
   const BezierPatch patch(points);
   EXPECT_EQ(patch.position(0, 0), points[BezierPatch::index(0, 0)]);
   EXPECT_LT((patch.position(1, 0) - points[BezierPatch::index(3, 0)]).norm(), 1e-15);
@@ -96,7 +96,7 @@ TEST(BezierPatch, DerivativesMatchCentralFiniteDifferences) {
   std::mt19937 random(3);
   const double h = 1e-5;
   for (int trial = 0; trial < 10; ++trial) {
-    const BezierPatch patch(random_control_points(random));
+    const BezierPatch patch(randomControlPoints(random));
     for (double u : {0.1, 0.37, 0.5, 0.9}) {
       for (double v : {0.05, 0.42, 0.8}) {
         const PatchDerivatives d = patch.derivatives(u, v);
@@ -129,12 +129,12 @@ TEST(BezierPatch, DerivativesMatchCentralFiniteDifferences) {
 
 TEST(BezierPatch, GridEvaluationMatchesPointEvaluation) {
   std::mt19937 random(4);
-  const BezierPatch patch(random_control_points(random));
+  const BezierPatch patch(randomControlPoints(random));
   const BernsteinTable u_table({0.0, 0.3, 0.5, 1.0});
   const BernsteinTable v_table = BernsteinTable::uniform(6);
   const std::size_t count = u_table.size() * v_table.size();
   std::vector<Eigen::Vector3f> positions(count), normals(count), tangents_u(count), tangents_v(count);
-  patch.evaluate_grid(u_table, v_table,
+  patch.evaluateGrid(u_table, v_table,
                       {positions.data(), normals.data(), tangents_u.data(), tangents_v.data()});
   for (std::size_t b = 0; b < v_table.size(); ++b) {
     for (std::size_t a = 0; a < u_table.size(); ++a) {
@@ -153,9 +153,9 @@ TEST(BezierPatch, GridEvaluationMatchesPointEvaluation) {
 
 TEST(BezierPatch, RegularNormalIsTheUnitCrossProductOfThePartials) {
   std::mt19937 random(5);
-  const BezierPatch patch(random_control_points(random));
-  for (double u : parameters_with_ends()) {
-    for (double v : parameters_with_ends()) {
+  const BezierPatch patch(randomControlPoints(random));
+  for (double u : parametersWithEnds()) {
+    for (double v : parametersWithEnds()) {
       const PatchDerivatives d = patch.derivatives(u, v);
       const Eigen::Vector3d n = patch.normal(u, v);
       EXPECT_NEAR(n.norm(), 1.0, 1e-12);
@@ -167,7 +167,7 @@ TEST(BezierPatch, RegularNormalIsTheUnitCrossProductOfThePartials) {
 // ---------------------------------------------------------------- degenerate patches
 
 // Copies the edge's four control points onto its first one: a pole.
-BezierPatch::ControlPoints collapse_edge(BezierPatch::ControlPoints points, const std::string& edge) {
+BezierPatch::ControlPoints collapseEdge(BezierPatch::ControlPoints points, const std::string& edge) {
   for (int k = 0; k < 4; ++k) {
     if (edge == "v0") points[BezierPatch::index(k, 0)] = points[BezierPatch::index(0, 0)];
     if (edge == "v1") points[BezierPatch::index(k, 3)] = points[BezierPatch::index(0, 3)];
@@ -177,17 +177,17 @@ BezierPatch::ControlPoints collapse_edge(BezierPatch::ControlPoints points, cons
   return points;
 }
 
-void expect_unit_finite_normals_everywhere(const BezierPatch& patch) {
+void expectUnitFiniteNormalsEverywhere(const BezierPatch& patch) {
   const BernsteinTable table = BernsteinTable::uniform(16);
   const std::size_t count = table.size() * table.size();
   std::vector<Eigen::Vector3f> positions(count), normals(count), tangents_u(count), tangents_v(count);
-  patch.evaluate_grid(table, table, {positions.data(), normals.data(), tangents_u.data(), tangents_v.data()});
+  patch.evaluateGrid(table, table, {positions.data(), normals.data(), tangents_u.data(), tangents_v.data()});
   for (const Eigen::Vector3f& n : normals) {
     ASSERT_TRUE(n.allFinite());
     EXPECT_NEAR(n.norm(), 1.0f, 1e-6f);
   }
-  for (double u : parameters_with_ends()) {
-    for (double v : parameters_with_ends()) {
+  for (double u : parametersWithEnds()) {
+    for (double v : parametersWithEnds()) {
       const Eigen::Vector3d n = patch.normal(u, v);
       ASSERT_TRUE(n.allFinite()) << u << ", " << v;
       EXPECT_NEAR(n.norm(), 1.0, 1e-12) << u << ", " << v;
@@ -199,8 +199,8 @@ TEST(BezierPatch, CollapsedEdgeHasTheLimitNormalOnEveryEdge) {
   std::mt19937 random(6);
   for (const std::string edge : {"v0", "v1", "u0", "u1"}) {
     for (int trial = 0; trial < 5; ++trial) {
-      const BezierPatch patch(collapse_edge(random_control_points(random), edge));
-      expect_unit_finite_normals_everywhere(patch);
+      const BezierPatch patch(collapseEdge(randomControlPoints(random), edge));
+      expectUnitFiniteNormalsEverywhere(patch);
       for (double t : {0.0, 0.1, 0.5, 0.8, 1.0}) {
         // On the pole and a little inside the patch, moving away from the pole.
         double u = t, v = t, inside_u = t, inside_v = t;
@@ -227,7 +227,7 @@ TEST(BezierPatch, CollapsedEdgeHasTheLimitNormalOnEveryEdge) {
 TEST(BezierPatch, CollapsedCornerHasTheLimitNormalAlongTheDiagonal) {
   std::mt19937 random(7);
   for (int trial = 0; trial < 10; ++trial) {
-    BezierPatch::ControlPoints points = random_control_points(random);
+    BezierPatch::ControlPoints points = randomControlPoints(random);
     if (trial % 2 == 0) {
       // Two coincident corner points: F_u(0,0) = 0.
       points[BezierPatch::index(1, 0)] = points[BezierPatch::index(0, 0)];
@@ -237,7 +237,7 @@ TEST(BezierPatch, CollapsedCornerHasTheLimitNormalAlongTheDiagonal) {
                                          0.7 * (points[BezierPatch::index(1, 0)] - points[BezierPatch::index(0, 0)]);
     }
     const BezierPatch patch(points);
-    expect_unit_finite_normals_everywhere(patch);
+    expectUnitFiniteNormalsEverywhere(patch);
     const Eigen::Vector3d corner = patch.normal(0.0, 0.0);
     EXPECT_LT((corner - patch.normal(1e-7, 1e-7)).norm(), 1e-5) << "trial " << trial;
   }
@@ -247,8 +247,8 @@ TEST(BezierPatch, TwoCollapsedEdgesMeetingAtACornerStayFinite) {
   std::mt19937 random(8);
   for (int trial = 0; trial < 10; ++trial) {
     // v = 0 and u = 0 both collapse to P00: a patch bounded by two curves.
-    const BezierPatch patch(collapse_edge(collapse_edge(random_control_points(random), "v0"), "u0"));
-    expect_unit_finite_normals_everywhere(patch);
+    const BezierPatch patch(collapseEdge(collapseEdge(randomControlPoints(random), "v0"), "u0"));
+    expectUnitFiniteNormalsEverywhere(patch);
     const Eigen::Vector3d corner = patch.normal(0.0, 0.0);
     // Higher-order degeneracy converges more slowly: compare with a point well inside.
     EXPECT_LT((corner - patch.normal(1e-6, 1e-6)).norm(), 1e-3) << "trial " << trial;
@@ -266,7 +266,7 @@ TEST(BezierPatch, PatchDegenerateToACurveThrowsInsteadOfReturningNaN) {
 
 TEST(BezierPatch, RejectsBadInput) {
   std::mt19937 random(9);
-  BezierPatch::ControlPoints points = random_control_points(random);
+  BezierPatch::ControlPoints points = randomControlPoints(random);
   points[BezierPatch::index(2, 1)].y() = std::numeric_limits<double>::infinity();
   try {
     BezierPatch patch(points);
@@ -277,7 +277,7 @@ TEST(BezierPatch, RejectsBadInput) {
   BezierPatch::ControlPoints point;
   point.fill(Eigen::Vector3d(1, 2, 3));
   EXPECT_THROW(BezierPatch{point}, std::invalid_argument);
-  const BezierPatch patch(random_control_points(random));
+  const BezierPatch patch(randomControlPoints(random));
   EXPECT_THROW(patch.position(-0.1, 0.5), std::invalid_argument);
   EXPECT_THROW(patch.normal(0.5, std::nan("")), std::invalid_argument);
 }

@@ -37,8 +37,8 @@ namespace {
 
 // A closed capsule-like surface: 2 stacks of 4 side patches, a dome at each end (16 patches),
 // with bulges and a waist so curvature varies from patch to patch.
-PatchSurface closed_test_surface() {
-  return make_generalized_cylinder({{0.0, 0.10, 0.08},
+PatchSurface closedTestSurface() {
+  return makeGeneralizedCylinder({{0.0, 0.10, 0.08},
                                     {0.10, 0.14, 0.10},
                                     {0.20, 0.05, 0.05},
                                     {0.30, 0.06, 0.05},
@@ -53,9 +53,9 @@ struct EdgeUse {
   int backward = 0;  // as (b, a)
 };
 
-std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeUse> edge_uses(const TriangleMesh& mesh) {
+std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeUse> edgeUses(const TriangleMesh& mesh) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeUse> uses;
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     for (int c = 0; c < 3; ++c) {
       const std::uint32_t a = mesh.indices[3 * t + c];
       const std::uint32_t b = mesh.indices[3 * t + (c + 1) % 3];
@@ -67,33 +67,33 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeUse> edge_uses(const Trian
 
 // Every edge in exactly two triangles, once in each direction (consistent orientation), every
 // vertex used, no degenerate triangle, and Euler characteristic 2 (a sphere: nothing welded wrong).
-void expect_closed_oriented_sphere(const TriangleMesh& mesh) {
-  ASSERT_GT(mesh.triangle_count(), 0u);
-  std::vector<bool> used(mesh.vertex_count(), false);
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+void expectClosedOrientedSphere(const TriangleMesh& mesh) {
+  ASSERT_GT(mesh.triangleCount(), 0u);
+  std::vector<bool> used(mesh.vertexCount(), false);
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const std::uint32_t* tri = &mesh.indices[3 * t];
     ASSERT_TRUE(tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2]);
     for (int c = 0; c < 3; ++c) {
-      ASSERT_LT(tri[c], mesh.vertex_count());
+      ASSERT_LT(tri[c], mesh.vertexCount());
       used[tri[c]] = true;
     }
   }
   EXPECT_TRUE(std::all_of(used.begin(), used.end(), [](bool u) { return u; }));
-  const auto uses = edge_uses(mesh);
+  const auto uses = edgeUses(mesh);
   for (const auto& [edge, use] : uses) {
     ASSERT_EQ(use.forward, 1) << "edge " << edge.first << "-" << edge.second;
     ASSERT_EQ(use.backward, 1) << "edge " << edge.first << "-" << edge.second;
   }
-  const long euler = static_cast<long>(mesh.vertex_count()) - static_cast<long>(uses.size()) +
-                     static_cast<long>(mesh.triangle_count());
+  const long euler = static_cast<long>(mesh.vertexCount()) - static_cast<long>(uses.size()) +
+                     static_cast<long>(mesh.triangleCount());
   EXPECT_EQ(euler, 2);
 }
 
-void expect_valid_attributes(const TriangleMesh& mesh) {
-  ASSERT_EQ(mesh.normals.size(), mesh.vertex_count());
-  ASSERT_EQ(mesh.uv.size(), mesh.vertex_count());
-  ASSERT_EQ(mesh.triangle_patch.size(), mesh.triangle_count());
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+void expectValidAttributes(const TriangleMesh& mesh) {
+  ASSERT_EQ(mesh.normals.size(), mesh.vertexCount());
+  ASSERT_EQ(mesh.uv.size(), mesh.vertexCount());
+  ASSERT_EQ(mesh.triangle_patch.size(), mesh.triangleCount());
+  for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
     ASSERT_TRUE(mesh.positions[v].allFinite());
     ASSERT_TRUE(mesh.normals[v].allFinite());
     EXPECT_NEAR(mesh.normals[v].norm(), 1.0f, 1e-5f);
@@ -103,9 +103,9 @@ void expect_valid_attributes(const TriangleMesh& mesh) {
 
 // Every triangle corner lies on its own patch at the recorded parameters: shared vertices are on
 // both patches, so the mesh has no geometric crack either.
-void expect_corners_on_their_patches(const TriangleMesh& mesh, const Tessellator& tessellator,
+void expectCornersOnTheirPatches(const TriangleMesh& mesh, const Tessellator& tessellator,
                                      const std::vector<BezierPatch>& patches) {
-  const auto& corners = tessellator.triangle_corner_parameters();
+  const auto& corners = tessellator.triangleCornerParameters();
   ASSERT_EQ(corners.size(), mesh.indices.size());
   for (std::size_t c = 0; c < corners.size(); ++c) {
     const BezierPatch& patch = patches[mesh.triangle_patch[c / 3]];
@@ -116,14 +116,14 @@ void expect_corners_on_their_patches(const TriangleMesh& mesh, const Tessellator
 
 // Largest |F(x) - L(x)| over samples of every triangle: an upper bound of the distance between
 // mesh and surface (each is within it of the other). Also per patch.
-double max_parametric_error(const TriangleMesh& mesh, const Tessellator& tessellator,
+double maxParametricError(const TriangleMesh& mesh, const Tessellator& tessellator,
                             const std::vector<BezierPatch>& patches,
                             std::vector<double>* per_patch = nullptr) {
   constexpr int kSteps = 5;
   if (per_patch) per_patch->assign(patches.size(), 0.0);
   double worst = 0.0;
-  const auto& corners = tessellator.triangle_corner_parameters();
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+  const auto& corners = tessellator.triangleCornerParameters();
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const BezierPatch& patch = patches[mesh.triangle_patch[t]];
     for (int a = 0; a <= kSteps; ++a) {
       for (int b = 0; a + b <= kSteps; ++b) {
@@ -144,27 +144,27 @@ double max_parametric_error(const TriangleMesh& mesh, const Tessellator& tessell
 }
 
 TEST(GeneralizedCylinder, TopologyMatchesCoincidentEdges) {
-  const PatchSurface surface = closed_test_surface();
+  const PatchSurface surface = closedTestSurface();
   ASSERT_EQ(surface.patches.size(), 16u);
-  const PatchTopology found = PatchTopology::from_coincident_edges(surface.patches, 1e-12);
+  const PatchTopology found = PatchTopology::fromCoincidentEdges(surface.patches, 1e-12);
   ASSERT_EQ(found.links().size(), surface.topology.links().size());
   ASSERT_EQ(found.links().size(), 28u);  // 4*2 around + 4 between stacks + 2*(4 + 4) for the caps
   for (std::uint32_t p = 0; p < surface.patches.size(); ++p) {
     for (int e = 0; e < 4; ++e) {
-      EXPECT_EQ(found.is_linked(p, PatchEdge(e)), surface.topology.is_linked(p, PatchEdge(e)));
+      EXPECT_EQ(found.isLinked(p, PatchEdge(e)), surface.topology.isLinked(p, PatchEdge(e)));
     }
   }
 }
 
 TEST(Tessellation, UniformClosedSurfaceIsWatertight) {
-  const PatchSurface surface = closed_test_surface();
+  const PatchSurface surface = closedTestSurface();
   Tessellator tessellator;
   for (int level : {1, 2, 3, 5, 8, 16}) {
     SCOPED_TRACE(level);
-    const TriangleMesh& mesh = tessellator.tessellate_uniform(surface.patches, surface.topology, level);
-    expect_closed_oriented_sphere(mesh);
-    expect_valid_attributes(mesh);
-    expect_corners_on_their_patches(mesh, tessellator, surface.patches);
+    const TriangleMesh& mesh = tessellator.tessellateUniform(surface.patches, surface.topology, level);
+    expectClosedOrientedSphere(mesh);
+    expectValidAttributes(mesh);
+    expectCornersOnTheirPatches(mesh, tessellator, surface.patches);
     // Poles are one vertex each: exactly two vertices sit on the axis.
     int on_axis = 0;
     for (const Eigen::Vector3f& p : mesh.positions) on_axis += p.head<2>().norm() < 1e-9f;
@@ -173,7 +173,7 @@ TEST(Tessellation, UniformClosedSurfaceIsWatertight) {
 }
 
 TEST(Tessellation, MixedLevelsStayWatertight) {
-  const PatchSurface surface = closed_test_surface();
+  const PatchSurface surface = closedTestSurface();
   Tessellator tessellator;
   std::mt19937 random(11);
   std::uniform_int_distribution<int> level(1, 13);
@@ -181,20 +181,20 @@ TEST(Tessellation, MixedLevelsStayWatertight) {
     std::vector<int> levels(surface.patches.size());
     for (int& l : levels) l = level(random);
     const TriangleMesh& mesh = tessellator.tessellate(surface.patches, surface.topology, levels);
-    expect_closed_oriented_sphere(mesh);
-    expect_valid_attributes(mesh);
-    expect_corners_on_their_patches(mesh, tessellator, surface.patches);
+    expectClosedOrientedSphere(mesh);
+    expectValidAttributes(mesh);
+    expectCornersOnTheirPatches(mesh, tessellator, surface.patches);
   }
 }
 
 TEST(Tessellation, OpenTubeHasBoundaryOnlyAtItsRims) {
-  const PatchSurface tube = make_generalized_cylinder(
+  const PatchSurface tube = makeGeneralizedCylinder(
       {{0.0, 0.1, 0.1}, {0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.3, 0.1, 0.1}}, 0.0, 0.0);
   Tessellator tessellator;
   const std::vector<int> levels = {2, 7, 3, 4};
   const TriangleMesh& mesh = tessellator.tessellate(tube.patches, tube.topology, levels);
   int boundary_edges = 0;
-  for (const auto& [edge, use] : edge_uses(mesh)) {
+  for (const auto& [edge, use] : edgeUses(mesh)) {
     const int total = use.forward + use.backward;
     ASSERT_TRUE(total == 2 ? use.forward == 1 : total == 1);
     if (total == 1) {
@@ -208,18 +208,18 @@ TEST(Tessellation, OpenTubeHasBoundaryOnlyAtItsRims) {
 }
 
 TEST(Tessellation, AdaptiveToleranceIsHonoured) {
-  const PatchSurface surface = closed_test_surface();
+  const PatchSurface surface = closedTestSurface();
   Tessellator tessellator;
   for (double tolerance : {2e-3, 3e-4, 1e-4}) {
     SCOPED_TRACE(tolerance);
-    const TriangleMesh& mesh = tessellator.tessellate_to_error(surface.patches, surface.topology, tolerance);
-    expect_closed_oriented_sphere(mesh);
+    const TriangleMesh& mesh = tessellator.tessellateToError(surface.patches, surface.topology, tolerance);
+    expectClosedOrientedSphere(mesh);
     std::vector<double> per_patch;
-    const double measured = max_parametric_error(mesh, tessellator, surface.patches, &per_patch);
+    const double measured = maxParametricError(mesh, tessellator, surface.patches, &per_patch);
     for (int level : tessellator.levels()) ASSERT_LT(level, Tessellator::kMaxLevel);
     EXPECT_LE(measured, tolerance);
     for (std::size_t p = 0; p < surface.patches.size(); ++p) {
-      EXPECT_LE(per_patch[p], geometric_error_bound(surface.patches[p], tessellator.levels()[p]) + 1e-7);
+      EXPECT_LE(per_patch[p], geometricErrorBound(surface.patches[p], tessellator.levels()[p]) + 1e-7);
     }
     // Not absurdly conservative either: the bound should be within ~30x of what is measured.
     EXPECT_GT(measured, tolerance / 30.0);
@@ -227,76 +227,76 @@ TEST(Tessellation, AdaptiveToleranceIsHonoured) {
 }
 
 TEST(Tessellation, ScreenSpaceLevelsFollowDistance) {
-  const PatchSurface surface = closed_test_surface();
+  const PatchSurface surface = closedTestSurface();
   const BezierPatch& patch = surface.patches[0];
   CameraView camera{Eigen::Vector3d(0.0, -2.0, 0.3), 0.8, 1080.0};
-  const int far_level = level_for_screen_error(patch, camera, 0.5, Tessellator::kMaxLevel);
+  const int far_level = levelForScreenError(patch, camera, 0.5, Tessellator::kMaxLevel);
   camera.position.y() = -0.5;
-  const int near_level = level_for_screen_error(patch, camera, 0.5, Tessellator::kMaxLevel);
+  const int near_level = levelForScreenError(patch, camera, 0.5, Tessellator::kMaxLevel);
   EXPECT_LT(far_level, near_level);
   camera.position = Eigen::Vector3d(0.05, 0.05, 0.05);  // inside the control net's box
-  EXPECT_EQ(level_for_screen_error(patch, camera, 0.5, 20), 20);
+  EXPECT_EQ(levelForScreenError(patch, camera, 0.5, 20), 20);
 
   // The error, projected at the patch's nearest distance, stays within the pixel budget.
   camera.position = Eigen::Vector3d(0.0, -1.0, 0.3);
   Tessellator tessellator;
   const double budget = 0.5;
-  const TriangleMesh& mesh = tessellator.tessellate_for_camera(surface.patches, surface.topology, camera, budget);
-  expect_closed_oriented_sphere(mesh);
+  const TriangleMesh& mesh = tessellator.tessellateForCamera(surface.patches, surface.topology, camera, budget);
+  expectClosedOrientedSphere(mesh);
   std::vector<double> per_patch;
-  max_parametric_error(mesh, tessellator, surface.patches, &per_patch);
+  maxParametricError(mesh, tessellator, surface.patches, &per_patch);
   const double focal = camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
   for (std::size_t p = 0; p < surface.patches.size(); ++p) {
     const BezierPatch& each = surface.patches[p];
     const Eigen::Vector3d nearest =
-        camera.position.cwiseMax(each.bounding_box_min()).cwiseMin(each.bounding_box_max());
+        camera.position.cwiseMax(each.boundingBoxMin()).cwiseMin(each.boundingBoxMax());
     EXPECT_LE(per_patch[p] * focal / (nearest - camera.position).norm(), budget) << p;
   }
-  EXPECT_THROW(level_for_screen_error(patch, CameraView{Eigen::Vector3d::Zero(), 0.0, 100.0}, 1.0, 8),
+  EXPECT_THROW(levelForScreenError(patch, CameraView{Eigen::Vector3d::Zero(), 0.0, 100.0}, 1.0, 8),
                std::invalid_argument);
 }
 
 TEST(Tessellation, RepeatedFramesReuseTheLayoutAndAllocateNothing) {
-  PatchSurface surface = closed_test_surface();
+  PatchSurface surface = closedTestSurface();
   Tessellator tessellator;
-  tessellator.tessellate_to_error(surface.patches, surface.topology, 1e-4);
-  EXPECT_EQ(tessellator.layout_build_count(), 1u);
+  tessellator.tessellateToError(surface.patches, surface.topology, 1e-4);
+  EXPECT_EQ(tessellator.layoutBuildCount(), 1u);
   const std::vector<std::uint32_t> first_indices = tessellator.mesh().indices;
 
   // Move the whole surface (a new pose): same layout, new positions.
   std::vector<BezierPatch> moved;
   for (const BezierPatch& patch : surface.patches) {
-    BezierPatch::ControlPoints points = patch.control_points();
+    BezierPatch::ControlPoints points = patch.controlPoints();
     for (Eigen::Vector3d& p : points) p += Eigen::Vector3d(0.5, 0.0, 0.0);
     moved.emplace_back(points);
   }
   allocation_count = 0;
   counting_allocations = true;
   for (int frame = 0; frame < 5; ++frame) {
-    tessellator.tessellate_to_error(frame % 2 ? moved : surface.patches, surface.topology, 1e-4);
-    tessellator.tessellate_uniform(moved, surface.topology, 6);  // alternating layouts rebuilds
+    tessellator.tessellateToError(frame % 2 ? moved : surface.patches, surface.topology, 1e-4);
+    tessellator.tessellateUniform(moved, surface.topology, 6);  // alternating layouts rebuilds
   }
   counting_allocations = false;
-  EXPECT_GT(tessellator.layout_build_count(), 1u);
+  EXPECT_GT(tessellator.layoutBuildCount(), 1u);
 
   // Now the same levels every frame: no rebuild, no allocation.
-  tessellator.tessellate_to_error(surface.patches, surface.topology, 1e-4);
-  const std::size_t builds = tessellator.layout_build_count();
+  tessellator.tessellateToError(surface.patches, surface.topology, 1e-4);
+  const std::size_t builds = tessellator.layoutBuildCount();
   allocation_count = 0;
   counting_allocations = true;
   for (int frame = 0; frame < 10; ++frame) {
-    tessellator.tessellate_to_error(frame % 2 ? moved : surface.patches, surface.topology, 1e-4);
+    tessellator.tessellateToError(frame % 2 ? moved : surface.patches, surface.topology, 1e-4);
   }
   counting_allocations = false;
   EXPECT_EQ(allocation_count.load(), 0);
-  EXPECT_EQ(tessellator.layout_build_count(), builds);
+  EXPECT_EQ(tessellator.layoutBuildCount(), builds);
   EXPECT_EQ(tessellator.mesh().indices, first_indices);
-  const TriangleMesh& mesh = tessellator.tessellate_to_error(moved, surface.topology, 1e-4);
-  expect_corners_on_their_patches(mesh, tessellator, moved);
+  const TriangleMesh& mesh = tessellator.tessellateToError(moved, surface.topology, 1e-4);
+  expectCornersOnTheirPatches(mesh, tessellator, moved);
 }
 
 TEST(Tessellation, RejectsInconsistentInput) {
-  const PatchSurface surface = closed_test_surface();
+  const PatchSurface surface = closedTestSurface();
   Tessellator tessellator;
   EXPECT_THROW(tessellator.tessellate(surface.patches, surface.topology, std::vector<int>(3, 4)),
                std::invalid_argument);
@@ -305,14 +305,14 @@ TEST(Tessellation, RejectsInconsistentInput) {
                std::invalid_argument);
   // Linking edges that are not the same curve is caught, not silently welded.
   PatchTopology wrong(surface.patches.size());
-  wrong.link(0, PatchEdge::u1, 2, PatchEdge::u0, false);
-  EXPECT_THROW(tessellator.tessellate_uniform(surface.patches, wrong, 4), std::invalid_argument);
+  wrong.link(0, PatchEdge::kU1, 2, PatchEdge::kU0, false);
+  EXPECT_THROW(tessellator.tessellateUniform(surface.patches, wrong, 4), std::invalid_argument);
   PatchTopology topology(2);
-  topology.link(0, PatchEdge::v0, 1, PatchEdge::v1, false);
-  EXPECT_THROW(topology.link(0, PatchEdge::v0, 1, PatchEdge::u1, false), std::invalid_argument);
-  EXPECT_THROW(topology.link(0, PatchEdge::u0, 0, PatchEdge::u0, false), std::invalid_argument);
-  EXPECT_THROW(topology.link(0, PatchEdge::u0, 5, PatchEdge::u0, false), std::invalid_argument);
-  EXPECT_THROW(level_for_geometric_error(surface.patches[0], 0.0, 8), std::invalid_argument);
+  topology.link(0, PatchEdge::kV0, 1, PatchEdge::kV1, false);
+  EXPECT_THROW(topology.link(0, PatchEdge::kV0, 1, PatchEdge::kU1, false), std::invalid_argument);
+  EXPECT_THROW(topology.link(0, PatchEdge::kU0, 0, PatchEdge::kU0, false), std::invalid_argument);
+  EXPECT_THROW(topology.link(0, PatchEdge::kU0, 5, PatchEdge::kU0, false), std::invalid_argument);
+  EXPECT_THROW(levelForGeometricError(surface.patches[0], 0.0, 8), std::invalid_argument);
 }
 
 TEST(Tessellation, ReversedLinkBetweenOppositelyParametrisedPatches) {
@@ -328,21 +328,21 @@ TEST(Tessellation, ReversedLinkBetweenOppositelyParametrisedPatches) {
   // The shared curve: left's u=1 edge equals right's u=1 edge reversed.
   for (int j = 0; j < 4; ++j) right[BezierPatch::index(3, 3 - j)] = left[BezierPatch::index(3, j)];
   const std::vector<BezierPatch> patches = {BezierPatch(left), BezierPatch(right)};
-  const PatchTopology found = PatchTopology::from_coincident_edges(patches, 1e-12);
+  const PatchTopology found = PatchTopology::fromCoincidentEdges(patches, 1e-12);
   ASSERT_EQ(found.links().size(), 1u);
   EXPECT_TRUE(found.links()[0].reversed);
   Tessellator tessellator;
   const std::vector<int> levels = {3, 5};
   const TriangleMesh& mesh = tessellator.tessellate(patches, found, levels);
   int boundary = 0, interior = 0;
-  for (const auto& [edge, use] : edge_uses(mesh)) {
+  for (const auto& [edge, use] : edgeUses(mesh)) {
     const int total = use.forward + use.backward;
     ASSERT_LE(total, 2);
     (total == 2 ? interior : boundary) += 1;
   }
   // Open boundary: left 3 + 3 + 3 and right 5 + 5 + 5 segments; the shared edge is interior.
   EXPECT_EQ(boundary, 9 + 15);
-  expect_corners_on_their_patches(mesh, tessellator, patches);
+  expectCornersOnTheirPatches(mesh, tessellator, patches);
 }
 
 }  // namespace

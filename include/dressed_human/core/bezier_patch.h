@@ -19,8 +19,8 @@ struct BernsteinWeights {
 };
 
 // B_{i,3}(t) and its derivatives of order 0..3 (index [order][i]); order 3 is constant.
-std::array<Eigen::Vector4d, 4> cubic_bernstein_derivatives(double t);
-BernsteinWeights cubic_bernstein_weights(double t);
+std::array<Eigen::Vector4d, 4> cubicBernsteinDerivatives(double t);
+BernsteinWeights cubicBernsteinWeights(double t);
 
 // Bernstein weights for a fixed list of parameter values, computed once and reused for every patch
 // and every frame: evaluating a grid then costs only multiply-adds against the control points.
@@ -31,7 +31,7 @@ class BernsteinTable {
   // segments + 1 values k / segments, k = 0..segments (segments >= 1).
   static BernsteinTable uniform(int segments);
   // The segments - 1 interior values k / segments, k = 1..segments-1 (segments >= 1; may be empty).
-  static BernsteinTable uniform_interior(int segments);
+  static BernsteinTable uniformInterior(int segments);
 
   std::size_t size() const { return parameters_.size(); }
   double parameter(std::size_t k) const { return parameters_[k]; }
@@ -81,12 +81,12 @@ class BezierPatch {
   // Throws std::invalid_argument if a control point is not finite or if all 16 coincide.
   explicit BezierPatch(const ControlPoints& control_points);
 
-  const ControlPoints& control_points() const { return control_points_; }
-  const Eigen::Vector3d& control_point(int i, int j) const { return control_points_[index(i, j)]; }
+  const ControlPoints& controlPoints() const { return control_points_; }
+  const Eigen::Vector3d& controlPoint(int i, int j) const { return control_points_[index(i, j)]; }
   // Diagonal of the control net's axis-aligned bounding box: the patch's length scale.
   double scale() const { return scale_; }
-  const Eigen::Vector3d& bounding_box_min() const { return box_min_; }
-  const Eigen::Vector3d& bounding_box_max() const { return box_max_; }
+  const Eigen::Vector3d& boundingBoxMin() const { return box_min_; }
+  const Eigen::Vector3d& boundingBoxMax() const { return box_max_; }
 
   // Point queries; throw std::invalid_argument for (u,v) outside [0,1]^2 or not finite.
   Eigen::Vector3d position(double u, double v) const;
@@ -99,14 +99,14 @@ class BezierPatch {
   PatchSample sample(const BernsteinWeights& u_weights, double u,
                      const BernsteinWeights& v_weights, double v) const;
   // Evaluates the u_table.size() x v_table.size() grid into `out`.
-  void evaluate_grid(const BernsteinTable& u_table, const BernsteinTable& v_table,
+  void evaluateGrid(const BernsteinTable& u_table, const BernsteinTable& v_table,
                      const SurfaceSampleArrays& out) const;
 
  private:
   // Unit normal from d_du x d_dv, or the limit normal when that cross product (nearly) vanishes.
-  Eigen::Vector3d unit_normal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv, double u,
+  Eigen::Vector3d unitNormal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv, double u,
                               double v) const;
-  Eigen::Vector3d limit_normal(double u, double v) const;
+  Eigen::Vector3d limitNormal(double u, double v) const;
 
   ControlPoints control_points_;
   // The same points as columns index(i, j): the layout the evaluation kernels contract against.

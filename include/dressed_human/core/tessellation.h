@@ -22,12 +22,12 @@ namespace dressed_human {
 
 // The four boundary curves of a patch, named by the parameter held fixed. Each edge's own
 // parameter increases with the free one: u along v0 and v1, v along u0 and u1.
-enum class PatchEdge : std::uint8_t { v0 = 0, u1 = 1, v1 = 2, u0 = 3 };
+enum class PatchEdge : std::uint8_t { kV0 = 0, kU1 = 1, kV1 = 2, kU0 = 3 };
 
 // Control points of an edge, ordered by increasing edge parameter.
-std::array<Eigen::Vector3d, 4> edge_control_points(const BezierPatch& patch, PatchEdge edge);
+std::array<Eigen::Vector3d, 4> edgeControlPoints(const BezierPatch& patch, PatchEdge edge);
 // True when the edge's four control points coincide (to 1e-9 of the patch scale): a pole.
-bool is_collapsed(const BezierPatch& patch, PatchEdge edge);
+bool isCollapsed(const BezierPatch& patch, PatchEdge edge);
 
 // Two patch edges that are the same curve. `reversed`: edge parameter t on edge_a is 1 - t on
 // edge_b (false: the two edge parameters run the same way).
@@ -56,12 +56,12 @@ class PatchTopology {
 
   // Links every pair of non-collapsed edges whose control points coincide to within `tolerance`
   // (metres), in either direction. Throws if an edge matches more than one other edge.
-  static PatchTopology from_coincident_edges(const std::vector<BezierPatch>& patches,
+  static PatchTopology fromCoincidentEdges(const std::vector<BezierPatch>& patches,
                                              double tolerance);
 
-  std::size_t patch_count() const { return patch_count_; }
+  std::size_t patchCount() const { return patch_count_; }
   const std::vector<EdgeLink>& links() const { return links_; }
-  bool is_linked(std::uint32_t patch, PatchEdge edge) const;
+  bool isLinked(std::uint32_t patch, PatchEdge edge) const;
 
  private:
   std::size_t patch_count_;
@@ -78,8 +78,8 @@ struct TriangleMesh {
   std::vector<std::uint32_t> indices;        // 3 per triangle, counter-clockwise around the normal
   std::vector<std::uint32_t> triangle_patch; // patch each triangle lies on
 
-  std::size_t vertex_count() const { return positions.size(); }
-  std::size_t triangle_count() const { return indices.size() / 3; }
+  std::size_t vertexCount() const { return positions.size(); }
+  std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
 // A perspective camera, as far as screen-space error needs it.
@@ -92,12 +92,12 @@ struct CameraView {
 // Conservative bound on the distance between the patch and its level-n triangulation (any
 // triangulation whose triangles span at most 1/n in u and in v, which ours guarantees). From the
 // control net's second differences, see the .cpp.
-double geometric_error_bound(const BezierPatch& patch, int level);
+double geometricErrorBound(const BezierPatch& patch, int level);
 // Smallest level in [1, max_level] whose bound is <= max_error (max_level if none is).
-int level_for_geometric_error(const BezierPatch& patch, double max_error, int max_level);
+int levelForGeometricError(const BezierPatch& patch, double max_error, int max_level);
 // Smallest level in [1, max_level] whose error, projected at the nearest point of the control
 // net's bounding box, is <= max_error_pixels (max_level if none is, or if the camera is inside).
-int level_for_screen_error(const BezierPatch& patch, const CameraView& camera,
+int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
                            double max_error_pixels, int max_level);
 
 class Tessellator {
@@ -116,12 +116,12 @@ class Tessellator {
   // levels, or linked edges whose control points do not coincide.
   const TriangleMesh& tessellate(const std::vector<BezierPatch>& patches,
                                  const PatchTopology& topology, const std::vector<int>& levels);
-  const TriangleMesh& tessellate_uniform(const std::vector<BezierPatch>& patches,
+  const TriangleMesh& tessellateUniform(const std::vector<BezierPatch>& patches,
                                          const PatchTopology& topology, int level = kDefaultLevel);
-  const TriangleMesh& tessellate_to_error(const std::vector<BezierPatch>& patches,
+  const TriangleMesh& tessellateToError(const std::vector<BezierPatch>& patches,
                                           const PatchTopology& topology, double max_error,
                                           int max_level = kMaxLevel);
-  const TriangleMesh& tessellate_for_camera(const std::vector<BezierPatch>& patches,
+  const TriangleMesh& tessellateForCamera(const std::vector<BezierPatch>& patches,
                                             const PatchTopology& topology,
                                             const CameraView& camera, double max_error_pixels,
                                             int max_level = kMaxLevel);
@@ -131,21 +131,21 @@ class Tessellator {
   const std::vector<int>& levels() const { return levels_; }
   // (u, v) of each triangle corner in the triangle's own patch (3 per triangle): where a shared
   // vertex's `uv` belongs to the other patch, this still says where it lies on this one.
-  const std::vector<Eigen::Vector2d>& triangle_corner_parameters() const {
+  const std::vector<Eigen::Vector2d>& triangleCornerParameters() const {
     return corner_parameters_;
   }
   // How many times the vertex/triangle layout was rebuilt (it is rebuilt only when needed).
-  std::size_t layout_build_count() const { return layout_build_count_; }
+  std::size_t layoutBuildCount() const { return layout_build_count_; }
 
  private:
   struct OwnedBoundaryVertex;
   struct PatchLayout;
 
-  bool layout_matches(const PatchTopology& topology) const;
-  void build_layout(const std::vector<BezierPatch>& patches, const PatchTopology& topology);
-  void evaluate_vertices(const std::vector<BezierPatch>& patches);
-  const BernsteinTable& boundary_table(int level);
-  const BernsteinTable& interior_table(int level);
+  bool layoutMatches(const PatchTopology& topology) const;
+  void buildLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology);
+  void evaluateVertices(const std::vector<BezierPatch>& patches);
+  const BernsteinTable& boundaryTable(int level);
+  const BernsteinTable& interiorTable(int level);
 
   TriangleMesh mesh_;
   std::vector<int> requested_levels_;  // scratch for the adaptive entry points

@@ -1,0 +1,64 @@
+#pragma once
+// Everything a renderer needs of one dressed human, in one place: from the bone frames (as TF
+// delivers them) to posed, tessellated surface parts with their colour and relief kind. The rviz
+// display is a thin adapter around this class; tools and benchmarks use it the same way.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dressed_human/core/body_description.h"
+#include "dressed_human/core/forward_kinematics.h"
+#include "dressed_human/core/skin.h"
+#include "dressed_human/core/tessellation.h"
+
+namespace dressed_human {
+
+enum class ReliefKind { kSkin, kCloth };
+
+struct SurfacePart {
+  std::string name;
+  ReliefKind relief;
+  Eigen::Vector4f colour;     // RGBA, 0..1
+  const TriangleMesh* mesh;   // owned by the HumanModel, valid until its next update()
+};
+
+struct LevelOfDetail {
+  bool automatic = false;      // true: from the camera's screen-space error; false: `level`
+  int level = Skin::kDefaultLevel;
+  int max_level = 16;
+  double max_error_pixels = 1.0;
+  CameraView camera{Eigen::Vector3d::Zero(), 0.8, 1000.0};
+};
+
+struct HumanModelSettings {
+  Eigen::Vector4f skin_colour{0.87f, 0.72f, 0.62f, 1.0f};
+};
+
+class HumanModel {
+ public:
+  HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings);
+
+  // `root` is the skeleton's root frame ("body"), `bones` every bone frame, all in one world
+  // frame. Allocation-free while the level of detail stays the same.
+  void update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
+              const LevelOfDetail& lod);
+
+  const std::vector<SurfacePart>& parts() const { return parts_; }
+  std::size_t triangleCount() const;
+  const Skin& skin() const { return skin_; }
+
+ private:
+  const TriangleMesh& tessellate(Tessellator& tessellator, const std::vector<BezierPatch>& patches,
+                                 const PatchTopology& topology, const LevelOfDetail& lod);
+
+  HumanModelSettings settings_;
+  Skin skin_;
+  SkeletonPose pose_;
+  Tessellator skin_tessellator_;
+  std::vector<SurfacePart> parts_;
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,293 @@
+#include "dressed_human_display.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include <OgreCamera.h>
+#include <OgreViewport.h>
+#include <pluginlib/class_list_macros.hpp>
+#include <ros/package.h>
+#include <rviz/display_context.h>
+#include <rviz/frame_manager.h>
+#include <rviz/properties/color_property.h>
+#include <rviz/properties/enum_property.h>
+#include <rviz/properties/float_property.h>
+#include <rviz/properties/int_property.h>
+#include <rviz/properties/string_property.h>
+#include <rviz/view_controller.h>
+#include <rviz/view_manager.h>
+#include <tf2_ros/buffer.h>
+
+#include "dressed_human/core/skin_relief.h"
+#include "human_visual.h"
+
+namespace dressed_human {
+namespace {
+
+enum ReliefMode { kBumpMapping = 0, kFlat = 1 };
+enum LodMode { kAutomatic = 0, kFixed = 1 };
+constexpr int kSkinMapSize = 512;
+constexpr double kStaleSeconds = 1.0;
+
+RigidTransform toRigid(const geometry_msgs::Transform& t) {
+  RigidTransform rigid;
+  rigid.translation = {t.translation.x, t.translation.y, t.translation.z};
+  rigid.rotation = Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z).normalized();
+  return rigid;
+}
+
+}  // namespace
+
+void DressedHumanDisplay::reportError(const std::string& name, const std::string& text, bool transient) {
+  setStatusStd(rviz::StatusProperty::Error, name, text);
+  // Also in the log (once per new message), so headless runs and tests see what went wrong.
+  // Missing TF is transient (startup, a stopped publisher): a warning there, not an error.
+  std::string& last = logged_errors_[name];
+  if (last != text) {
+    if (transient) {
+      ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': %s: %s", getName().toStdString().c_str(),
+                     name.c_str(), text.c_str());
+    } else {
+      ROS_ERROR_NAMED("dressed_human", "DressedHuman display '%s': %s: %s", getName().toStdString().c_str(),
+                      name.c_str(), text.c_str());
+    }
+    last = text;
+  }
+}
+
+void DressedHumanDisplay::clearError(const std::string& name) {
+  deleteStatus(QString::fromStdString(name));
+  logged_errors_.erase(name);
+}
+
+DressedHumanDisplay::DressedHumanDisplay() {
+  description_property_ = new rviz::StringProperty(
+      "Robot Description", "robot_description",
+      "Parameter holding the human's URDF (urdf/human.urdf, optionally with a _<id> suffix).", this,
+      SLOT(loadRobotDescription()));
+  const std::string package = ros::package::getPath("dressed_human");
+  body_file_property_ = new rviz::StringProperty(
+      "Body Description", QString::fromStdString(package + "/config/bodies/default.yaml"),
+      "YAML file with the skin's cross-sections and the body shape (Eq. 5).", this, SLOT(loadRobotDescription()));
+  relief_mode_property_ = new rviz::EnumProperty(
+      "Relief", "Bump mapping", "Bump mapping: per-pixel normals from the relief maps. Flat: geometric normals only.",
+      this, SLOT(updateAppearance()));
+  relief_mode_property_->addOption("Bump mapping", kBumpMapping);
+  relief_mode_property_->addOption("Flat", kFlat);
+  relief_strength_property_ = new rviz::FloatProperty("Relief Strength", 1.0, "Scales the relief's normal tilt.",
+                                                      this, SLOT(updateAppearance()));
+  relief_strength_property_->setMin(0.0);
+  relief_strength_property_->setMax(5.0);
+  skin_colour_property_ = new rviz::ColorProperty("Skin Colour", QColor(222, 184, 158), "Colour of the skin.", this,
+                                                  SLOT(rebuildModel()));
+  skin_levels_property_ = new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", this,
+                                                SLOT(regenerateSkinRelief()));
+  skin_levels_property_->setMin(1);
+  skin_levels_property_->setMax(3);
+  skin_cell_size_property_ = new rviz::FloatProperty(
+      "Skin Cell Size", 1.0 / 12.0, "Level-1 cell spacing as a fraction of the relief tile.", this,
+      SLOT(regenerateSkinRelief()));
+  skin_cell_size_property_->setMin(0.01);
+  skin_cell_size_property_->setMax(1.0);
+  skin_seed_property_ = new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", this,
+                                              SLOT(regenerateSkinRelief()));
+  skin_seed_property_->setMin(0);
+  lod_mode_property_ = new rviz::EnumProperty(
+      "Level of Detail", "Automatic",
+      "Automatic: tessellation follows the human's size on screen. Fixed: the level below.", this);
+  lod_mode_property_->addOption("Automatic", kAutomatic);
+  lod_mode_property_->addOption("Fixed", kFixed);
+  lod_level_property_ = new rviz::IntProperty("Tessellation Level", 6,
+                                              "Fixed level: each patch is cut n x n (1-32).", this);
+  lod_level_property_->setMin(1);
+  lod_level_property_->setMax(32);
+  lod_pixels_property_ = new rviz::FloatProperty("Max Screen Error", 1.0,
+                                                 "Automatic level: largest geometric error in pixels.", this);
+  lod_pixels_property_->setMin(0.1);
+}
+
+DressedHumanDisplay::~DressedHumanDisplay() {
+  if (skin_relief_.valid()) skin_relief_.wait();
+}
+
+void DressedHumanDisplay::onInitialize() {
+  try {
+    visual_ = std::make_unique<HumanVisual>(scene_manager_, scene_node_, "dressed_human/" + getName().toStdString() +
+                                                                           "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    clearError("Material");
+  } catch (const std::exception& error) {
+    reportError("Material", error.what());
+  }
+  loadRobotDescription();
+  regenerateSkinRelief();
+}
+
+void DressedHumanDisplay::onEnable() {
+  if (visual_) visual_->setVisible(true);
+}
+
+void DressedHumanDisplay::onDisable() {
+  if (visual_) visual_->setVisible(false);
+}
+
+void DressedHumanDisplay::reset() {
+  rviz::Display::reset();  // clears the statuses; TF problems report themselves again
+  loadRobotDescription();
+}
+
+void DressedHumanDisplay::fixedFrameChanged() { context_->queueRender(); }
+
+void DressedHumanDisplay::loadRobotDescription() {
+  model_.reset();
+  body_.reset();
+  skeleton_.reset();
+  const std::string parameter = description_property_->getStdString();
+  std::string urdf;
+  if (parameter.empty() || !update_nh_.getParam(parameter, urdf)) {
+    reportError("URDF", "parameter '" + parameter + "' is not set");
+    return;
+  }
+  try {
+    skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
+    leaf_bones_.clear();
+    for (std::size_t b = 0; b < kBoneCount; ++b) {
+      bool has_child = false;
+      for (const Bone& other : skeleton_->bones()) has_child = has_child || other.parent == static_cast<int>(b);
+      if (!has_child) leaf_bones_.push_back(static_cast<int>(b));
+    }
+    setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones");
+  } catch (const std::exception& error) {
+    reportError("URDF", "parameter '" + parameter + "': " + error.what());
+    return;
+  }
+  try {
+    body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_file_property_->getStdString(), *skeleton_));
+    clearError("Body Description");
+  } catch (const std::exception& error) {
+    reportError("Body Description", error.what());
+    return;
+  }
+  rebuildModel();
+}
+
+void DressedHumanDisplay::rebuildModel() {
+  if (!skeleton_ || !body_) return;
+  HumanModelSettings settings;
+  const QColor skin = skin_colour_property_->getColor();
+  settings.skin_colour = {static_cast<float>(skin.redF()), static_cast<float>(skin.greenF()),
+                          static_cast<float>(skin.blueF()), 1.0f};
+  try {
+    model_ = std::make_unique<HumanModel>(*skeleton_, *body_, settings);
+    clearError("Model");
+  } catch (const std::exception& error) {
+    model_.reset();
+    reportError("Model", error.what());
+  }
+  context_->queueRender();
+}
+
+void DressedHumanDisplay::updateAppearance() {
+  if (!visual_) return;
+  const bool bump = relief_mode_property_->getOptionInt() == kBumpMapping;
+  visual_->setReliefStrength(bump ? relief_strength_property_->getFloat() : 0.0f);
+  context_->queueRender();
+}
+
+void DressedHumanDisplay::regenerateSkinRelief() {
+  if (skin_relief_.valid() &&
+      skin_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+    return;  // pollSkinRelief() starts another run with the current properties when this one ends
+  }
+  SkinReliefParameters parameters;
+  parameters.levels = skin_levels_property_->getInt();
+  parameters.cell_size = skin_cell_size_property_->getFloat();
+  parameters.seed = static_cast<std::uint32_t>(skin_seed_property_->getInt());
+  // Generated off rviz's thread: a 512^2 map takes a noticeable fraction of a second.
+  skin_relief_ = std::async(std::launch::async, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
+  requested_skin_parameters_ = {parameters.levels, parameters.cell_size, parameters.seed};
+}
+
+void DressedHumanDisplay::pollSkinRelief() {
+  if (!skin_relief_.valid() || skin_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    const ReliefMap map = skin_relief_.get();
+    if (visual_) visual_->setNormalMap(ReliefKind::kSkin, encodeNormalMapRgb(map), map.width, map.height, 1.0f);
+    clearError("Skin relief");
+  } catch (const std::exception& error) {
+    reportError("Skin relief", error.what());
+  }
+  const SkinParameterKey current{skin_levels_property_->getInt(), skin_cell_size_property_->getFloat(),
+                                 static_cast<std::uint32_t>(skin_seed_property_->getInt())};
+  if (!(current == requested_skin_parameters_)) regenerateSkinRelief();
+  updateAppearance();
+}
+
+bool DressedHumanDisplay::lookUpBones() {
+  const std::shared_ptr<tf2_ros::Buffer> buffer = context_->getTF2BufferPtr();
+  const std::string fixed = fixed_frame_.toStdString();
+  const std::string root = skeleton_->rootFrame();
+  ros::Time stamp;
+  try {
+    // One consistent time for every bone, so that garments spanning two bones never tear: the
+    // newest time at which every chain from the fixed frame to a leaf bone (head, hands, feet) is
+    // known. The root's newest stamp alone is not enough: TF inserts a message's transforms one
+    // by one while rviz reads, so a bone can still lag its root by one tick.
+    stamp = buffer->lookupTransform(fixed, root, ros::Time(0)).header.stamp;
+    for (const int leaf : leaf_bones_) {
+      const std::string frame = skeleton_->frameName(skeleton_->bone(static_cast<std::size_t>(leaf)).name);
+      stamp = std::min(stamp, buffer->lookupTransform(fixed, frame, ros::Time(0)).header.stamp);
+    }
+    root_ = toRigid(buffer->lookupTransform(fixed, root, stamp).transform);
+    clearError("Frame " + root);
+  } catch (const tf2::TransformException& error) {
+    reportError("Frame " + root, error.what(), true);
+    return false;
+  }
+  if (!stamp.isZero() && (ros::Time::now() - stamp).toSec() > kStaleSeconds) {
+    setStatusStd(rviz::StatusProperty::Warn, "TF",
+                 "the newest skeleton transform is " + std::to_string((ros::Time::now() - stamp).toSec()) + " s old");
+  } else {
+    deleteStatus("TF");
+  }
+  bool all_found = true;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const std::string frame = skeleton_->frameName(skeleton_->bone(b).name);
+    try {
+      bones_[b] = toRigid(buffer->lookupTransform(fixed, frame, stamp).transform);
+      clearError("Frame " + frame);
+    } catch (const tf2::TransformException& error) {
+      reportError("Frame " + frame, error.what(), true);
+      all_found = false;
+    }
+  }
+  return all_found;
+}
+
+void DressedHumanDisplay::update(float, float) {
+  pollSkinRelief();
+  if (!model_ || !visual_ || !lookUpBones()) return;
+  LevelOfDetail lod;
+  lod.level = lod_level_property_->getInt();
+  lod.automatic = lod_mode_property_->getOptionInt() == kAutomatic;
+  if (lod.automatic) {
+    const Ogre::Camera* camera = context_->getViewManager()->getCurrent()->getCamera();
+    const Ogre::Vector3 eye = camera->getDerivedPosition();
+    lod.camera.position = {eye.x, eye.y, eye.z};
+    lod.camera.vertical_fov_radians = camera->getFOVy().valueRadians();
+    lod.camera.viewport_height_pixels = camera->getViewport() ? camera->getViewport()->getActualHeight() : 1000.0;
+    lod.max_error_pixels = lod_pixels_property_->getFloat();
+  }
+  try {
+    model_->update(root_, bones_, lod);
+    visual_->update(model_->parts());
+    setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
+                 std::to_string(model_->parts().size()) + " parts, " + std::to_string(model_->triangleCount()) +
+                     " triangles");
+  } catch (const std::exception& error) {
+    reportError("Surfaces", error.what());
+  }
+}
+
+}  // namespace dressed_human
+
+PLUGINLIB_EXPORT_CLASS(dressed_human::DressedHumanDisplay, rviz::Display)

@@ -1,0 +1,68 @@
+#include "human_visual.h"
+
+namespace dressed_human {
+
+HumanVisual::HumanVisual(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& name_prefix)
+    : scene_manager_(scene_manager), node_(parent->createChildSceneNode()), name_prefix_(name_prefix) {}
+
+HumanVisual::~HumanVisual() {
+  parts_.clear();
+  scene_manager_->destroySceneNode(node_);
+}
+
+void HumanVisual::update(const std::vector<SurfacePart>& parts) {
+  if (parts_.size() > parts.size()) parts_.resize(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const SurfacePart& source = parts[i];
+    if (i == parts_.size() || parts_[i].name != source.name || parts_[i].relief != source.relief) {
+      Part part;
+      part.name = source.name;
+      part.relief = source.relief;
+      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name);
+      part.mesh = std::make_unique<SurfaceMeshObject>(scene_manager_, node_, part.material->name());
+      part.mesh->setVisible(visible_);
+      applyMaps(part);
+      if (i == parts_.size()) {
+        parts_.push_back(std::move(part));
+      } else {
+        parts_[i] = std::move(part);
+      }
+    }
+    Part& part = parts_[i];
+    part.material->setColour(source.colour.x(), source.colour.y(), source.colour.z(), source.colour.w());
+    part.mesh->update(*source.mesh);
+  }
+}
+
+void HumanVisual::setVisible(bool visible) {
+  visible_ = visible;
+  for (Part& part : parts_) part.mesh->setVisible(visible);
+}
+
+void HumanVisual::setReliefStrength(float strength) {
+  relief_strength_ = strength;
+  for (Part& part : parts_) part.material->setReliefStrength(strength);
+}
+
+void HumanVisual::setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height,
+                               float tiling) {
+  NormalMap& map = kind == ReliefKind::kSkin ? skin_map_ : cloth_map_;
+  map.rgb = rgb;
+  map.width = width;
+  map.height = height;
+  map.tiling = tiling;
+  for (Part& part : parts_) {
+    if (part.relief == kind) applyMaps(part);
+  }
+}
+
+void HumanVisual::applyMaps(Part& part) const {
+  const NormalMap& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
+  part.material->setReliefStrength(relief_strength_);
+  if (map.width > 0) {
+    part.material->setNormalMap(map.rgb, map.width, map.height);
+    part.material->setReliefTiling(map.tiling);
+  }
+}
+
+}  // namespace dressed_human

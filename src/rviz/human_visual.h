@@ -1,0 +1,54 @@
+#pragma once
+// The Ogre side of one dressed human: a scene node with one bump-mapped mesh per surface part
+// (skin, each garment). Created and updated only from the display's update().
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <OgreSceneManager.h>
+#include <OgreSceneNode.h>
+
+#include "dressed_human/core/human_model.h"
+#include "relief_material.h"
+#include "surface_mesh_object.h"
+
+namespace dressed_human {
+
+class HumanVisual {
+ public:
+  HumanVisual(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& name_prefix);
+  ~HumanVisual();
+  HumanVisual(const HumanVisual&) = delete;
+  HumanVisual& operator=(const HumanVisual&) = delete;
+
+  // Meshes are in the fixed frame; parts are matched by index and (re)created when they change.
+  void update(const std::vector<SurfacePart>& parts);
+  void setVisible(bool visible);
+  void setReliefStrength(float strength);
+  void setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height, float tiling);
+
+ private:
+  struct Part {
+    std::string name;
+    ReliefKind relief;
+    std::unique_ptr<ReliefMaterial> material;
+    std::unique_ptr<SurfaceMeshObject> mesh;
+  };
+  struct NormalMap {
+    std::vector<std::uint8_t> rgb;
+    int width = 0, height = 0;
+    float tiling = 1.0f;
+  };
+  void applyMaps(Part& part) const;
+
+  Ogre::SceneManager* scene_manager_;
+  Ogre::SceneNode* node_;
+  std::string name_prefix_;
+  std::vector<Part> parts_;
+  float relief_strength_ = 1.0f;
+  NormalMap skin_map_, cloth_map_;
+  bool visible_ = true;
+};
+
+}  // namespace dressed_human

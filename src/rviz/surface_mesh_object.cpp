@@ -1,0 +1,52 @@
+#include "surface_mesh_object.h"
+
+namespace dressed_human {
+
+SurfaceMeshObject::SurfaceMeshObject(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent,
+                                     const std::string& material)
+    : scene_manager_(scene_manager), object_(scene_manager->createManualObject()), material_(material) {
+  object_->setDynamic(true);
+  parent->attachObject(object_);
+}
+
+SurfaceMeshObject::~SurfaceMeshObject() { scene_manager_->destroyManualObject(object_); }
+
+void SurfaceMeshObject::setMaterial(const std::string& material) {
+  material_ = material;
+  if (object_->getSections().size() > 0) object_->setMaterialName(0, material_);
+}
+
+void SurfaceMeshObject::update(const TriangleMesh& mesh) {
+  const std::size_t vertices = mesh.positions.size();
+  const std::size_t indices = mesh.indices.size();
+  if (vertices == 0 || indices == 0) {
+    object_->clear();
+    vertex_count_ = index_count_ = 0;
+    return;
+  }
+  if (object_->getSections().size() == 1 && vertices == vertex_count_ && indices == index_count_) {
+    object_->beginUpdate(0);
+  } else {
+    object_->clear();
+    object_->estimateVertexCount(vertices);
+    object_->estimateIndexCount(indices);
+    object_->begin(material_, Ogre::RenderOperation::OT_TRIANGLE_LIST, "dressed_human");
+    vertex_count_ = vertices;
+    index_count_ = indices;
+    ++rebuild_count_;
+  }
+  for (std::size_t i = 0; i < vertices; ++i) {
+    const Eigen::Vector3f& p = mesh.positions[i];
+    const Eigen::Vector3f& n = mesh.normals[i];
+    const Eigen::Vector3f& t = mesh.tangents_u[i];
+    const Eigen::Vector2f& uv = mesh.uv[i];
+    object_->position(p.x(), p.y(), p.z());
+    object_->normal(n.x(), n.y(), n.z());
+    object_->tangent(t.x(), t.y(), t.z());
+    object_->textureCoord(uv.x(), uv.y());
+  }
+  for (std::size_t i = 0; i < indices; ++i) object_->index(mesh.indices[i]);
+  object_->end();
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,36 @@
+#pragma once
+// An Ogre::ManualObject fed from a core TriangleMesh; refilled in place while the vertex and index
+// counts stay the same (the common case: a new pose at the same level of detail).
+
+#include <string>
+
+#include <OgreManualObject.h>
+#include <OgreSceneManager.h>
+#include <OgreSceneNode.h>
+
+#include "dressed_human/core/tessellation.h"
+
+namespace dressed_human {
+
+class SurfaceMeshObject {
+ public:
+  SurfaceMeshObject(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& material);
+  ~SurfaceMeshObject();
+  SurfaceMeshObject(const SurfaceMeshObject&) = delete;
+  SurfaceMeshObject& operator=(const SurfaceMeshObject&) = delete;
+
+  void update(const TriangleMesh& mesh);
+  void setMaterial(const std::string& material);
+  void setVisible(bool visible) { object_->setVisible(visible); }
+  std::size_t rebuildCount() const { return rebuild_count_; }
+
+ private:
+  Ogre::SceneManager* scene_manager_;
+  Ogre::ManualObject* object_;
+  std::string material_;
+  std::size_t vertex_count_ = 0;
+  std::size_t index_count_ = 0;
+  std::size_t rebuild_count_ = 0;
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,98 @@
+"""Shared by the display rostests: start rviz on a config, wait for the human, grab the screen."""
+import os
+import subprocess
+import tempfile
+import time
+
+import numpy
+from PIL import Image
+
+BACKGROUND = numpy.array([48, 48, 48])
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+class Rviz:
+    """rviz on a copy of test/ros/data/<template> with text replacements; stopped on exit."""
+
+    def __init__(self, template, replacements):
+        with open(os.path.join(HERE, "data", template)) as f:
+            text = f.read()
+        for key, value in replacements.items():
+            text = text.replace(key, value)
+        self.directory = tempfile.mkdtemp()
+        self.config = os.path.join(self.directory, "test.rviz")
+        with open(self.config, "w") as f:
+            f.write(text)
+        self.log_path = os.path.join(self.directory, "rviz.log")
+        self.process = None
+
+    def __enter__(self):
+        self.log = open(self.log_path, "w")
+        self.process = subprocess.Popen(["rviz", "-d", self.config, "--disable-anti-aliasing"],
+                                        stdout=self.log, stderr=subprocess.STDOUT)
+        return self
+
+    def __exit__(self, *error):
+        self.process.terminate()
+        try:
+            self.process.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+        self.log.close()
+
+    def output(self):
+        with open(self.log_path) as f:
+            return f.read()
+
+    def alive(self):
+        return self.process.poll() is None
+
+
+def grab(path):
+    """The screen, cropped to rviz's 3D view: the bounding box of the background colour."""
+    subprocess.run(["import", "-window", "root", path], check=True)
+    image = numpy.asarray(Image.open(path).convert("RGB")).astype(numpy.float64)
+    background = (image == BACKGROUND).all(axis=2)
+    # Rows and columns with many background pixels: stray ones elsewhere (icons) do not count.
+    rows = numpy.nonzero(background.sum(axis=1) > 100)[0]
+    columns = numpy.nonzero(background.sum(axis=0) > 100)[0]
+    if len(rows) < 100 or len(columns) < 100:
+        return image[:0, :0]
+    return image[rows[0] + 2:rows[-1] - 1, columns[0] + 2:columns[-1] - 1]
+
+
+def figure_mask(image):
+    """Pixels of the 3D view that are not the background: the human."""
+    return numpy.abs(image - BACKGROUND).sum(axis=2) > 40
+
+
+def wait_for_figure(rviz, path, minimum_pixels=4000, timeout=150.0, settle=4.0):
+    """Screenshots until the figure shows and stops changing; returns the last image."""
+    deadline = time.time() + timeout
+    previous = None
+    while time.time() < deadline:
+        if not rviz.alive():
+            raise RuntimeError("rviz exited:\n" + rviz.output()[-3000:])
+        time.sleep(settle)
+        image = grab(path)
+        mask = figure_mask(image)
+        if mask.sum() >= minimum_pixels and previous is not None and image.shape == previous.shape and previous is not None and numpy.abs(image - previous).mean() < 0.5:
+            return image
+        previous = image
+    raise RuntimeError("no stable figure on screen within %.0f s (last figure pixels: %d)\n%s"
+                       % (timeout, figure_mask(previous).sum() if previous is not None else -1, rviz.output()[-3000:]))
+
+
+def high_pass_energy(image, mask):
+    """Mean squared difference between luminance and its 5x5 box blur, inside the mask: the fine
+    relief, not the large-scale shading of the limbs."""
+    luminance = image @ numpy.array([0.299, 0.587, 0.114])
+    padded = numpy.pad(luminance, 2, mode="edge")
+    blurred = sum(padded[dy:dy + luminance.shape[0], dx:dx + luminance.shape[1]]
+                  for dy in range(5) for dx in range(5)) / 25.0
+    # Stay away from the silhouette, where the background leaks into the blur.
+    inner = mask.copy()
+    for shift in ((0, 3), (0, -3), (3, 0), (-3, 0)):
+        inner &= numpy.roll(mask, shift, axis=(0, 1))
+    return float(((luminance - blurred) ** 2)[inner].mean()), int(inner.sum())
