@@ -49,6 +49,7 @@ class DressedHumanDisplay : public rviz::Display {
 
  private:
   bool lookUpBones();
+  void updateSurfaces();
   void reportError(const std::string& name, const std::string& text, bool transient = false);
   void clearError(const std::string& name);
   void pollSkinRelief();
@@ -83,6 +84,8 @@ class DressedHumanDisplay : public rviz::Display {
   std::future<ReliefMap> skin_relief_;
   SkinParameterKey requested_skin_parameters_;
   std::map<std::string, std::string> logged_errors_;
+  double update_cpu_seconds_ = 0.0;
+  int update_count_ = 0;
   RigidTransform root_;
   std::array<RigidTransform, kBoneCount> bones_;
 };

@@ -1,0 +1,106 @@
+// ROS-side benchmark harness: an rviz VisualizationManager (as in rviz itself, render panel on the
+// X server) with N displays of one class, one per human (human_<i>/robot_description), driven at
+// rviz's 30 Hz for a while. Prints one line: class, N, achieved fps, process CPU (% of one core)
+// and CPU per frame. bench/rviz_scaling.py runs it for DressedHuman and RobotModel side by side.
+//
+// Usage: rviz_display_scaling <display class> <count> <seconds>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <QApplication>
+#include <ros/ros.h>
+#include <rviz/display.h>
+#include <rviz/properties/status_property.h>
+#include <rviz/render_panel.h>
+#include <rviz/view_controller.h>
+#include <rviz/view_manager.h>
+#include <rviz/visualization_manager.h>
+
+namespace {
+
+double processCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "rviz_display_scaling", ros::init_options::AnonymousName);
+  QApplication application(argc, argv);
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: rviz_display_scaling <display class> <count> <seconds>\n");
+    return 2;
+  }
+  const QString display_class = argv[1];
+  const int count = std::stoi(argv[2]);
+  const double seconds = std::stod(argv[3]);
+
+  rviz::RenderPanel panel;
+  panel.resize(1000, 700);
+  panel.show();
+  rviz::VisualizationManager manager(&panel);
+  panel.initialize(manager.getSceneManager(), &manager);
+  manager.initialize();
+  manager.setFixedFrame("world");
+  std::vector<rviz::Display*> displays;
+  for (int i = 0; i < count; ++i) {
+    rviz::Display* display = manager.createDisplay(display_class, QString("human %1").arg(i), true);
+    displays.push_back(display);
+    if (display == nullptr) {
+      std::fprintf(stderr, "cannot create a display of class %s\n", argv[1]);
+      return 1;
+    }
+    display->subProp("Robot Description")->setValue(QString("human_%1/robot_description").arg(i));
+  }
+  // A view that keeps all humans (walking along x, 1 m apart in y) on screen.
+  rviz::ViewController* view = manager.getViewManager()->getCurrent();
+  view->subProp("Distance")->setValue(14.0);
+  view->subProp("Focal Point")->setValue("4;4.5;0.9");
+
+  const auto frame = [&] {
+    QApplication::processEvents();
+    ros::spinOnce();
+    QMetaObject::invokeMethod(&manager, "onUpdate", Qt::DirectConnection);
+  };
+  const auto period = std::chrono::microseconds(33333);  // rviz's default 30 fps
+  auto run = [&](double duration, int& frames) {
+    frames = 0;
+    const auto start = std::chrono::steady_clock::now();
+    auto next = start;
+    while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < duration) {
+      frame();
+      ++frames;
+      next += period;
+      std::this_thread::sleep_until(next);
+      if (std::chrono::steady_clock::now() > next + period) next = std::chrono::steady_clock::now();
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  int frames = 0;
+  run(5.0, frames);  // warm-up: TF arrives, relief maps generated, buffers sized
+  const double cpu_before = processCpuSeconds();
+  const double wall = run(seconds, frames);
+  const double cpu = processCpuSeconds() - cpu_before;
+  // Displays that measure themselves (DressedHuman: status "Update") give their own cost.
+  double display_ms = 0.0;
+  int measured = 0;
+  for (rviz::Display* display : displays) {
+    for (int c = 0; c < display->numChildren(); ++c) {
+      auto* statuses = dynamic_cast<rviz::StatusProperty*>(display->childAt(c));
+      rviz::Property* update = statuses ? statuses->subProp("Update") : nullptr;
+      if (update == nullptr || update->getValue().toString().isEmpty()) continue;
+      display_ms += update->getValue().toString().split(' ').front().toDouble();
+      ++measured;
+    }
+  }
+  std::printf("class=%s count=%d fps=%.2f cpu_percent=%.1f cpu_ms_per_frame=%.3f display_ms=%.3f measured=%d\n",
+              argv[1], count, frames / wall, 100.0 * cpu / wall, 1000.0 * cpu / frames,
+              measured ? display_ms / measured : -1.0, measured);
+  return 0;
+}
