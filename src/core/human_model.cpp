@@ -12,7 +12,16 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
 const TriangleMesh& HumanModel::tessellate(Tessellator& tessellator, const std::vector<BezierPatch>& patches,
                                            const PatchTopology& topology, const LevelOfDetail& lod) {
   if (lod.automatic) {
-    return tessellator.tessellateForCamera(patches, topology, lod.camera, lod.max_error_pixels, lod.max_level);
+    // Levels from the screen-space error, with hysteresis: a level drops only when two below
+    // the current one would do. Otherwise a walking human flickers between levels and the
+    // tessellator rebuilds its layout every frame instead of only re-evaluating vertices.
+    std::vector<int>& levels = automatic_levels_[&tessellator];
+    levels.resize(patches.size(), 0);
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+      const int wanted = levelForScreenError(patches[p], lod.camera, lod.max_error_pixels, lod.max_level);
+      if (wanted > levels[p] || wanted < levels[p] - 1) levels[p] = wanted;
+    }
+    return tessellator.tessellate(patches, topology, levels);
   }
   if (lod.level < 1 || lod.level > Tessellator::kMaxLevel) {
     throw std::invalid_argument("tessellation level " + std::to_string(lod.level) + " is outside [1, " +

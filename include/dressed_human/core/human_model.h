@@ -4,6 +4,7 @@
 // display is a thin adapter around this class; tools and benchmarks use it the same way.
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,7 @@ class HumanModel {
   SkeletonPose pose_;
   Tessellator skin_tessellator_;
   std::vector<SurfacePart> parts_;
+  std::map<const Tessellator*, std::vector<int>> automatic_levels_;  // per surface, last levels used
 };
 
 }  // namespace dressed_human
