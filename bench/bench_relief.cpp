@@ -4,7 +4,11 @@
 //  * SkinMapBruteForce: the same map with every pixel scanning all seeds (and their 9 periodic
 //    images) of each level -- the reference, run at a smaller size because it is O(pixels x seeds).
 //  * SkinHierarchyBuild: seeds, clipping and wobble, paid once per parameter set.
-//  * WrinkleMap: one pose's worth of per-cell alphas, exact folds and 8-term Gaussians.
+//  * SkinMapWithMipsAndNormals, MipChain, NormalMapRgb: the map as uploaded (mips + RGB normals).
+//  * WrinkleMap: one pose's worth of per-cell alphas, exact folds and 8-term Gaussians. Gaussian
+//    fits are cached across maps (wrinkle_map.cpp), so after the first iteration this measures a
+//    pose whose alphas were seen before; WrinkleMapNewAlphas clears nothing but uses alphas never
+//    seen, i.e. pays the 5 fits every iteration.
 #include "dressed_human/core/skin_relief.h"
 #include "dressed_human/core/wrinkle_map.h"
 
@@ -39,6 +43,29 @@ void SkinMap(benchmark::State& state) {
 }
 BENCHMARK(SkinMap)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
 
+// What a caller uploads: the map, its mip chain (down to 1x1) and the 8-bit normal map of every
+// mip level. The two extra stages are also timed alone on a fixed map.
+void SkinMapWithMipsAndNormals(benchmark::State& state) {
+  const SkinRelief relief(benchmarkSkin());
+  for (auto _ : state) {
+    const std::vector<ReliefMap> chain = buildMipChain(relief.render(1024, 1024));
+    for (const ReliefMap& level : chain) benchmark::DoNotOptimize(encodeNormalMapRgb(level));
+  }
+}
+BENCHMARK(SkinMapWithMipsAndNormals)->Unit(benchmark::kMillisecond);
+
+void MipChain(benchmark::State& state) {
+  const ReliefMap map = SkinRelief(benchmarkSkin()).render(1024, 1024);
+  for (auto _ : state) benchmark::DoNotOptimize(buildMipChain(map));
+}
+BENCHMARK(MipChain)->Unit(benchmark::kMillisecond);
+
+void NormalMapRgb(benchmark::State& state) {
+  const ReliefMap map = SkinRelief(benchmarkSkin()).render(1024, 1024);
+  for (auto _ : state) benchmark::DoNotOptimize(encodeNormalMapRgb(map));
+}
+BENCHMARK(NormalMapRgb)->Unit(benchmark::kMillisecond);
+
 void SkinMapRounded(benchmark::State& state) {
   SkinReliefParameters parameters = benchmarkSkin();
   parameters.roundness = 0.4;
@@ -70,6 +97,22 @@ void WrinkleMap(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "exact folds, 5 distinct alphas" : "8 Gaussians, 5 fits");
 }
 BENCHMARK(WrinkleMap)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void WrinkleMapNewAlphas(benchmark::State& state) {
+  WrinkleMapSpec spec;
+  spec.width_pixels = 1024;
+  spec.height_pixels = 1024;
+  spec.surface = WrinkleSurface::gaussianApproximation;
+  static double shift = 0.0;  // static: repetitions must not meet their predecessors' alphas either
+  for (auto _ : state) {
+    shift += 1e-9;  // distinct alphas every iteration: no cache hits
+    spec.alpha.clear();
+    for (int cell = 0; cell < spec.rows * spec.cells_around; ++cell) spec.alpha.push_back(0.6 + 0.4 * (cell % 5) / 4.0 - shift);
+    benchmark::DoNotOptimize(makeWrinkleMap(spec));
+  }
+  state.SetLabel("8 Gaussians, 5 new fits");
+}
+BENCHMARK(WrinkleMapNewAlphas)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -31,11 +32,34 @@ double alphaOfCell(const WrinkleMapSpec& spec, int row, int column) {
 // A cell's surface, built once per distinct (pattern, orientation, alpha).
 struct CellSurface {
   std::unique_ptr<BucklingPattern> pattern;
-  std::unique_ptr<GaussianFoldApproximation> gaussians;
+  std::shared_ptr<const GaussianFoldApproximation> gaussians;
   ReliefSample sample(double x, double y) const {
     return gaussians ? gaussians->sample(x, y) : pattern->sampleFootprint(x, y);
   }
 };
+
+// Gaussian fits outlive one map: a fit costs tens of milliseconds and depends only on the
+// pattern (kind, orientation, alpha, cell, out-of-domain policy) and the term count, and a pose
+// sequence keeps returning to the same alphas. Keyed by the exact alpha, so a cached fit is the
+// fit that would be computed. Bounded: emptied when full, as alphas from continuous compression
+// need not repeat.
+using FitKey = std::tuple<int, bool, double, double, double, int, int>;
+
+std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const BucklingPattern& pattern, const FitKey& key, int terms) {
+  constexpr std::size_t kMaximumFits = 256;
+  static std::mutex mutex;
+  static std::map<FitKey, std::shared_ptr<const GaussianFoldApproximation>> fits;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto found = fits.find(key);
+    if (found != fits.end()) return found->second;
+  }
+  auto fit = std::make_shared<const GaussianFoldApproximation>(fitGaussians(pattern, terms));  // outside the lock
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (fits.size() >= kMaximumFits) fits.clear();
+  fits.emplace(key, fit);
+  return fit;
+}
 
 }  // namespace
 
@@ -83,7 +107,9 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
         CellSurface surface;
         surface.pattern = std::make_unique<BucklingPattern>(entry.kind, alpha, spec.cell, spec.out_of_domain, split_on_right);
         if (spec.surface == WrinkleSurface::gaussianApproximation) {
-          surface.gaussians = std::make_unique<GaussianFoldApproximation>(fitGaussians(*surface.pattern, spec.gaussian_terms));
+          const FitKey fit_key(static_cast<int>(entry.kind), split_on_right, alpha, spec.cell.half_width_x, spec.cell.half_length_y,
+                               static_cast<int>(spec.out_of_domain), spec.gaussian_terms);
+          surface.gaussians = cachedGaussianFit(*surface.pattern, fit_key, spec.gaussian_terms);
         }
         found = surfaces.emplace(key, std::move(surface)).first;
       }

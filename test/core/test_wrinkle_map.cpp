@@ -74,6 +74,12 @@ TEST(WrinkleMap, PerCellAlphaAndGaussianSurface) {
   spec.gaussian_terms = 6;
   const ReliefMap smooth = makeWrinkleMap(spec);
   EXPECT_GT(smooth.maximumHeight(), 0.3f);
+  // The second map reuses the cached fits: same map, bit for bit; another term count is another fit.
+  const ReliefMap again = makeWrinkleMap(spec);
+  EXPECT_EQ(again.heights, smooth.heights);
+  EXPECT_EQ(again.slope_u, smooth.slope_u);
+  spec.gaussian_terms = 3;
+  EXPECT_NE(makeWrinkleMap(spec).heights, smooth.heights);
 }
 
 TEST(WrinkleMap, RejectsBadSpecs) {
