@@ -2,11 +2,52 @@
 
 #include <stdexcept>
 
+#include "dressed_human/core/garment_file.h"
+
 namespace dressed_human {
+
+Outfit outfitFromName(const std::string& name) {
+  if (name == "none") return Outfit::kNone;
+  if (name == "one_piece") return Outfit::kOnePiece;
+  if (name == "jacket_skirt") return Outfit::kJacketSkirt;
+  if (name == "jacket_pants") return Outfit::kJacketPants;
+  throw std::invalid_argument("unknown outfit '" + name + "'; expected none, one_piece, jacket_skirt or jacket_pants");
+}
+
+std::vector<std::string> garmentFileNames(Outfit outfit) {
+  switch (outfit) {
+    case Outfit::kNone: return {};
+    case Outfit::kOnePiece: return {"one_piece"};
+    case Outfit::kJacketSkirt: return {"skirt", "jacket"};
+    case Outfit::kJacketPants: return {"pants", "jacket"};
+  }
+  return {};
+}
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
     : settings_(settings), skin_(skeleton, body) {
   parts_.push_back({"skin", ReliefKind::kSkin, settings_.skin_colour, nullptr});
+  for (const std::string& name : garmentFileNames(settings_.outfit)) {
+    GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
+    const bool has_skirt = description.type == GarmentType::kSkirt || description.type == GarmentType::kOnePiece;
+    if (settings_.skirt_length >= 0.0 && has_skirt) {
+      if (settings_.skirt_length > 1.0) {
+        throw std::invalid_argument("skirt length " + std::to_string(settings_.skirt_length) +
+                                    " is outside [0, 1] (0 mini, knee length c_k, 1 long)");
+      }
+      description.legs.length = settings_.skirt_length;
+      description.legs.at_knee = false;
+    }
+    garments_.emplace_back(description, skeleton, body.shape);
+    garment_tessellators_.push_back(std::make_unique<Tessellator>());
+    const auto colour = settings_.garment_colours.find(name);
+    const Eigen::Vector4f rgba = colour != settings_.garment_colours.end()
+                                     ? colour->second
+                                     : Eigen::Vector4f(static_cast<float>(description.colour.x()),
+                                                       static_cast<float>(description.colour.y()),
+                                                       static_cast<float>(description.colour.z()), 1.0f);
+    parts_.push_back({name, ReliefKind::kCloth, rgba, nullptr});
+  }
 }
 
 const TriangleMesh& HumanModel::tessellate(Tessellator& tessellator, const std::vector<BezierPatch>& patches,
@@ -36,6 +77,10 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
   pose_.bone_in_world = bones;
   skin_.pose(pose_);
   parts_[0].mesh = &tessellate(skin_tessellator_, skin_.patches(), skin_.topology(), lod);
+  for (std::size_t g = 0; g < garments_.size(); ++g) {
+    garments_[g].pose(pose_);
+    parts_[g + 1].mesh = &tessellate(*garment_tessellators_[g], garments_[g].patches(), garments_[g].topology(), lod);
+  }
 }
 
 std::size_t HumanModel::triangleCount() const {

@@ -11,6 +11,7 @@
 #include <ros/package.h>
 #include <rviz/display_context.h>
 #include <rviz/frame_manager.h>
+#include <rviz/properties/bool_property.h>
 #include <rviz/properties/color_property.h>
 #include <rviz/properties/enum_property.h>
 #include <rviz/properties/float_property.h>
@@ -21,6 +22,7 @@
 #include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skin_relief.h"
+#include "dressed_human/core/wrinkle_map.h"
 #include "human_visual.h"
 
 namespace dressed_human {
@@ -71,6 +73,21 @@ DressedHumanDisplay::DressedHumanDisplay() {
   body_file_property_ = new rviz::StringProperty(
       "Body Description", QString::fromStdString(package + "/config/bodies/default.yaml"),
       "YAML file with the skin's cross-sections and the body shape (Eq. 5).", this, SLOT(loadRobotDescription()));
+  outfit_property_ = new rviz::EnumProperty("Outfit", "jacket_skirt", "What the human wears (SPEC §3).", this,
+                                            SLOT(rebuildModel()));
+  for (const char* outfit : {"none", "one_piece", "jacket_skirt", "jacket_pants"}) outfit_property_->addOption(outfit);
+  skirt_length_property_ = new rviz::FloatProperty(
+      "Skirt Length", -1.0,
+      "Normalized skirt length c (Eq. 8'): 0 mini, knee length c_k, 1 long. Negative: as the garment file says.",
+      this, SLOT(rebuildModel()));
+  skirt_length_property_->setMax(1.0);
+  file_colours_property_ = new rviz::BoolProperty("Garment Colours From Files", true,
+                                                  "Use the colours of config/garments/*.yaml.", this,
+                                                  SLOT(updateGarmentColourVisibility()));
+  upper_colour_property_ = new rviz::ColorProperty("Upper Garment Colour", QColor(56, 82, 148),
+                                                   "Jacket or one-piece.", file_colours_property_, SLOT(rebuildModel()), this);
+  lower_colour_property_ = new rviz::ColorProperty("Lower Garment Colour", QColor(184, 56, 77), "Skirt or pants.",
+                                                   file_colours_property_, SLOT(rebuildModel()), this);
   relief_mode_property_ = new rviz::EnumProperty(
       "Relief", "Bump mapping", "Bump mapping: per-pixel normals from the relief maps. Flat: geometric normals only.",
       this, SLOT(updateAppearance()));
@@ -80,6 +97,10 @@ DressedHumanDisplay::DressedHumanDisplay() {
                                                       this, SLOT(updateAppearance()));
   relief_strength_property_->setMin(0.0);
   relief_strength_property_->setMax(5.0);
+  wrinkle_strength_property_ = new rviz::FloatProperty(
+      "Wrinkle Strength", 1.0, "Scales the garments' buckling-wrinkle relief.", this, SLOT(updateAppearance()));
+  wrinkle_strength_property_->setMin(0.0);
+  wrinkle_strength_property_->setMax(5.0);
   skin_colour_property_ = new rviz::ColorProperty("Skin Colour", QColor(222, 184, 158), "Colour of the skin.", this,
                                                   SLOT(rebuildModel()));
   skin_levels_property_ = new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", this,
@@ -110,6 +131,7 @@ DressedHumanDisplay::DressedHumanDisplay() {
 
 DressedHumanDisplay::~DressedHumanDisplay() {
   if (skin_relief_.valid()) skin_relief_.wait();
+  if (wrinkle_relief_.valid()) wrinkle_relief_.wait();
 }
 
 void DressedHumanDisplay::onInitialize() {
@@ -120,8 +142,34 @@ void DressedHumanDisplay::onInitialize() {
   } catch (const std::exception& error) {
     reportError("Material", error.what());
   }
+  updateGarmentColourVisibility();
   loadRobotDescription();
   regenerateSkinRelief();
+  // The garments' wrinkle texture: X-pattern buckling at moderate compression (SPEC §4), once.
+  wrinkle_relief_ = std::async(std::launch::async, [] {
+    WrinkleMapSpec spec;
+    spec.chain = "X";
+    spec.alpha = {0.85};
+    return makeWrinkleMap(spec);
+  });
+}
+
+void DressedHumanDisplay::updateGarmentColourVisibility() {
+  upper_colour_property_->setHidden(file_colours_property_->getBool());
+  lower_colour_property_->setHidden(file_colours_property_->getBool());
+  rebuildModel();
+}
+
+void DressedHumanDisplay::pollWrinkleRelief() {
+  if (!wrinkle_relief_.valid() || wrinkle_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    const ReliefMap map = wrinkle_relief_.get();
+    if (visual_) visual_->setNormalMap(ReliefKind::kCloth, encodeNormalMapRgb(map), map.width, map.height, 1.0f);
+    clearError("Wrinkle relief");
+  } catch (const std::exception& error) {
+    reportError("Wrinkle relief", error.what());
+  }
+  updateAppearance();
 }
 
 void DressedHumanDisplay::onEnable() {
@@ -175,10 +223,18 @@ void DressedHumanDisplay::loadRobotDescription() {
 void DressedHumanDisplay::rebuildModel() {
   if (!skeleton_ || !body_) return;
   HumanModelSettings settings;
-  const QColor skin = skin_colour_property_->getColor();
-  settings.skin_colour = {static_cast<float>(skin.redF()), static_cast<float>(skin.greenF()),
-                          static_cast<float>(skin.blueF()), 1.0f};
+  const auto rgba = [](const QColor& c) {
+    return Eigen::Vector4f(static_cast<float>(c.redF()), static_cast<float>(c.greenF()), static_cast<float>(c.blueF()), 1.0f);
+  };
+  settings.skin_colour = rgba(skin_colour_property_->getColor());
+  settings.garment_directory = ros::package::getPath("dressed_human") + "/config/garments";
+  settings.skirt_length = skirt_length_property_->getFloat();
+  if (!file_colours_property_->getBool()) {
+    for (const char* upper : {"jacket", "one_piece"}) settings.garment_colours[upper] = rgba(upper_colour_property_->getColor());
+    for (const char* lower : {"skirt", "pants"}) settings.garment_colours[lower] = rgba(lower_colour_property_->getColor());
+  }
   try {
+    settings.outfit = outfitFromName(outfit_property_->getStdString());
     model_ = std::make_unique<HumanModel>(*skeleton_, *body_, settings);
     clearError("Model");
   } catch (const std::exception& error) {
@@ -191,7 +247,8 @@ void DressedHumanDisplay::rebuildModel() {
 void DressedHumanDisplay::updateAppearance() {
   if (!visual_) return;
   const bool bump = relief_mode_property_->getOptionInt() == kBumpMapping;
-  visual_->setReliefStrength(bump ? relief_strength_property_->getFloat() : 0.0f);
+  visual_->setReliefStrength(ReliefKind::kSkin, bump ? relief_strength_property_->getFloat() : 0.0f);
+  visual_->setReliefStrength(ReliefKind::kCloth, bump ? wrinkle_strength_property_->getFloat() : 0.0f);
   context_->queueRender();
 }
 
@@ -291,6 +348,7 @@ void DressedHumanDisplay::update(float, float) {
 
 void DressedHumanDisplay::updateSurfaces() {
   pollSkinRelief();
+  pollWrinkleRelief();
   if (!model_ || !visual_ || !lookUpBones()) return;
   LevelOfDetail lod;
   lod.level = lod_level_property_->getInt();

@@ -46,6 +46,7 @@ class DressedHumanDisplay : public rviz::Display {
   void rebuildModel();
   void updateAppearance();
   void regenerateSkinRelief();
+  void updateGarmentColourVisibility();
 
  private:
   bool lookUpBones();
@@ -53,11 +54,18 @@ class DressedHumanDisplay : public rviz::Display {
   void reportError(const std::string& name, const std::string& text, bool transient = false);
   void clearError(const std::string& name);
   void pollSkinRelief();
+  void pollWrinkleRelief();
 
   rviz::StringProperty* description_property_;
   rviz::StringProperty* body_file_property_;
   rviz::EnumProperty* relief_mode_property_;
   rviz::FloatProperty* relief_strength_property_;
+  rviz::FloatProperty* wrinkle_strength_property_;
+  rviz::EnumProperty* outfit_property_;
+  rviz::FloatProperty* skirt_length_property_;
+  rviz::BoolProperty* file_colours_property_;
+  rviz::ColorProperty* upper_colour_property_;
+  rviz::ColorProperty* lower_colour_property_;
   rviz::ColorProperty* skin_colour_property_;
   rviz::IntProperty* skin_levels_property_;
   rviz::FloatProperty* skin_cell_size_property_;
@@ -82,6 +90,7 @@ class DressedHumanDisplay : public rviz::Display {
     }
   };
   std::future<ReliefMap> skin_relief_;
+  std::future<ReliefMap> wrinkle_relief_;
   SkinParameterKey requested_skin_parameters_;
   std::map<std::string, std::string> logged_errors_;
   double update_cpu_seconds_ = 0.0;

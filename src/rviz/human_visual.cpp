@@ -39,9 +39,11 @@ void HumanVisual::setVisible(bool visible) {
   for (Part& part : parts_) part.mesh->setVisible(visible);
 }
 
-void HumanVisual::setReliefStrength(float strength) {
-  relief_strength_ = strength;
-  for (Part& part : parts_) part.material->setReliefStrength(strength);
+void HumanVisual::setReliefStrength(ReliefKind kind, float strength) {
+  (kind == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_) = strength;
+  for (Part& part : parts_) {
+    if (part.relief == kind) part.material->setReliefStrength(strength);
+  }
 }
 
 void HumanVisual::setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height,
@@ -58,7 +60,7 @@ void HumanVisual::setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>&
 
 void HumanVisual::applyMaps(Part& part) const {
   const NormalMap& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
-  part.material->setReliefStrength(relief_strength_);
+  part.material->setReliefStrength(part.relief == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_);
   if (map.width > 0) {
     part.material->setNormalMap(map.rgb, map.width, map.height);
     part.material->setReliefTiling(map.tiling);

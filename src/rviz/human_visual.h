@@ -25,7 +25,7 @@ class HumanVisual {
   // Meshes are in the fixed frame; parts are matched by index and (re)created when they change.
   void update(const std::vector<SurfacePart>& parts);
   void setVisible(bool visible);
-  void setReliefStrength(float strength);
+  void setReliefStrength(ReliefKind kind, float strength);
   void setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height, float tiling);
 
  private:
@@ -46,7 +46,8 @@ class HumanVisual {
   Ogre::SceneNode* node_;
   std::string name_prefix_;
   std::vector<Part> parts_;
-  float relief_strength_ = 1.0f;
+  float skin_relief_strength_ = 1.0f;
+  float cloth_relief_strength_ = 1.0f;
   NormalMap skin_map_, cloth_map_;
   bool visible_ = true;
 };

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 
 #include "dressed_human/core/body_description.h"
 #include "dressed_human/core/forward_kinematics.h"
+#include "dressed_human/core/garment.h"
 #include "dressed_human/core/skin.h"
 #include "dressed_human/core/tessellation.h"
 
@@ -34,14 +36,28 @@ struct LevelOfDetail {
   CameraView camera{Eigen::Vector3d::Zero(), 0.8, 1000.0};
 };
 
+// The seed paper's three outfits (SPEC §3), or the bare skin.
+enum class Outfit { kNone, kOnePiece, kJacketSkirt, kJacketPants };
+// "none", "one_piece", "jacket_skirt", "jacket_pants"; throws std::invalid_argument otherwise.
+Outfit outfitFromName(const std::string& name);
+// The garment files (config/garments/<name>.yaml) an outfit is made of, outermost last.
+std::vector<std::string> garmentFileNames(Outfit outfit);
+
 struct HumanModelSettings {
   Eigen::Vector4f skin_colour{0.87f, 0.72f, 0.62f, 1.0f};
+  Outfit outfit = Outfit::kJacketSkirt;
+  std::string garment_directory;   // holds the outfit's garment YAML files
+  double skirt_length = -1.0;      // normalized c in [0, 1] (Eq. 8'); < 0: as the skirt file says
+  // Per garment file name ("jacket", "skirt", ...): RGBA replacing the file's colour.
+  std::map<std::string, Eigen::Vector4f> garment_colours;
 };
 
 class HumanModel {
  public:
   HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings);
 
+  // Loads the outfit's garments; throws (GarmentError, BodyDescriptionError, SkinError) naming
+  // the file and what is wrong.
   // `root` is the skeleton's root frame ("body"), `bones` every bone frame, all in one world
   // frame. Allocation-free while the level of detail stays the same.
   void update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
@@ -59,6 +75,8 @@ class HumanModel {
   Skin skin_;
   SkeletonPose pose_;
   Tessellator skin_tessellator_;
+  std::vector<Garment> garments_;
+  std::vector<std::unique_ptr<Tessellator>> garment_tessellators_;
   std::vector<SurfacePart> parts_;
   std::map<const Tessellator*, std::vector<int>> automatic_levels_;  // per surface, last levels used
 };
