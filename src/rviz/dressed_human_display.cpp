@@ -98,7 +98,7 @@ DressedHumanDisplay::DressedHumanDisplay() {
   relief_strength_property_->setMin(0.0);
   relief_strength_property_->setMax(5.0);
   wrinkle_strength_property_ = new rviz::FloatProperty(
-      "Wrinkle Strength", 1.0, "Scales the garments' buckling-wrinkle relief.", this, SLOT(updateAppearance()));
+      "Wrinkle Strength", 0.6, "Scales the garments' buckling-wrinkle relief.", this, SLOT(updateAppearance()));
   wrinkle_strength_property_->setMin(0.0);
   wrinkle_strength_property_->setMax(5.0);
   skin_colour_property_ = new rviz::ColorProperty("Skin Colour", QColor(222, 184, 158), "Colour of the skin.", this,
@@ -145,11 +145,14 @@ void DressedHumanDisplay::onInitialize() {
   updateGarmentColourVisibility();
   loadRobotDescription();
   regenerateSkinRelief();
-  // The garments' wrinkle texture: X-pattern buckling at moderate compression (SPEC §4), once.
+  // The garments' wrinkle texture: X-pattern buckling at mild compression (SPEC §4), once; a few
+  // large cells per patch, as cloth buckles at the scale of a hand, not of a knit.
   wrinkle_relief_ = std::async(std::launch::async, [] {
     WrinkleMapSpec spec;
     spec.chain = "X";
-    spec.alpha = {0.85};
+    spec.cells_around = 2;
+    spec.rows = 2;
+    spec.alpha = {0.9};
     return makeWrinkleMap(spec);
   });
 }

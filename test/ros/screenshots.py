@@ -67,8 +67,8 @@ def figure_mask(image):
     return numpy.abs(image - BACKGROUND).sum(axis=2) > 40
 
 
-def wait_for_figure(rviz, path, minimum_pixels=4000, timeout=150.0, settle=4.0):
-    """Screenshots until the figure shows and stops changing; returns the last image."""
+def wait_for_figure(rviz, path, minimum_pixels=4000, timeout=150.0, settle=4.0, still=True):
+    """Screenshots until the figure shows (and, if `still`, stops changing); returns the image."""
     deadline = time.time() + timeout
     previous = None
     while time.time() < deadline:
@@ -77,7 +77,8 @@ def wait_for_figure(rviz, path, minimum_pixels=4000, timeout=150.0, settle=4.0):
         time.sleep(settle)
         image = grab(path)
         mask = figure_mask(image)
-        if mask.sum() >= minimum_pixels and previous is not None and image.shape == previous.shape and previous is not None and numpy.abs(image - previous).mean() < 0.5:
+        settled = previous is not None and image.shape == previous.shape and numpy.abs(image - previous).mean() < 0.5
+        if mask.sum() >= minimum_pixels and (settled or not still):
             return image
         previous = image
     raise RuntimeError("no stable figure on screen within %.0f s (last figure pixels: %d)\n%s"

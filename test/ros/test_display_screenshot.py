@@ -36,12 +36,28 @@ class DisplayScreenshotTest(unittest.TestCase):
         self.assertLess(abs(columns.mean() - mask.shape[1] / 2), mask.shape[1] / 8)
         self.assertGreater(rows.max() - rows.min(), 1.5 * (numpy.percentile(columns, 95) - numpy.percentile(columns, 5)))
 
-    def test_skin_colour(self):
+    def band(self, image, top, bottom):
+        """Figure pixels between two fractions of the figure's height (0 = head top)."""
+        mask = figure_mask(image)
+        rows = numpy.nonzero(mask.any(axis=1))[0]
+        first, height = rows.min(), rows.max() - rows.min()
+        band = numpy.zeros_like(mask)
+        band[int(first + top * height):int(first + bottom * height)] = True
+        return image[mask & band]
+
+    def test_outfit_colours_cover_their_regions(self):
+        # Default outfit, jacket + skirt (config/garments): a blue jacket on the chest, a red
+        # skirt over the hips, skin on the head.
         image = self.images["Flat"]
-        mean = image[figure_mask(image)].mean(axis=0)
-        rospy.loginfo("mean figure colour (flat): %s", mean)
-        self.assertGreater(mean[0], mean[1])  # skin: red > green > blue
-        self.assertGreater(mean[1], mean[2])
+        chest, hips, head = self.band(image, 0.2, 0.4), self.band(image, 0.5, 0.6), self.band(image, 0.0, 0.08)
+        blue = (chest[:, 2] > chest[:, 0] * 1.2).mean()
+        red = ((hips[:, 0] > hips[:, 1] * 1.5) & (hips[:, 0] > hips[:, 2] * 1.2)).mean()
+        skin = ((head[:, 0] > head[:, 1]) & (head[:, 1] > head[:, 2])).mean()
+        rospy.loginfo("jacket blue %.2f of the chest band, skirt red %.2f of the hip band, skin %.2f of the head",
+                      blue, red, skin)
+        self.assertGreater(blue, 0.6)
+        self.assertGreater(red, 0.6)
+        self.assertGreater(skin, 0.6)
 
     def test_relief_is_visible(self):
         bump, bump_pixels = high_pass_energy(self.images["Bump mapping"], figure_mask(self.images["Bump mapping"]))
