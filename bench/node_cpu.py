@@ -11,13 +11,14 @@ Needs the package built (build/devel/setup.bash) and a free ROS master port.
 """
 import argparse
 import os
-import signal
 import statistics
 import subprocess
 import sys
 import time
 
 import rosgraph
+
+from ros_processes import ros_environment, start, stop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MOTION = os.path.join(ROOT, "config", "motions", "walk.yaml")
@@ -32,17 +33,6 @@ def cpu_seconds(pid):
     return total * 1e-9
 
 
-def start(command, env):
-    return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            preexec_fn=os.setsid)
-
-
-def stop(process):
-    try:
-        os.killpg(process.pid, signal.SIGINT)
-        process.wait(timeout=15)
-    except (ProcessLookupError, subprocess.TimeoutExpired):
-        os.killpg(process.pid, signal.SIGKILL)
 
 
 def measure(rate, seconds, windows, env, urdf):
@@ -87,8 +77,7 @@ def main():
     parser.add_argument("--markdown", default="")
     args = parser.parse_args()
 
-    env = dict(os.environ, ROS_HOSTNAME="localhost", ROS_MASTER_URI="http://localhost:11411")
-    env["PATH"] = "/usr/bin:" + env.get("PATH", "")
+    env = ros_environment(11411)
     with open(os.path.join(ROOT, "urdf", "human.urdf")) as f:
         urdf = f.read()
     master = start(["roscore", "-p", "11411"], env)

@@ -11,27 +11,17 @@ Needs the package built in build/ and xvfb-run.
 import argparse
 import os
 import re
-import signal
 import subprocess
 import sys
 import time
+
+from ros_processes import ros_environment, start, stop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEVEL = os.path.join(ROOT, "build", "devel")
 CLASSES = ["dressed_human/DressedHuman", "rviz/RobotModel"]
 
 
-def start(command, env):
-    return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            preexec_fn=os.setsid)
-
-
-def stop(process):
-    try:
-        os.killpg(process.pid, signal.SIGINT)
-        process.wait(timeout=15)
-    except (ProcessLookupError, subprocess.TimeoutExpired):
-        os.killpg(process.pid, signal.SIGKILL)
 
 
 def harness(display_class, count, seconds, env):
@@ -53,8 +43,7 @@ def main():
     parser.add_argument("--markdown", default="")
     args = parser.parse_args()
 
-    env = dict(os.environ, ROS_HOSTNAME="localhost", ROS_MASTER_URI="http://localhost:11911")
-    env["PATH"] = "/usr/bin:" + env.get("PATH", "")
+    env = ros_environment(11911)
     node = os.path.join(DEVEL, "lib", "dressed_human", "skeleton_publisher")
     motion = os.path.join(ROOT, "config", "motions", "walk.yaml")
     urdf = os.path.join(ROOT, "urdf", "human.urdf")
