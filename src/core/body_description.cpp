@@ -7,7 +7,7 @@
 #include <sstream>
 #include <utility>
 
-#include <yaml-cpp/yaml.h>
+#include "dressed_human/core/yaml_reader.h"
 
 namespace dressed_human {
 namespace {
@@ -15,83 +15,7 @@ namespace {
 // A joined child's joint must lie on the parent's z axis to this tolerance (metres).
 constexpr double kAxisTolerance = 1e-6;
 
-// Builds errors that point at the offending node: "file:line:col: key.path: message".
-class BodyYamlReader {
- public:
-  explicit BodyYamlReader(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
-    std::ostringstream text;
-    text << source_;
-    const YAML::Mark mark = node.Mark();
-    if (mark.line >= 0) text << ':' << mark.line + 1 << ':' << mark.column + 1;
-    text << ": " << key << ": " << message;
-    throw BodyDescriptionError(text.str());
-  }
-
-  void requireMap(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsMap()) fail(node, key, "expected a mapping (key: value pairs), got " + describe(node));
-  }
-
-  void rejectUnknownKeys(const YAML::Node& map, const std::string& key, const std::set<std::string>& allowed) const {
-    for (const auto& entry : map) {
-      const std::string name = entry.first.Scalar();
-      if (allowed.count(name) == 0) {
-        std::string list;
-        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(entry.first, key.empty() ? name : key + "." + name, "unknown key; expected one of: " + list);
-      }
-    }
-  }
-
-  YAML::Node require(const YAML::Node& map, const std::string& name, const std::string& key) const {
-    const YAML::Node child = map[name];
-    if (!child) fail(map, key.empty() ? name : key + "." + name, "missing");
-    return child;
-  }
-
-  double number(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsScalar()) fail(node, key, "expected a number, got " + describe(node));
-    double value = 0.0;
-    try {
-      value = node.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(node, key, "expected a number, got '" + node.Scalar() + "'");
-    }
-    if (!std::isfinite(value)) fail(node, key, "expected a finite number, got '" + node.Scalar() + "'");
-    return value;
-  }
-
-  bool boolean(const YAML::Node& node, const std::string& key) const {
-    bool value = false;
-    if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
-      fail(node, key, "expected true or false, got " + describe(node));
-    }
-    return value;
-  }
-
-  std::vector<double> triple(const YAML::Node& node, const std::string& key, const char* what) const {
-    if (!node.IsSequence() || node.size() != 3) {
-      fail(node, key, std::string("expected a list of 3 numbers ") + what + ", got " + describe(node));
-    }
-    std::vector<double> values;
-    for (std::size_t i = 0; i < 3; ++i) values.push_back(number(node[i], key + "[" + std::to_string(i) + "]"));
-    return values;
-  }
-
-  static std::string describe(const YAML::Node& node) {
-    switch (node.Type()) {
-      case YAML::NodeType::Null: return "nothing (null)";
-      case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
-      case YAML::NodeType::Sequence: return "a list of " + std::to_string(node.size());
-      case YAML::NodeType::Map: return "a mapping";
-      default: return "an undefined value";
-    }
-  }
-
- private:
-  std::string source_;
-};
+using BodyYamlReader = YamlReader<BodyDescriptionError>;
 
 std::string format(double value) {
   std::ostringstream text;
@@ -120,24 +44,13 @@ const std::vector<std::pair<std::string, std::vector<std::string>>>& bodyShapeGr
 
 BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Skeleton& skeleton,
                                          const std::string& source_name) {
-  YAML::Node document;
-  try {
-    document = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& error) {
-    std::ostringstream text;
-    text << source_name << ':' << error.mark.line + 1 << ':' << error.mark.column + 1
-         << ": not valid YAML: " << error.msg;
-    throw BodyDescriptionError(text.str());
-  }
   const BodyYamlReader reader(source_name);
-  if (!document || document.IsNull()) throw BodyDescriptionError(source_name + ": the body description is empty");
-  reader.requireMap(document, "(top level)");
+  const YAML::Node document = reader.load(yaml_text, "the body description");
   reader.rejectUnknownKeys(document, "", {"name", "segments", "shape"});
 
   BodyDescription body;
   if (document["name"]) {
-    if (!document["name"].IsScalar()) reader.fail(document["name"], "name", "expected a text");
-    body.name = document["name"].Scalar();
+    body.name = reader.text(document["name"], "name");
   }
 
   // ---- shape: groups and bones, applied in document order (later entries override).
@@ -159,7 +72,7 @@ BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Ske
           }
           bones.push_back(name);
         }
-        const std::vector<double> abc = reader.triple(entry.second, key, "[a, b, c] (Eq. 5 scale of x, y, z)");
+        const std::vector<double> abc = reader.numbers(entry.second, key, 3, "[a, b, c] (Eq. 5 scale of x, y, z)");
         for (std::size_t k = 0; k < 3; ++k) {
           if (!(abc[k] >= 0.2 && abc[k] <= 5.0)) {
             reader.fail(entry.second, key, "scale " + format(abc[k]) + " outside [0.2, 5]");
@@ -212,7 +125,7 @@ BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Ske
     }
     for (std::size_t k = 0; k < sections.size(); ++k) {
       const std::string section_key = key + ".sections[" + std::to_string(k) + "]";
-      const std::vector<double> v = reader.triple(sections[k], section_key, "[z, radius_x, radius_y] in metres");
+      const std::vector<double> v = reader.numbers(sections[k], section_key, 3, "[z, radius_x, radius_y] in metres");
       if (!(v[1] > 0.0) || !(v[2] > 0.0)) reader.fail(sections[k], section_key, "radii must be > 0");
       if (v[1] > 1.0 || v[2] > 1.0) reader.fail(sections[k], section_key, "radii above 1 m: metres expected");
       if (k > 0 && !(v[0] > spec.sections.back().z)) {

@@ -7,103 +7,36 @@
 #include <set>
 #include <sstream>
 
-#include <yaml-cpp/yaml.h>
+#include "dressed_human/core/yaml_reader.h"
 
 namespace dressed_human {
 namespace {
 
-// Builds errors that point at the offending node: "file:line:col: key.path: message".
-class MotionYamlReader {
- public:
-  explicit MotionYamlReader(std::string source) : source_(std::move(source)) {}
+using Reader = YamlReader<MotionError>;
 
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
-    std::ostringstream text;
-    text << source_;
-    const YAML::Mark mark = node.Mark();
-    if (mark.line >= 0) text << ':' << mark.line + 1 << ':' << mark.column + 1;
-    text << ": " << key << ": " << message;
-    throw MotionError(text.str());
+FourierSeries readSeries(const Reader& reader, const YAML::Node& node, const std::string& key, double default_period) {
+  reader.requireMap(node, key);
+  reader.rejectUnknownKeys(node, key, {"a0", "a", "b", "period", "phase", "rms_residual"});
+  FourierSeries s;
+  s.period = default_period;
+  s.a0 = reader.number(reader.require(node, "a0", key), key + ".a0");
+  // a_1..a_m and b_1..b_m: messages number them as the equation does.
+  if (node["a"]) s.a = reader.numbers(node["a"], key + ".a", 0, "", 1);
+  if (node["b"]) s.b = reader.numbers(node["b"], key + ".b", 0, "", 1);
+  if (s.a.size() != s.b.size()) {
+    reader.fail(node, key, "wrong coefficient counts: " + std::to_string(s.a.size()) + " in a but " +
+                               std::to_string(s.b.size()) + " in b; both must list a_1..a_m and b_1..b_m");
   }
-
-  void requireMap(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsMap()) fail(node, key, "expected a mapping (key: value pairs), got " + describe(node));
+  if (node["period"]) {
+    s.period = reader.number(node["period"], key + ".period");
+    if (s.period <= 0.0) reader.fail(node["period"], key + ".period", "must be > 0 seconds");
   }
-
-  void rejectUnknownKeys(const YAML::Node& map, const std::string& key, const std::set<std::string>& allowed) const {
-    for (const auto& entry : map) {
-      const std::string name = entry.first.Scalar();
-      if (allowed.count(name) == 0) {
-        std::string list;
-        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(entry.first, key.empty() ? name : key + "." + name, "unknown key; expected one of: " + list);
-      }
-    }
+  if (node["phase"]) s.phase = reader.number(node["phase"], key + ".phase");
+  if (node["rms_residual"] && reader.number(node["rms_residual"], key + ".rms_residual") < 0.0) {
+    reader.fail(node["rms_residual"], key + ".rms_residual", "must be >= 0");
   }
-
-  const YAML::Node require(const YAML::Node& map, const std::string& name, const std::string& key) const {
-    const YAML::Node child = map[name];
-    if (!child) fail(map, key.empty() ? name : key + "." + name, "missing");
-    return child;
-  }
-
-  double number(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsScalar()) fail(node, key, "expected a number, got " + describe(node));
-    double value = 0.0;
-    try {
-      value = node.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(node, key, "expected a number, got '" + node.Scalar() + "'");
-    }
-    if (!std::isfinite(value)) fail(node, key, "expected a finite number, got '" + node.Scalar() + "'");
-    return value;
-  }
-
-  std::vector<double> numbers(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsSequence()) fail(node, key, "expected a list of numbers, got " + describe(node));
-    std::vector<double> values;
-    for (std::size_t i = 0; i < node.size(); ++i) values.push_back(number(node[i], key + "[" + std::to_string(i + 1) + "]"));
-    return values;
-  }
-
-  FourierSeries series(const YAML::Node& node, const std::string& key, double default_period) const {
-    requireMap(node, key);
-    rejectUnknownKeys(node, key, {"a0", "a", "b", "period", "phase", "rms_residual"});
-    FourierSeries s;
-    s.period = default_period;
-    s.a0 = number(require(node, "a0", key), key + ".a0");
-    if (node["a"]) s.a = numbers(node["a"], key + ".a");
-    if (node["b"]) s.b = numbers(node["b"], key + ".b");
-    if (s.a.size() != s.b.size()) {
-      fail(node, key, "wrong coefficient counts: " + std::to_string(s.a.size()) + " in a but " +
-                          std::to_string(s.b.size()) + " in b; both must list a_1..a_m and b_1..b_m");
-    }
-    if (node["period"]) {
-      s.period = number(node["period"], key + ".period");
-      if (s.period <= 0.0) fail(node["period"], key + ".period", "must be > 0 seconds");
-    }
-    if (node["phase"]) s.phase = number(node["phase"], key + ".phase");
-    if (node["rms_residual"]) {
-      if (number(node["rms_residual"], key + ".rms_residual") < 0.0) {
-        fail(node["rms_residual"], key + ".rms_residual", "must be >= 0");
-      }
-    }
-    return s;
-  }
-
- private:
-  static std::string describe(const YAML::Node& node) {
-    switch (node.Type()) {
-      case YAML::NodeType::Null: return "nothing (null)";
-      case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
-      case YAML::NodeType::Sequence: return "a list";
-      case YAML::NodeType::Map: return "a mapping";
-      default: return "an undefined value";
-    }
-  }
-
-  std::string source_;
-};
+  return s;
+}
 
 template <std::size_t N>
 std::set<std::string> namesOf(const std::array<const char*, N>& names) {
@@ -113,23 +46,13 @@ std::set<std::string> namesOf(const std::array<const char*, N>& names) {
 }  // namespace
 
 Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_name) {
-  YAML::Node document;
-  try {
-    document = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& error) {
-    std::ostringstream text;
-    text << source_name << ':' << error.mark.line + 1 << ':' << error.mark.column + 1 << ": not valid YAML: " << error.msg;
-    throw MotionError(text.str());
-  }
-  const MotionYamlReader reader(source_name);
-  if (!document || document.IsNull()) throw MotionError(source_name + ": the motion file is empty");
-  reader.requireMap(document, "(top level)");
+  const Reader reader(source_name);
+  const YAML::Node document = reader.load(yaml_text, "the motion file");
   reader.rejectUnknownKeys(document, "", {"name", "period", "joints", "root"});
 
   Motion motion;
   if (document["name"]) {
-    if (!document["name"].IsScalar()) reader.fail(document["name"], "name", "expected a text");
-    motion.name = document["name"].Scalar();
+    motion.name = reader.text(document["name"], "name");
   }
   const YAML::Node period = reader.require(document, "period", "");
   motion.period = reader.number(period, "period");
@@ -145,7 +68,7 @@ Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_n
     reader.rejectUnknownKeys(joint, joint_key, namesOf(kDofNames));
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
       const std::string dof_key = joint_key + "." + kDofNames[d];
-      motion.dofs[j * kDofsPerJoint + d] = reader.series(reader.require(joint, kDofNames[d], joint_key), dof_key, motion.period);
+      motion.dofs[j * kDofsPerJoint + d] = readSeries(reader, reader.require(joint, kDofNames[d], joint_key), dof_key, motion.period);
     }
   }
 
@@ -160,9 +83,9 @@ Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_n
   reader.requireMap(rotation, "root.rotation");
   reader.rejectUnknownKeys(rotation, "root.rotation", namesOf(kRootRotationNames));
   for (std::size_t k = 0; k < 3; ++k) {
-    motion.root.translation[k] = reader.series(reader.require(translation, kRootTranslationNames[k], "root.translation"),
+    motion.root.translation[k] = readSeries(reader, reader.require(translation, kRootTranslationNames[k], "root.translation"),
                                                std::string("root.translation.") + kRootTranslationNames[k], motion.period);
-    motion.root.rotation[k] = reader.series(reader.require(rotation, kRootRotationNames[k], "root.rotation"),
+    motion.root.rotation[k] = readSeries(reader, reader.require(rotation, kRootRotationNames[k], "root.rotation"),
                                             std::string("root.rotation.") + kRootRotationNames[k], motion.period);
   }
   try {
