@@ -4,7 +4,8 @@
 standing, bottom row in a walk pose (the long skirt follows the bending knee).
 
 Run from the repository root after building: scripts/make_garment_figures.py [BUILD_DIR]
-(default build_garment). Renders with the core's CPU rasterizer (src/tools/render_mesh.cpp).
+(default build_garment). Renders with the core's CPU rasterizer (src/tools/render_mesh.cpp),
+over the real posed skin (skin.h, tessellated as in src/tools/render_skin.cpp).
 """
 import os
 import subprocess

@@ -134,6 +134,14 @@ class Builder {
     const RigidTransform& m = rest_.bone_in_parent[static_cast<std::size_t>(lower)];
     const Eigen::Vector3d pj = qj - m.rotation.conjugate() * (pi - m.translation);
     const SkirtLengthWeights w = skirtLengthWeights(c, boneLength(upper), boneLength(lower));
+    if (d_.type == GarmentType::kPants && w.aj > 0.0) {
+      // A trouser leg below the knee rides the shank alone (garment.h): the knee ring carried
+      // into the shank's rest frame, blended toward the long hem by A_j.
+      ShapeAttachment a;
+      a.bone = lower;
+      a.local = (1.0 - w.aj) * (m.rotation.conjugate() * (pi - m.translation)) + w.aj * qj;
+      return a;
+    }
     ShapeAttachment a;
     a.bone = upper;
     a.local = w.a0 * p0 + w.ai * pi;
@@ -223,6 +231,7 @@ class Builder {
 
   double length_ = 0.0;
   double knee_ = 0.0;
+  std::int64_t crotch_ = -1;
 
   void build() {
     const GarmentType type = d_.type;
@@ -250,25 +259,41 @@ class Builder {
     if (pants) lat.tube_row = 1;
     const int n = lat.around();
 
-    std::int64_t crotch = -1;
-    std::vector<std::pair<int, int>> collapsed;
+    // Pants: the crotch C (lattice (0, 3) = (n/2, 3), where the hips' front and back centre lines
+    // end and both tubes' inseams start) and its twist ring: the eight control points diagonal
+    // to C, one per patch: tangent projections of shape points on the crotch ellipse (garment.h).
+    std::vector<std::pair<std::pair<int, int>, std::uint32_t>> crotch_points;
     if (pants) {
+      const int bone = boneOf(d_.crotch_frame);
       ShapeAttachment a;
-      a.bone = boneOf(d_.crotch_frame);
-      a.local = scaled(a.bone, d_.crotch);
-      crotch = net_.addShape(a, "crotch");
+      a.bone = bone;
+      a.local = scaled(bone, d_.crotch);
+      const std::uint32_t c = net_.addShape(a, "crotch");
+      crotch_ = c;
+      crotch_points.push_back({{0, 3}, c});
+      crotch_points.push_back({{n / 2, 3}, c});
       const int half = n / 2;
-      collapsed = {{1, 2}, {n - 1, 2}, {half - 1, 2}, {half + 1, 2}, {1, 4}, {half - 1, 4}, {half + 1, 4}, {n - 1, 4}};
+      // Lattice position of each patch's twist point at C, by the angle of its sector around C
+      // (x front, y left): hips front-left, left leg front, left leg back, hips back-left, ...
+      const std::pair<int, int> twist[8] = {{1, 2},        {1, 4},        {half - 1, 4}, {half - 1, 2},
+                                            {half + 1, 2}, {half + 1, 4}, {n - 1, 4},    {n - 1, 2}};
+      for (int k = 0; k < 8; ++k) {
+        const double angle = kPi / 8.0 + k * kPi / 4.0;
+        const bool leg_sector = twist[k].second > 3;
+        const Eigen::Vector2d& radius = leg_sector ? d_.crotch_leg_radius : d_.crotch_radius;
+        // Source: on the crotch ellipse, fixed in the crotch frame. (Riding the thighs instead
+        // follows the legs better, but hip rotation then swaps the sources' order around C in
+        // some walk poses, and the 8 sectors no longer go once around it: a fold.)
+        ShapeAttachment t;
+        t.bone = bone;
+        t.local = a.local + scaled(bone, Eigen::Vector3d(radius.x() * std::cos(angle), radius.y() * std::sin(angle), 0.0));
+        const std::uint32_t source = net_.addShape(t, "crotch");
+        crotch_points.push_back({twist[k], net_.addTangentProjection(source, c, bone, "crotch")});
+      }
     }
-    std::vector<std::int64_t> collapsed_index(collapsed.size(), -1);
     auto override_point = [&](int i, int j) -> std::int64_t {
-      if (!pants) return -1;
-      if (j == 3 && (i == 0 || i == n / 2)) return crotch;
-      for (std::size_t k = 0; k < collapsed.size(); ++k) {
-        if (collapsed[k] == std::make_pair(i, j)) {
-          if (collapsed_index[k] < 0) collapsed_index[k] = net_.addCollapsed(static_cast<std::uint32_t>(crotch), "crotch");
-          return collapsed_index[k];
-        }
+      for (const auto& [at_ij, point] : crotch_points) {
+        if (at_ij == std::make_pair(i, j)) return point;
       }
       return -1;
     };
@@ -324,6 +349,7 @@ Garment::Garment(const GarmentDescription& description, const Skeleton& skeleton
   }
   knee_length_ = builder.knee_;
   length_ = builder.length_;
+  crotch_ = builder.crotch_;
   SkeletonPose rest;
   ForwardKinematics fk(skeleton, shape);
   JointAngles zero{};

@@ -13,7 +13,7 @@ const char* controlPointKindName(ControlPointKind kind) {
     case ControlPointKind::kShape: return "shape";
     case ControlPointKind::kBoundaryMidpoint: return "boundary midpoint";
     case ControlPointKind::kCornerMidpoint: return "corner midpoint";
-    case ControlPointKind::kCollapsed: return "collapsed";
+    case ControlPointKind::kTangentProjection: return "tangent projection";
   }
   return "?";
 }
@@ -65,13 +65,15 @@ std::uint32_t GarmentControlNet::addMidpoint(ControlPointKind kind, std::uint32_
   return static_cast<std::uint32_t>(rules_.size() - 1);
 }
 
-std::uint32_t GarmentControlNet::addCollapsed(std::uint32_t shape_point, const std::string& piece) {
-  if (shape_point >= rules_.size() || rules_[shape_point].kind != ControlPointKind::kShape) {
-    throw std::invalid_argument("garment control net: a collapsed point must copy a shape point");
+std::uint32_t GarmentControlNet::addTangentProjection(std::uint32_t point, std::uint32_t plane_point, int plane_frame,
+                                                      const std::string& piece) {
+  if (point >= rules_.size() || plane_point >= rules_.size()) {
+    throw std::invalid_argument("garment control net: projection source does not exist yet");
   }
   ControlPointRule rule;
-  rule.kind = ControlPointKind::kCollapsed;
-  rule.sources = {shape_point, shape_point};
+  rule.kind = ControlPointKind::kTangentProjection;
+  rule.sources = {point, plane_point};
+  rule.plane_frame = plane_frame;
   rule.piece = piece;
   addRule(rule);
   return static_cast<std::uint32_t>(rules_.size() - 1);
@@ -176,9 +178,12 @@ void GarmentControlNet::pose(const SkeletonPose& pose) {
         world_[p] = w;
         break;
       }
-      case ControlPointKind::kCollapsed:
-        world_[p] = world_[rule.sources[0]];
+      case ControlPointKind::kTangentProjection: {
+        const Eigen::Vector3d n = frame(rule.plane_frame).rotation * Eigen::Vector3d::UnitZ();
+        const Eigen::Vector3d& x = world_[rule.sources[0]];
+        world_[p] = x - (x - world_[rule.sources[1]]).dot(n) * n;
         break;
+      }
       default:
         world_[p] = 0.5 * (world_[rule.sources[0]] + world_[rule.sources[1]]);
         break;

@@ -238,12 +238,23 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
   if (g.type == GarmentType::kPants) {
     const YAML::Node crotch = reader.require(document, "crotch", "");
     reader.requireMap(crotch, "crotch");
-    reader.rejectUnknownKeys(crotch, "crotch", {"frame", "point"});
+    reader.rejectUnknownKeys(crotch, "crotch", {"frame", "point", "radius", "leg_radius"});
     g.crotch_frame = reader.frame(reader.require(crotch, "frame", "crotch"), "crotch.frame", false);
     if (g.crotch_frame.rfind("l_", 0) == 0 || g.crotch_frame.rfind("r_", 0) == 0) {
       reader.fail(crotch["frame"], "crotch.frame", "must be a frame on the body's midline (body, waist, ...)");
     }
     g.crotch = reader.vector<3>(reader.require(crotch, "point", "crotch"), "crotch.point");
+    auto radius = [&](const char* key, Eigen::Vector2d& out) {
+      if (!crotch[key]) return;
+      const std::string path = std::string("crotch.") + key;
+      out = reader.vector<2>(crotch[key], path);
+      for (int i = 0; i < 2; ++i) {
+        if (!(out[i] > 0.0)) reader.fail(crotch[key][i], path + "[" + std::to_string(i) + "]", "must be > 0, got " + crotch[key][i].Scalar());
+      }
+    };
+    radius("radius", g.crotch_radius);
+    g.crotch_leg_radius = g.crotch_radius;
+    radius("leg_radius", g.crotch_leg_radius);
   } else if (document["crotch"]) {
     reader.fail(document["crotch"], "crotch", "only pants have a crotch");
   }

@@ -8,6 +8,10 @@ namespace {
 
 // (u, v) of edge parameter t, and the sign/axis of the derivative pointing out of the patch.
 void edgePoint(PatchEdge edge, double t, double& u, double& v, bool& along_u, double& outward) {
+  u = t;
+  v = 0.0;
+  along_u = false;
+  outward = -1.0;
   switch (edge) {
     case PatchEdge::kV0: u = t; v = 0.0; along_u = false; outward = -1.0; break;
     case PatchEdge::kV1: u = t; v = 1.0; along_u = false; outward = 1.0; break;

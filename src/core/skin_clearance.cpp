@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace dressed_human {
 
@@ -85,6 +87,153 @@ double SkinClearance::clearance(const SkeletonPose& pose, const Eigen::Vector3d&
     for (std::size_t s = 0; s < segments_.size(); ++s) best = std::min(best, clearance(pose, s, p));
   } else {
     for (std::size_t s : segments) best = std::min(best, clearance(pose, s, p));
+  }
+  return best;
+}
+
+namespace {
+
+double boxDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  const Eigen::Vector3d d = (lo - p).cwiseMax(p - hi).cwiseMax(Eigen::Vector3d::Zero());
+  return d.norm();
+}
+
+// Closest point to p on triangle abc (Ericson, Real-Time Collision Detection 5.1.5).
+Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                  const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denominator = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+}  // namespace
+
+SkinSurfaceClearance::SkinSurfaceClearance(const Skeleton& skeleton, const BodyDescription& body, int grid)
+    : skin_(skeleton, body), grid_(grid) {
+  if (grid_ < 1) throw std::invalid_argument("SkinSurfaceClearance: grid must be >= 1");
+  part_patches_.resize(skin_.partCount());
+  for (std::size_t p = 0; p < skin_.patches().size(); ++p) {
+    const int s = skin_.patchSegment(p);
+    part_patches_.at(skin_.segments().at(static_cast<std::size_t>(s)).part).push_back(p);
+  }
+  boxes_.resize(skin_.patches().size());
+  triangles_.resize(skin_.patches().size() * static_cast<std::size_t>(2 * grid_ * grid_));
+  skin_.poseAtRest();
+  pose(SkeletonPose());
+}
+
+void SkinSurfaceClearance::pose(const SkeletonPose& pose) {
+  if (!pose.bone_in_world.empty()) skin_.pose(pose);
+  const int n = grid_;
+  std::vector<Eigen::Vector3d> grid(static_cast<std::size_t>((n + 1) * (n + 1)));
+  std::size_t t = 0;
+  for (std::size_t p = 0; p < skin_.patches().size(); ++p) {
+    const BezierPatch& patch = skin_.patches()[p];
+    PatchBox& box = boxes_[p];
+    box.lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    box.hi = -box.lo;
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; j <= n; ++j) {
+        const Eigen::Vector3d x = patch.position(static_cast<double>(i) / n, static_cast<double>(j) / n);
+        grid[static_cast<std::size_t>(i * (n + 1) + j)] = x;
+        box.lo = box.lo.cwiseMin(x);
+        box.hi = box.hi.cwiseMax(x);
+      }
+    }
+    box.first = t;
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        const Eigen::Vector3d& q00 = grid[static_cast<std::size_t>(i * (n + 1) + j)];
+        const Eigen::Vector3d& q10 = grid[static_cast<std::size_t>((i + 1) * (n + 1) + j)];
+        const Eigen::Vector3d& q01 = grid[static_cast<std::size_t>(i * (n + 1) + j + 1)];
+        const Eigen::Vector3d& q11 = grid[static_cast<std::size_t>((i + 1) * (n + 1) + j + 1)];
+        for (int half = 0; half < 2; ++half) {
+          Triangle& tri = triangles_[t++];
+          // u then v: (q10 - q00) x (q01 - q00) is along F_u x F_v, outward on the skin.
+          if (half == 0) { tri.a = q00; tri.b = q10; tri.c = q11; }
+          else { tri.a = q00; tri.b = q11; tri.c = q01; }
+          const Eigen::Vector3d normal = (tri.b - tri.a).cross(tri.c - tri.a);
+          const double length = normal.norm();
+          tri.normal = length > 1e-18 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();
+        }
+      }
+    }
+    box.count = t - box.first;
+  }
+}
+
+double SkinSurfaceClearance::clearance(const Eigen::Vector3d& p) const {
+  std::size_t part = 0;
+  return clearance(p, part);
+}
+
+double SkinSurfaceClearance::clearance(const Eigen::Vector3d& p, std::size_t& part) const {
+  return clearance(p, {}, part);
+}
+
+std::vector<std::size_t> SkinSurfaceClearance::partsOf(const std::vector<std::string>& segment_names) const {
+  std::vector<std::size_t> out;
+  for (const SkinSegment& segment : skin_.segments()) {
+    if (std::find(segment_names.begin(), segment_names.end(), segment.name) == segment_names.end()) continue;
+    if (std::find(out.begin(), out.end(), segment.part) == out.end()) out.push_back(segment.part);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+double SkinSurfaceClearance::clearance(const Eigen::Vector3d& p, const std::vector<std::size_t>& parts,
+                                       std::size_t& part) const {
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t k = 0; k < part_patches_.size(); ++k) {
+    if (!parts.empty() && std::find(parts.begin(), parts.end(), k) == parts.end()) continue;
+    // A part whose patch boxes are all farther than `best` cannot contain p nor beat best.
+    double lower = std::numeric_limits<double>::infinity();
+    order.clear();
+    for (std::size_t patch : part_patches_[k]) {
+      const double d = boxDistance(p, boxes_[patch].lo, boxes_[patch].hi);
+      lower = std::min(lower, d);
+      order.emplace_back(d, patch);
+    }
+    if (lower > best) continue;
+    std::sort(order.begin(), order.end());
+    double nearest = std::numeric_limits<double>::infinity();
+    double sign_weight = 0.0;
+    for (const auto& [box_distance, patch] : order) {
+      if (box_distance > nearest) break;
+      const PatchBox& box = boxes_[patch];
+      for (std::size_t t = box.first; t < box.first + box.count; ++t) {
+        const Triangle& tri = triangles_[t];
+        if (tri.normal.isZero()) continue;
+        const Eigen::Vector3d q = closestOnTriangle(p, tri.a, tri.b, tri.c);
+        const double d = (p - q).norm();
+        const double side = (p - q).dot(tri.normal);
+        // Ties (q on an edge or vertex shared by several triangles): keep the clearest side.
+        if (d < nearest - 1e-12 || (d <= nearest + 1e-12 && std::abs(side) > std::abs(sign_weight))) {
+          nearest = std::min(nearest, d);
+          sign_weight = side;
+        }
+      }
+    }
+    const double signed_distance = sign_weight < 0.0 ? -nearest : nearest;
+    if (signed_distance < best) {
+      best = signed_distance;
+      part = k;
+    }
   }
   return best;
 }

@@ -5,18 +5,16 @@
 //               [--length 0.2|knee] [--time 0.3 | --rest] [--view front|side|three_quarter|back]
 //               [--size 400x800] [--no-body] --out out.png
 //
-// The body is drawn from the body description's sections (config/bodies/default.yaml), one
-// generalized cylinder per segment posed by its bone frame (a picture of the skin's
-// cross-section model; joints are not welded here).
+// The body is the real skin (skin.h: config/bodies/default.yaml on urdf/human.urdf), posed by
+// Skin::pose and tessellated like src/tools/render_skin.cpp; --no-body leaves it out.
 #include "dressed_human/core/body_description.h"
 #include "dressed_human/core/forward_kinematics.h"
 #include "dressed_human/core/garment.h"
 #include "dressed_human/core/garment_file.h"
-#include "dressed_human/core/generalized_cylinder.h"
 #include "dressed_human/core/mesh_rasterizer.h"
 #include "dressed_human/core/motion_evaluator.h"
 #include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/skin_clearance.h"
+#include "dressed_human/core/skin.h"
 #include "dressed_human/core/tessellation.h"
 
 #include <cmath>
@@ -36,34 +34,13 @@ void usage() {
                "                   [--source-dir DIR] --out FILE.png\n";
 }
 
-// The body as posed generalized cylinders from the clearance model's profiles.
-void drawBody(const SkinClearance& model, const SkeletonPose& pose, MeshRasterizer& raster, const Eigen::Vector3d& light) {
+// The posed skin, tessellated uniformly at `level`.
+void drawBody(Skin& skin, const SkeletonPose& pose, MeshRasterizer& raster, const Eigen::Vector3d& light) {
   Tessellator tessellator;
-  RasterMaterial skin;
-  skin.colour = Eigen::Vector3d(0.93, 0.76, 0.64);
-  for (std::size_t s = 0; s < model.segmentCount(); ++s) {
-    const SkinClearance::Profile& p = model.profile(s);
-    std::vector<CylinderRing> rings;
-    for (std::size_t k = 0; k < p.sections.size(); ++k) {
-      const Eigen::Vector3d& a = p.sections[k];
-      rings.push_back({a.x(), a.y(), a.z()});
-      if (k + 1 == p.sections.size()) break;
-      const Eigen::Vector3d& b = p.sections[k + 1];
-      for (int m = 1; m <= 2; ++m) {
-        const Eigen::Vector3d c = a + (b - a) * (m / 3.0);
-        rings.push_back({c.x(), c.y(), c.z()});
-      }
-    }
-    PatchSurface surface = makeGeneralizedCylinder(rings, p.proximal_cap, p.distal_cap);
-    const RigidTransform& frame = p.bone < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(p.bone)];
-    std::vector<BezierPatch> world;
-    for (const BezierPatch& patch : surface.patches) {
-      BezierPatch::ControlPoints points = patch.controlPoints();
-      for (Eigen::Vector3d& q : points) q = frame.rotation * q + frame.translation;
-      world.emplace_back(points);
-    }
-    raster.draw(tessellator.tessellateUniform(world, surface.topology, 6), skin, light);
-  }
+  RasterMaterial material;
+  material.colour = Eigen::Vector3d(0.93, 0.76, 0.64);
+  skin.pose(pose);
+  raster.draw(tessellator.tessellateUniform(skin.patches(), skin.topology(), 8), material, light);
 }
 
 }  // namespace
@@ -121,7 +98,10 @@ int main(int argc, char** argv) {
     raster.clear(Eigen::Vector3d(1.0, 1.0, 1.0));
     const Eigen::Vector3d light = direction + Eigen::Vector3d(0.3, -0.4, 0.8);
 
-    if (body) drawBody(SkinClearance(skeleton, description, description.shape), pose, raster, light);
+    if (body) {
+      Skin skin(skeleton, description);
+      drawBody(skin, pose, raster, light);
+    }
     Tessellator tessellator;
     for (const std::string& file : garment_files) {
       GarmentDescription g = loadGarmentFile(file, skeleton);

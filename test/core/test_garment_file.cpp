@@ -70,6 +70,17 @@ TEST(GarmentFile, ErrorsNameFileLineColumnAndKey) {
   EXPECT_NE(errorOf(replaced("  - {frame: body, centre: [0.0, 0.0, -0.07], radius: [0.125, 0.18]}\n", "")).find("rows: expected 3 rings, got 2"), std::string::npos);
   EXPECT_NE(errorOf(replaced("legs:", "crotch: {frame: body, point: [0, 0, 0]}\nlegs:")).find("crotch: only pants have a crotch"), std::string::npos);
   EXPECT_NE(errorOf("rows: [").find("bad.yaml:1:"), std::string::npos);
+  // Pants: the crotch's twist ellipses (garment.h).
+  {
+    std::string pants = replaced("type: skirt", "type: pants");
+    pants += "crotch: {frame: body, point: [0, 0, -0.2], radius: [0.17, 0.01], leg_radius: [0.3, -0.01]}\n";
+    EXPECT_NE(errorOf(pants).find("crotch.leg_radius[1]: must be > 0, got -0.01"), std::string::npos) << errorOf(pants);
+    const GarmentDescription ok = parseGarmentYaml(replaced("type: skirt", "type: pants") +
+                                                   "crotch: {frame: body, point: [0, 0, -0.2], radius: [0.17, 0.02]}\n",
+                                                   skeleton());
+    EXPECT_EQ(ok.crotch_radius, Eigen::Vector2d(0.17, 0.02));
+    EXPECT_EQ(ok.crotch_leg_radius, ok.crotch_radius);  // defaults to radius
+  }
   EXPECT_EQ(errorOf(""), "bad.yaml: the garment file is empty");
   EXPECT_THROW(loadGarmentFile("/nonexistent/skirt.yaml", skeleton()), GarmentError);
 }

@@ -10,11 +10,48 @@
 //   skirt      hips row + leg row, 2 x 4 = 8; the leg row's hem follows Eq. 8' (thigh/shank)
 //   pants      hips row (4) + two leg tubes of 2 patches (front, back): the leg row's left and
 //              right patches are not joined; each leg's front joins its own back at the inseam.
-//              The eight patches meet at the crotch; C1 there forces the eight control points
-//              next to it onto it (kCollapsed): the only non-midpoint continuity points.
+//              The eight patches meet at the crotch C (see "The crotch" below).
 //   one_piece  bodice 2 rows + skirt 2 rows (4 x 4 = 16) in one lattice, so the waist row is a
 //              boundary like any other: C1 by the same midpoint rule; optional sleeves (+4)
-// Lower (leg) rows sit at normalized lengths f1 c, f2 c and c (legs.rows, default 1/3, 2/3) on Eq. 8'.
+// Lower (leg) rows sit at normalized lengths f1 c, f2 c and c (legs.rows, default 1/3, 2/3) on
+// Eq. 8'. Pants only: a row below the knee (c > c_k) rides the shank alone, at the knee ring
+// carried into the shank's rest frame blended toward the long ring by A_j: Eq. 8' keeps P^i's
+// offset from the bone axis in the thigh frame, which swings a narrow trouser leg off the shank
+// when the knee bends (a wide skirt does not mind, and keeps Eq. 8').
+//
+// The crotch. The pants' hips ring must split into the two tubes' top rings, so its front and
+// back centre lines end in one point C, where 8 patches meet (4 hips, 4 legs) and 8 boundaries
+// start: front seam, back seam, two inseams, four rims. Call E_0..E_7 the control points next
+// to C on those edges in order around C (front seam, front-left rim, left inseam, back-left rim,
+// back seam, ...). The midpoint rule at C would need C = (E_{k-1} + E_{k+1}) / 2 for every k;
+// with 8 edges that forces E_{k+4} = E_k (the back seam leaving C along the front seam, each
+// rim along the opposite leg's rim: the tangent plane covered twice), and then the 8 twist
+// points diagonal to C to be point reflections of one another through C, i.e. all of them at
+// C. That collapse (the previous construction) dragged the surface within ~15 cm of C onto the
+// midline, through the tops of the thighs (clearance -6 to -7 cm). C1 at a valence-8 vertex of
+// bicubic patches is not worth that, so the construction here gives it up at that one vertex:
+//   - C is a shape point (crotch.point, in crotch.frame, on the midline between the thighs);
+//   - the 8 twist points T (one per patch, diagonal to C) are kTangentProjection points: a
+//     shape point on the ellipse crotch.radius (hips patches) / crotch.leg_radius (leg
+//     patches) around C in the crotch frame, at the sector angle 22.5 + 45 k degrees (x front,
+//     y left; the sector of patch k lies between edges k and k+1), projected onto the plane
+//     through C normal to the crotch frame's z. The sources ride the crotch frame: riding the
+//     thighs follows the legs better, but hip rotation then reorders them around C in some
+//     walk poses (a fold: measured). The projection keeps G1 even if a source is edited out of
+//     the plane;
+//   - every other control point, including the E_k (midpoints of the two T beside them), is
+//     made exactly as everywhere else.
+// What holds: every internal boundary not ending at C is C1 by the midpoint rule (measured,
+// test_garment_continuity). The 8 boundaries ending at C are C0; the midpoint rule holds at
+// their points 1, 2, 3, so their cross-boundary derivative mismatch is exactly
+// 3 (1 - t)^3 |2 C - E_{k-1} - E_{k+1}| (t = 0 at C): largest at C, zero at the far end.
+// At C itself the surface is G1: C and all E_k (midpoints of coplanar T) lie in the crotch
+// frame's xy plane in every pose (projected onto it), so all 8 patches share that tangent
+// plane there, with one orientation (the sectors go once around C): a saddle, seams rising to
+// the front and back, inseams falling to the legs. C, the 8 sources and the 8 T carry piece
+// "crotch"; crotchPoint() names C. Known limit (test_garment_clearance): the crotch and leg
+// patches around it ride the pelvis and thighs rigidly, so in some walk poses the thighs
+// reach through them (see the clearance test's output for the numbers).
 //
 // Body shape (Eq. 5, a, b, c per bone) is applied to every shape point in its bone frame, and
 // the skirt's d_i, d_j (hence c_k) are the shaped bone lengths, so a changed body carries
@@ -26,6 +63,7 @@
 #include "dressed_human/core/garment_description.h"
 #include "dressed_human/core/skeleton.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace dressed_human {
@@ -46,12 +84,16 @@ class Garment {
   // The legs part's c_k and the c actually used (after `length: knee`); 0 for a jacket.
   double kneeLength() const { return knee_length_; }
   double length() const { return length_; }
+  // Pants: the crotch point C (a shape point; the one vertex where the midpoint rule cannot
+  // hold, see above); -1 for other types.
+  std::int64_t crotchPoint() const { return crotch_; }
 
  private:
   GarmentDescription description_;
   GarmentControlNet net_;
   double knee_length_ = 0.0;
   double length_ = 0.0;
+  std::int64_t crotch_ = -1;
 };
 
 }  // namespace dressed_human

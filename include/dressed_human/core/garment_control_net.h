@@ -7,10 +7,14 @@
 //                      boundary (the seed's Fig. 3 (b)); this makes the boundary C1;
 //   kCornerMidpoint    where two boundaries cross: the midpoint of two boundary midpoints
 //                      (the seed's Fig. 3 (c)), so both boundaries stay C1 through the corner;
-//   kCollapsed         a continuity point that coincides with one shape point: the eight
-//                      points around the pants' crotch, where eight patches meet (see garment.h).
+//   kTangentProjection a shape point (sources[0]) projected onto the plane through a point
+//                      (sources[1]) normal to the z axis of frame `plane_frame`: the pants'
+//                      8 twist points around the crotch, which makes the crotch G1 (garment.h).
 // Derived points are recomputed in world space from their sources in every pose, so every
-// internal boundary is C1 by construction, in every pose and for any shape points.
+// internal boundary between regular (4-patch) vertices is C1 by construction, in every pose
+// and for any shape points. The one exception is the pants' crotch, where 8 patches meet: there
+// the lattice's corner point is a shape point (C) and its 8 diagonal neighbours are tangent
+// projections (piece "crotch"); garment.h explains why and what continuity holds there.
 #pragma once
 
 #include "dressed_human/core/bezier_patch.h"
@@ -31,7 +35,7 @@ constexpr int kRootFrame = -1;
 // "Rides on no single bone": a derived point whose sources ride on different bones.
 constexpr int kSeveralBones = -2;
 
-enum class ControlPointKind : std::uint8_t { kShape, kBoundaryMidpoint, kCornerMidpoint, kCollapsed };
+enum class ControlPointKind : std::uint8_t { kShape, kBoundaryMidpoint, kCornerMidpoint, kTangentProjection };
 const char* controlPointKindName(ControlPointKind kind);
 
 // Where a shape point sits: local in frame `bone` (Eq. 5 already applied), plus, for a skirt
@@ -47,7 +51,8 @@ struct ShapeAttachment {
 struct ControlPointRule {
   ControlPointKind kind = ControlPointKind::kShape;
   ShapeAttachment attachment;               // kShape only
-  std::array<std::uint32_t, 2> sources{};   // midpoints: the two averaged; kCollapsed: [0]
+  std::array<std::uint32_t, 2> sources{};   // midpoints: the two averaged; projection: point, plane point
+  int plane_frame = kRootFrame;             // kTangentProjection: the plane's normal is this frame's z
   std::string piece;                        // "torso", "l_sleeve", "skirt", "l_leg", ...
 };
 
@@ -58,7 +63,9 @@ class GarmentControlNet {
   // Building. Sources must already exist; shape points come before anything derived from them.
   std::uint32_t addShape(const ShapeAttachment& attachment, const std::string& piece);
   std::uint32_t addMidpoint(ControlPointKind kind, std::uint32_t a, std::uint32_t b, const std::string& piece);
-  std::uint32_t addCollapsed(std::uint32_t shape_point, const std::string& piece);
+  // `point` projected onto the plane through `plane_point` normal to frame plane_frame's z axis.
+  std::uint32_t addTangentProjection(std::uint32_t point, std::uint32_t plane_point, int plane_frame,
+                                     const std::string& piece);
   // Adds a patch; patches whose edges use the same four points (either order) get linked.
   std::uint32_t addPatch(const PatchIndices& indices, const std::string& piece);
   // Links the patches (call once after the last addPatch; pose() calls it if needed).

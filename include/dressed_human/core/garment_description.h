@@ -50,6 +50,12 @@ struct GarmentDescription {
   GarmentLegs legs;                 // skirt, pants, one_piece
   std::string crotch_frame = "body";                      // pants
   Eigen::Vector3d crotch = Eigen::Vector3d(0, 0, -0.12);  // pants: where the legs part
+  // pants: semi-axes (toward the front, toward the left) of the crotch's twist ring: the eight
+  // shape points around the crotch, in the crotch frame's xy plane (its tangent plane; garment.h).
+  // crotch_radius places the 4 twist points of the hips patches, crotch_leg_radius those of the
+  // 4 leg patches (their sector angles are 22.5 + 45 k degrees either way).
+  Eigen::Vector2d crotch_radius = Eigen::Vector2d(0.17, 0.01);
+  Eigen::Vector2d crotch_leg_radius = Eigen::Vector2d(0.17, 0.01);
 };
 
 // Shape rows each type needs in `rows` (jacket 6, skirt 3, pants 3, one_piece 7).

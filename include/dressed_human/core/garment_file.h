@@ -14,7 +14,9 @@
 //     top:  {frame: l_hip,  centre: [...], radius: [...]}   # P^0 ring
 //     knee: {frame: l_hip,  centre: [...], radius: [...]}   # P^i ring
 //     long: {frame: l_knee, centre: [...], radius: [...]}   # Q^j ring; frame: child of knee's
-//   crotch: {frame: body, point: [0.0, 0.0, -0.12]}       # pants only
+//   crotch: {frame: body, point: [0.0, 0.0, -0.12],       # pants only (garment.h: the crotch)
+//            radius: [0.17, 0.01],                        # optional: twist ring of the hips patches
+//            leg_radius: [0.17, 0.01]}                    # optional: of the leg patches (default: radius)
 //
 // Every error names the file, line and column, and the key path, e.g.
 //   skirt.yaml:7:34: rows[2].radius[1]: must be > 0, got -0.1

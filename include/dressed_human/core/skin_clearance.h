@@ -9,9 +9,11 @@
 #include "dressed_human/core/body_description.h"
 #include "dressed_human/core/forward_kinematics.h"
 #include "dressed_human/core/skeleton.h"
+#include "dressed_human/core/skin.h"
 
 #include <Eigen/Core>
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -46,6 +48,47 @@ class SkinClearance {
 
  private:
   std::vector<Profile> segments_;
+};
+
+// Signed clearance over the REAL posed skin (skin.h): the Skin's bicubic patches, posed by
+// Skin::pose, sampled on a fine uniform grid per patch (default 16 x 16 quads: chord error well
+// under 0.1 mm on the default body) and triangulated. The skin is a union of closed parts
+// (trunk, limbs, clavicles; skin.h), so the clearance of p is min over parts of p's signed
+// distance to that part: the distance to the part's nearest triangle, negative when p is inside
+// it (sign of (p - q) . n at the nearest point q, n the outward normal F_u x F_v of its
+// triangle; exact for a closed mesh away from ties). Positive outside the whole body.
+// Search: per patch an axis-aligned box; parts and patches whose box is farther than the best
+// answer so far are skipped (exact, not an approximation).
+class SkinSurfaceClearance {
+ public:
+  SkinSurfaceClearance(const Skeleton& skeleton, const BodyDescription& body, int grid = 16);
+
+  // Poses the skin (ForwardKinematics output with body.shape) and rebuilds the triangles.
+  void pose(const SkeletonPose& pose);
+  const Skin& skin() const { return skin_; }
+
+  // Signed distance of world point p over the posed skin (metres, positive outside).
+  double clearance(const Eigen::Vector3d& p) const;
+  // The same with the skin part (Skin::segments()[s].part) that decided it.
+  double clearance(const Eigen::Vector3d& p, std::size_t& part) const;
+  // Over the given parts only (all when empty): layering, e.g. a sleeve against the arm.
+  double clearance(const Eigen::Vector3d& p, const std::vector<std::size_t>& parts, std::size_t& part) const;
+  // The parts holding the segments of these bones ("body" for the pelvis segment).
+  std::vector<std::size_t> partsOf(const std::vector<std::string>& segment_names) const;
+
+ private:
+  struct Triangle {
+    Eigen::Vector3d a, b, c, normal;  // normal: unit, outward; zero for a degenerate triangle
+  };
+  struct PatchBox {
+    Eigen::Vector3d lo, hi;
+    std::size_t first = 0, count = 0;  // triangles_
+  };
+  Skin skin_;
+  int grid_;
+  std::vector<std::vector<std::size_t>> part_patches_;
+  std::vector<Triangle> triangles_;
+  std::vector<PatchBox> boxes_;
 };
 
 }  // namespace dressed_human
