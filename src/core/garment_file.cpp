@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include <yaml-cpp/yaml.h>
+#include "dressed_human/core/yaml_reader.h"
 
 namespace dressed_human {
 
@@ -31,52 +31,12 @@ std::size_t garmentRowCount(GarmentType type) {
 
 namespace {
 
-// Errors point at the offending node: "file:line:col: key.path: message".
-class GarmentYamlReader {
+// The project's strict reader (file:line:col, key path) plus what garments need: fixed-size
+// vectors, frame names checked against the skeleton, rings.
+class GarmentYamlReader : public YamlReader<GarmentError> {
  public:
-  GarmentYamlReader(std::string source, const Skeleton& skeleton) : source_(std::move(source)), skeleton_(skeleton) {}
-
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
-    std::ostringstream text;
-    text << source_;
-    const YAML::Mark mark = node.Mark();
-    if (mark.line >= 0) text << ':' << mark.line + 1 << ':' << mark.column + 1;
-    text << ": " << key << ": " << message;
-    throw GarmentError(text.str());
-  }
-
-  void requireMap(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsMap()) fail(node, key, "expected a mapping (key: value pairs), got " + describe(node));
-  }
-
-  void rejectUnknownKeys(const YAML::Node& map, const std::string& key, const std::set<std::string>& allowed) const {
-    for (const auto& entry : map) {
-      const std::string name = entry.first.Scalar();
-      if (allowed.count(name) == 0) {
-        std::string list;
-        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(entry.first, key.empty() ? name : key + "." + name, "unknown key; expected one of: " + list);
-      }
-    }
-  }
-
-  YAML::Node require(const YAML::Node& map, const std::string& name, const std::string& key) const {
-    const YAML::Node child = map[name];
-    if (!child) fail(map, key.empty() ? name : key + "." + name, "missing");
-    return child;
-  }
-
-  double number(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsScalar()) fail(node, key, "expected a number, got " + describe(node));
-    double value = 0.0;
-    try {
-      value = node.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(node, key, "expected a number, got '" + node.Scalar() + "'");
-    }
-    if (!std::isfinite(value)) fail(node, key, "expected a finite number, got '" + node.Scalar() + "'");
-    return value;
-  }
+  GarmentYamlReader(std::string source, const Skeleton& skeleton)
+      : YamlReader<GarmentError>(std::move(source)), skeleton_(skeleton) {}
 
   template <int N>
   Eigen::Matrix<double, N, 1> vector(const YAML::Node& node, const std::string& key) const {
@@ -86,11 +46,6 @@ class GarmentYamlReader {
     Eigen::Matrix<double, N, 1> v;
     for (int i = 0; i < N; ++i) v[i] = number(node[i], key + "[" + std::to_string(i) + "]");
     return v;
-  }
-
-  std::string text(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsScalar()) fail(node, key, "expected a text, got " + describe(node));
-    return node.Scalar();
   }
 
   // A frame name: "body" or a bone. `need`: "" any, "left" an l_ bone with an r_ mirror.
@@ -134,17 +89,6 @@ class GarmentYamlReader {
   const Skeleton& skeleton() const { return skeleton_; }
 
  private:
-  static std::string describe(const YAML::Node& node) {
-    switch (node.Type()) {
-      case YAML::NodeType::Null: return "nothing (null)";
-      case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
-      case YAML::NodeType::Sequence: return "a list";
-      case YAML::NodeType::Map: return "a mapping";
-      default: return "an undefined value";
-    }
-  }
-
-  std::string source_;
   const Skeleton& skeleton_;
 };
 
@@ -152,17 +96,8 @@ class GarmentYamlReader {
 
 GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton& skeleton,
                                     const std::string& source_name) {
-  YAML::Node document;
-  try {
-    document = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& error) {
-    std::ostringstream text;
-    text << source_name << ':' << error.mark.line + 1 << ':' << error.mark.column + 1 << ": not valid YAML: " << error.msg;
-    throw GarmentError(text.str());
-  }
-  if (!document || document.IsNull()) throw GarmentError(source_name + ": the garment file is empty");
   const GarmentYamlReader reader(source_name, skeleton);
-  reader.requireMap(document, "(top level)");
+  const YAML::Node document = reader.load(yaml_text, "the garment file");
   reader.rejectUnknownKeys(document, "", {"name", "type", "colour", "ease", "rows", "sleeve", "legs", "crotch"});
 
   GarmentDescription g;
