@@ -313,9 +313,17 @@ bool DressedHumanDisplay::lookUpBones() {
   }
   bool all_found = true;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
-    const std::string frame = skeleton_->frameName(skeleton_->bone(b).name);
+    // Each bone relative to its parent (bones come parents first), composed here: tf2 then walks
+    // the three links of one joint instead of the whole chain from the fixed frame every time.
+    const Bone& bone = skeleton_->bone(b);
+    const std::string frame = skeleton_->frameName(bone.name);
+    const RigidTransform& parent = bone.parent < 0 ? root_ : bones_[static_cast<std::size_t>(bone.parent)];
+    const std::string parent_frame =
+        bone.parent < 0 ? root : skeleton_->frameName(skeleton_->bone(static_cast<std::size_t>(bone.parent)).name);
     try {
-      bones_[b] = toRigid(buffer->lookupTransform(fixed, frame, stamp).transform);
+      const RigidTransform local = toRigid(buffer->lookupTransform(parent_frame, frame, stamp).transform);
+      bones_[b].translation = parent.translation + parent.rotation * local.translation;
+      bones_[b].rotation = parent.rotation * local.rotation;
       clearError("Frame " + frame);
     } catch (const tf2::TransformException& error) {
       reportError("Frame " + frame, error.what(), true);
