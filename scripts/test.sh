@@ -30,11 +30,12 @@ echo "== core tests under ASan+UBSan"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build_sanitize --output-on-failure -j"$jobs" || status=1
 
-echo "== all tests (core gtests and rostests)"
-ctest --test-dir build --output-on-failure || status=1
-
 echo "== fuzzing the motion-capture parsers (short run; fuzz/run_fuzzers.sh 600 for the long one)"
 fuzz/run_fuzzers.sh "${FUZZ_SECONDS:-20}" "$root/build_fuzz" || status=1
+
+# Last, so that ctest's summary closes the output.
+echo "== all tests (core gtests and rostests)"
+ctest --test-dir build --output-on-failure || status=1
 
 if [ "$status" -ne 0 ]; then
   echo "scripts/test.sh: SOME TESTS FAILED" >&2
