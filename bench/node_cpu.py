@@ -18,7 +18,7 @@ import time
 
 import rosgraph
 
-from ros_processes import ros_environment, start, stop
+from ros_processes import report, ros_environment, start, stop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MOTION = os.path.join(ROOT, "config", "motions", "walk.yaml")
@@ -100,11 +100,7 @@ def main():
     lines.append("")
     lines.append("Median of %d windows of %g s, %% of one core, on %s (%d cores); `bench/node_cpu.py`."
                  % (args.windows, args.seconds, cpu, os.cpu_count()))
-    table = "\n".join(lines)
-    print(table)
-    if args.markdown:
-        with open(args.markdown, "w") as f:
-            f.write(table + "\n")
+    report("\n".join(lines), args.markdown)
 
 
 if __name__ == "__main__":

@@ -23,3 +23,11 @@ def stop(process):
         process.wait(timeout=15)
     except (ProcessLookupError, subprocess.TimeoutExpired):
         os.killpg(process.pid, signal.SIGKILL)
+
+
+def report(table, markdown_path):
+    """Prints a Markdown table and, if a path is given, writes it there too."""
+    print(table)
+    if markdown_path:
+        with open(markdown_path, "w") as f:
+            f.write(table + "\n")

@@ -15,7 +15,7 @@ import subprocess
 import sys
 import time
 
-from ros_processes import ros_environment, start, stop
+from ros_processes import report, ros_environment, start, stop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEVEL = os.path.join(ROOT, "build", "devel")
@@ -80,11 +80,7 @@ def main():
     lines.append("Empty rviz (grid only): %.1f fps, %.0f %% CPU, %.3f ms per frame. %g s per point; rviz CPU in %% of "
                  "one core, Mesa llvmpipe (software rendering) on %d cores; `bench/rviz_scaling.py`."
                  % (baseline[0], baseline[1], baseline[2], args.seconds, os.cpu_count()))
-    table = "\n".join(lines)
-    print(table)
-    if args.markdown:
-        with open(args.markdown, "w") as f:
-            f.write(table + "\n")
+    report("\n".join(lines), args.markdown)
 
 
 if __name__ == "__main__":

@@ -18,18 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace {
-std::atomic<bool> counting_allocations{false};
-std::atomic<long> allocation_count{0};
-}  // namespace
-
-__attribute__((noinline)) void* operator new(std::size_t size) {
-  if (counting_allocations.load(std::memory_order_relaxed)) ++allocation_count;
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-__attribute__((noinline)) void operator delete(void* memory) noexcept { std::free(memory); }
-__attribute__((noinline)) void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+#include "allocation_counter.h"
 
 namespace dressed_human {
 namespace {
