@@ -3,7 +3,12 @@
 // rviz's 30 Hz for a while. Prints one line: class, N, achieved fps, process CPU (% of one core)
 // and CPU per frame. bench/rviz_scaling.py runs it for DressedHuman and RobotModel side by side.
 //
-// Usage: rviz_display_scaling <display class> <count> <seconds>
+// Usage: rviz_display_scaling <display class> <count> <seconds> [options]
+//   --set <property>=<value>  set a property of every display (repeatable), e.g. Relief=Flat
+//   --distance <m>            orbit view distance (default 14)
+//   --focal <x;y;z>           orbit view focal point (default 4;4.5;0.9)
+//   --view <property>=<value> set a property of the orbit view (repeatable), e.g. Target Frame=body_0
+//   --screenshot <path>       save the render window after the run
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -11,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include <OgreRenderWindow.h>
 #include <QApplication>
 #include <ros/ros.h>
 #include <rviz/display.h>
@@ -21,6 +27,14 @@
 #include <rviz/visualization_manager.h>
 
 namespace {
+
+// The child property called `name`, or nullptr (subProp() returns a dummy for a missing one).
+rviz::Property* childNamed(rviz::Property* parent, const QString& name) {
+  for (int c = 0; c < parent->numChildren(); ++c) {
+    if (parent->childAt(c)->getName() == name) return parent->childAt(c);
+  }
+  return nullptr;
+}
 
 double processCpuSeconds() {
   timespec t{};
@@ -33,13 +47,40 @@ double processCpuSeconds() {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "rviz_display_scaling", ros::init_options::AnonymousName);
   QApplication application(argc, argv);
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: rviz_display_scaling <display class> <count> <seconds>\n");
+  const char* usage =
+      "usage: rviz_display_scaling <display class> <count> <seconds> [--set property=value]... [--distance m] "
+      "[--focal x;y;z] [--view property=value]... [--screenshot path]\n";
+  if (argc < 4) {
+    std::fprintf(stderr, "%s", usage);
     return 2;
   }
   const QString display_class = argv[1];
   const int count = std::stoi(argv[2]);
   const double seconds = std::stod(argv[3]);
+  std::vector<std::pair<QString, QString>> settings, view_settings;
+  QString distance = "14.0", focal = "4;4.5;0.9", screenshot;
+  for (int i = 4; i < argc; ++i) {
+    const std::string option = argv[i];
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "option %s needs a value\n%s", option.c_str(), usage);
+      return 2;
+    }
+    const QString value = argv[++i];
+    if (option == "--set" && value.contains('=')) {
+      settings.emplace_back(value.section('=', 0, 0), value.section('=', 1));
+    } else if (option == "--view" && value.contains('=')) {
+      view_settings.emplace_back(value.section('=', 0, 0), value.section('=', 1));
+    } else if (option == "--distance") {
+      distance = value;
+    } else if (option == "--focal") {
+      focal = value;
+    } else if (option == "--screenshot") {
+      screenshot = value;
+    } else {
+      std::fprintf(stderr, "unknown option or bad value: %s %s\n%s", option.c_str(), argv[i], usage);
+      return 2;
+    }
+  }
 
   rviz::RenderPanel panel;
   panel.resize(1000, 700);
@@ -57,11 +98,27 @@ int main(int argc, char** argv) {
       return 1;
     }
     display->subProp("Robot Description")->setValue(QString("human_%1/robot_description").arg(i));
+    for (const auto& setting : settings) {
+      rviz::Property* property = childNamed(display, setting.first);
+      if (property == nullptr) {
+        std::fprintf(stderr, "display %s has no property '%s'\n", argv[1], setting.first.toStdString().c_str());
+        return 2;
+      }
+      property->setValue(setting.second);
+    }
   }
   // A view that keeps all humans (walking along x, 1 m apart in y) on screen.
   rviz::ViewController* view = manager.getViewManager()->getCurrent();
-  view->subProp("Distance")->setValue(14.0);
-  view->subProp("Focal Point")->setValue("4;4.5;0.9");
+  view->subProp("Distance")->setValue(distance.toDouble());
+  view->subProp("Focal Point")->setValue(focal);
+  for (const auto& setting : view_settings) {
+    rviz::Property* property = childNamed(view, setting.first);
+    if (property == nullptr) {
+      std::fprintf(stderr, "the view has no property '%s'\n", setting.first.toStdString().c_str());
+      return 2;
+    }
+    property->setValue(setting.second);
+  }
 
   const auto frame = [&] {
     QApplication::processEvents();
@@ -99,6 +156,7 @@ int main(int argc, char** argv) {
       ++measured;
     }
   }
+  if (!screenshot.isEmpty()) panel.getRenderWindow()->writeContentsToFile(screenshot.toStdString());
   std::printf("class=%s count=%d fps=%.2f cpu_percent=%.1f cpu_ms_per_frame=%.3f display_ms=%.3f measured=%d\n",
               argv[1], count, frames / wall, 100.0 * cpu / wall, 1000.0 * cpu / frames,
               measured ? display_ms / measured : -1.0, measured);

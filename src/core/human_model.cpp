@@ -81,6 +81,32 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     garments_[g].pose(pose_);
     parts_[g + 1].mesh = &tessellate(*garment_tessellators_[g], garments_[g].patches(), garments_[g].topology(), lod);
   }
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    const Displacement& displacement = displacements_[static_cast<std::size_t>(parts_[p].relief)];
+    if (!displacement.map) continue;
+    displaceMesh(*parts_[p].mesh, displacement.settings, displaced_meshes_[p]);
+    parts_[p].mesh = &displaced_meshes_[p];
+  }
+}
+
+void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling,
+                                 float height_to_tile, float amplitude) {
+  Displacement displacement{std::move(map), ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
+  displacement.settings.map = displacement.map.get();
+  if (displacement.map) {
+    TriangleMesh probe;  // validates the settings now, with the caller, not at the next update
+    displaceMesh(TriangleMesh(), displacement.settings, probe);
+  }
+  displacements_[static_cast<std::size_t>(kind)] = std::move(displacement);
+  displaced_meshes_.resize(parts_.size());
+}
+
+const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
+  return part == 0 ? skin_.patches() : garments_.at(part - 1).patches();
+}
+
+const std::vector<int>& HumanModel::partLevels(std::size_t part) const {
+  return part == 0 ? skin_tessellator_.levels() : garment_tessellators_.at(part - 1)->levels();
 }
 
 std::size_t HumanModel::triangleCount() const {

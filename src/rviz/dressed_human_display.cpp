@@ -17,21 +17,33 @@
 #include <rviz/properties/float_property.h>
 #include <rviz/properties/int_property.h>
 #include <rviz/properties/string_property.h>
+#include <rviz/properties/vector_property.h>
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
 #include <tf2_ros/buffer.h>
 
-#include "dressed_human/core/skin_relief.h"
 #include "dressed_human/core/wrinkle_map.h"
 #include "human_visual.h"
 
 namespace dressed_human {
 namespace {
 
-enum ReliefMode { kBumpMapping = 0, kFlat = 1 };
+enum ReliefMode { kBumpMapping = 0, kFlat = 1, kDisplacedGeometry = 2 };
 enum LodMode { kAutomatic = 0, kFixed = 1 };
 constexpr int kSkinMapSize = 512;
 constexpr double kStaleSeconds = 1.0;
+constexpr double kPi = 3.14159265358979323846;
+// The Body Shape groups offered as properties (bodyShapeGroups() names), with their labels.
+const std::vector<std::pair<std::string, std::string>> kShapeGroups{
+    {"all", "All Bones"}, {"trunk", "Trunk"}, {"head_neck", "Head and Neck"}, {"arms", "Arms"}, {"legs", "Legs"}};
+
+// The skin-relief fields the properties set: a change in any of them needs a new map.
+bool sameSkinParameters(const SkinReliefParameters& a, const SkinReliefParameters& b) {
+  return a.levels == b.levels && a.cell_size == b.cell_size && a.seed == b.seed &&
+         a.direction_angle == b.direction_angle && a.direction_stretch == b.direction_stretch &&
+         a.wobble == b.wobble && a.jitter == b.jitter && a.roundness == b.roundness &&
+         a.profile.first_inner == b.profile.first_inner && a.profile.second_inner == b.profile.second_inner;
+}
 
 RigidTransform toRigid(const geometry_msgs::Transform& t) {
   RigidTransform rigid;
@@ -89,10 +101,18 @@ DressedHumanDisplay::DressedHumanDisplay() {
   lower_colour_property_ = new rviz::ColorProperty("Lower Garment Colour", QColor(184, 56, 77), "Skirt or pants.",
                                                    file_colours_property_, SLOT(rebuildModel()), this);
   relief_mode_property_ = new rviz::EnumProperty(
-      "Relief", "Bump mapping", "Bump mapping: per-pixel normals from the relief maps. Flat: geometric normals only.",
+      "Relief", "Bump mapping",
+      "Bump mapping: per-pixel normals from the relief maps. Displaced geometry: the relief heights move the "
+      "vertices of a finer mesh (the reference bump mapping approximates; costs far more). Flat: no relief.",
       this, SLOT(updateAppearance()));
   relief_mode_property_->addOption("Bump mapping", kBumpMapping);
   relief_mode_property_->addOption("Flat", kFlat);
+  relief_mode_property_->addOption("Displaced geometry", kDisplacedGeometry);
+  displacement_level_property_ = new rviz::IntProperty(
+      "Displacement Level", 24, "Displaced geometry: each patch is cut n x n, whatever the level of detail (4-32).",
+      relief_mode_property_, SLOT(updateAppearance()), this);
+  displacement_level_property_->setMin(4);
+  displacement_level_property_->setMax(Tessellator::kMaxLevel);
   relief_strength_property_ = new rviz::FloatProperty("Relief Strength", 1.0, "Scales the relief's normal tilt.",
                                                       this, SLOT(updateAppearance()));
   relief_strength_property_->setMin(0.0);
@@ -115,7 +135,52 @@ DressedHumanDisplay::DressedHumanDisplay() {
   skin_seed_property_ = new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", this,
                                               SLOT(regenerateSkinRelief()));
   skin_seed_property_->setMin(0);
-  lod_mode_property_ = new rviz::EnumProperty(
+  const SkinReliefParameters skin_defaults;
+  skin_direction_property_ = new rviz::FloatProperty(
+      "Skin Direction", 0.0, "Degrees from the patch's u axis (along the limb) that the cells are stretched along.",
+      this, SLOT(regenerateSkinRelief()));
+  skin_direction_property_->setMin(-180.0);
+  skin_direction_property_->setMax(180.0);
+  skin_stretch_property_ = new rviz::FloatProperty(
+      "Skin Stretch", static_cast<float>(skin_defaults.direction_stretch),
+      "Directionality: cell elongation along Skin Direction (1 = none, up to 4).", this, SLOT(regenerateSkinRelief()));
+  skin_stretch_property_->setMin(1.0);
+  skin_stretch_property_->setMax(4.0);
+  skin_wobble_property_ = new rviz::FloatProperty(
+      "Skin Wobble", static_cast<float>(skin_defaults.wobble),
+      "Midpoint displacement of the cell walls, as a fraction of the wall length (0-0.3).", this,
+      SLOT(regenerateSkinRelief()));
+  skin_wobble_property_->setMin(0.0);
+  skin_wobble_property_->setMax(0.3);
+  skin_jitter_property_ = new rviz::FloatProperty(
+      "Skin Jitter", static_cast<float>(skin_defaults.jitter),
+      "Random seed displacement, as a fraction of the cell spacing (0 = hexagons, up to 0.5).", this,
+      SLOT(regenerateSkinRelief()));
+  skin_jitter_property_->setMin(0.0);
+  skin_jitter_property_->setMax(0.5);
+  skin_slope_property_ = new rviz::FloatProperty(
+      "Skin Slope", 3.0f,  // SkinReliefParameters' default profile
+      "Steepness of the cell cross-section at its wall (0.5-10).", this, SLOT(regenerateSkinRelief()));
+  skin_slope_property_->setMin(0.5);
+  skin_slope_property_->setMax(10.0);
+  skin_roundness_property_ = new rviz::FloatProperty(
+      "Skin Roundness", static_cast<float>(skin_defaults.roundness), "0: polygonal cell contours, 1: round.", this,
+      SLOT(regenerateSkinRelief()));
+  skin_roundness_property_->setMin(0.0);
+  skin_roundness_property_->setMax(1.0);
+  body_shape_category_ = new rviz::Property(
+      "Body Shape", QVariant(), "Eq. 5 scale factors (a, b, c) = (x, y thickness, z length along the bone), "
+      "multiplying the body file's shape; lengths move the joints, so the TF skeleton's proportions change too.",
+      this);
+  for (const auto& group : kShapeGroups) {
+    auto* property = new rviz::VectorProperty(QString::fromStdString(group.second), Ogre::Vector3(1.0f, 1.0f, 1.0f),
+                                              "(a, b, c) for this group, each in [0.2, 5].", body_shape_category_,
+                                              SLOT(updateBodyShape()), this);
+    shape_properties_.emplace_back(group.first, property);
+  }
+  show_skeleton_property_ = new rviz::BoolProperty("Show Skeleton", false,
+                                                   "Draw the bones as lines, visible through skin and garments.",
+                                                   this, SLOT(updateAppearance()));  lod_mode_property_ = new rviz::EnumProperty(
       "Level of Detail", "Automatic",
       "Automatic: tessellation follows the human's size on screen. Fixed: the level below.", this);
   lod_mode_property_->addOption("Automatic", kAutomatic);
@@ -147,14 +212,14 @@ void DressedHumanDisplay::onInitialize() {
   regenerateSkinRelief();
   // The garments' wrinkle texture: X-pattern buckling at mild compression (SPEC §4), once; a few
   // large cells per patch, as cloth buckles at the scale of a hand, not of a knit.
-  wrinkle_relief_ = std::async(std::launch::async, [] {
-    WrinkleMapSpec spec;
-    spec.chain = "X";
-    spec.cells_around = 2;
-    spec.rows = 2;
-    spec.alpha = {0.9};
-    return makeWrinkleMap(spec);
-  });
+  WrinkleMapSpec spec;
+  spec.chain = "X";
+  spec.cells_around = 2;
+  spec.rows = 2;
+  spec.alpha = {0.9};
+  // A tile spans cells_around cells of 2 L_x each (wrinkle_map.h): heights in L_x units.
+  cloth_height_to_tile_ = static_cast<float>(1.0 / (2.0 * spec.cell.half_width_x * spec.cells_around));
+  wrinkle_relief_ = std::async(std::launch::async, [spec] { return makeWrinkleMap(spec); });
 }
 
 void DressedHumanDisplay::updateGarmentColourVisibility() {
@@ -166,8 +231,9 @@ void DressedHumanDisplay::updateGarmentColourVisibility() {
 void DressedHumanDisplay::pollWrinkleRelief() {
   if (!wrinkle_relief_.valid() || wrinkle_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   try {
-    const ReliefMap map = wrinkle_relief_.get();
-    if (visual_) visual_->setNormalMap(ReliefKind::kCloth, encodeNormalMapRgb(map), map.width, map.height, 1.0f);
+    auto map = std::make_shared<const ReliefMap>(wrinkle_relief_.get());
+    if (visual_) visual_->setNormalMap(ReliefKind::kCloth, encodeNormalMapRgb(*map), map->width, map->height, 1.0f);
+    cloth_map_ = std::move(map);
     clearError("Wrinkle relief");
   } catch (const std::exception& error) {
     reportError("Wrinkle relief", error.what());
@@ -220,6 +286,31 @@ void DressedHumanDisplay::loadRobotDescription() {
     reportError("Body Description", error.what());
     return;
   }
+  updateBodyShape();
+}
+
+void DressedHumanDisplay::updateBodyShape() {
+  if (!body_ || !skeleton_) return;
+  BodyShape shape = body_->shape;
+  for (const auto& entry : shape_properties_) {
+    const Ogre::Vector3 abc = entry.second->getVector();
+    for (int k = 0; k < 3; ++k) {
+      if (!(abc[k] >= 0.2f && abc[k] <= 5.0f)) {
+        reportError("Body Shape", entry.second->getName().toStdString() + ": " + "abc"[k] + " = " +
+                                      std::to_string(abc[k]) + " is outside [0.2, 5]; keeping the previous shape");
+        return;
+      }
+    }
+    for (const auto& group : bodyShapeGroups()) {
+      if (group.first != entry.first) continue;
+      for (const std::string& bone : group.second) {
+        const int index = skeleton_->findBone(bone);
+        if (index >= 0) shape.scale[static_cast<std::size_t>(index)].array() *= Eigen::Array3d(abc.x, abc.y, abc.z);
+      }
+    }
+  }
+  clearError("Body Shape");
+  shape_ = shape;
   rebuildModel();
 }
 
@@ -238,21 +329,44 @@ void DressedHumanDisplay::rebuildModel() {
   }
   try {
     settings.outfit = outfitFromName(outfit_property_->getStdString());
-    model_ = std::make_unique<HumanModel>(*skeleton_, *body_, settings);
+    BodyDescription shaped = *body_;
+    shaped.shape = shape_;
+    model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
     clearError("Model");
   } catch (const std::exception& error) {
     model_.reset();
     reportError("Model", error.what());
   }
+  applyDisplacement();
   context_->queueRender();
 }
 
 void DressedHumanDisplay::updateAppearance() {
+  applyDisplacement();
   if (!visual_) return;
   const bool bump = relief_mode_property_->getOptionInt() == kBumpMapping;
+  displacement_level_property_->setHidden(relief_mode_property_->getOptionInt() != kDisplacedGeometry);
+  // Displaced geometry carries its relief in the mesh normals: the shader must not add it again.
   visual_->setReliefStrength(ReliefKind::kSkin, bump ? relief_strength_property_->getFloat() : 0.0f);
   visual_->setReliefStrength(ReliefKind::kCloth, bump ? wrinkle_strength_property_->getFloat() : 0.0f);
+  visual_->setSkeletonVisible(show_skeleton_property_->getBool());
   context_->queueRender();
+}
+
+void DressedHumanDisplay::applyDisplacement() {
+  if (!model_) return;
+  const bool displaced = relief_mode_property_->getOptionInt() == kDisplacedGeometry;
+  try {
+    // Until a map has been generated its kind stays undisplaced; the poll that delivers it
+    // calls back here.
+    model_->setDisplacement(ReliefKind::kSkin, displaced ? skin_map_ : nullptr, 1.0f, 1.0f,
+                            relief_strength_property_->getFloat());
+    model_->setDisplacement(ReliefKind::kCloth, displaced ? cloth_map_ : nullptr, 1.0f, cloth_height_to_tile_,
+                            wrinkle_strength_property_->getFloat());
+    clearError("Relief");
+  } catch (const std::exception& error) {
+    reportError("Relief", error.what());
+  }
 }
 
 void DressedHumanDisplay::regenerateSkinRelief() {
@@ -260,27 +374,38 @@ void DressedHumanDisplay::regenerateSkinRelief() {
       skin_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
     return;  // pollSkinRelief() starts another run with the current properties when this one ends
   }
+  const SkinReliefParameters parameters = skinParametersFromProperties();
+  // Generated off rviz's thread: a 512^2 map takes a noticeable fraction of a second. A bad
+  // parameter throws inside the job and is reported when it is collected (pollSkinRelief).
+  skin_relief_ = std::async(std::launch::async, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
+  requested_skin_parameters_ = parameters;
+}
+
+SkinReliefParameters DressedHumanDisplay::skinParametersFromProperties() const {
   SkinReliefParameters parameters;
   parameters.levels = skin_levels_property_->getInt();
   parameters.cell_size = skin_cell_size_property_->getFloat();
   parameters.seed = static_cast<std::uint32_t>(skin_seed_property_->getInt());
-  // Generated off rviz's thread: a 512^2 map takes a noticeable fraction of a second.
-  skin_relief_ = std::async(std::launch::async, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
-  requested_skin_parameters_ = {parameters.levels, parameters.cell_size, parameters.seed};
+  parameters.direction_angle = skin_direction_property_->getFloat() * kPi / 180.0;
+  parameters.direction_stretch = skin_stretch_property_->getFloat();
+  parameters.wobble = skin_wobble_property_->getFloat();
+  parameters.jitter = skin_jitter_property_->getFloat();
+  parameters.profile = BezierProfile::fromEdgeSlope(skin_slope_property_->getFloat());
+  parameters.roundness = skin_roundness_property_->getFloat();
+  return parameters;
 }
 
 void DressedHumanDisplay::pollSkinRelief() {
   if (!skin_relief_.valid() || skin_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   try {
-    const ReliefMap map = skin_relief_.get();
-    if (visual_) visual_->setNormalMap(ReliefKind::kSkin, encodeNormalMapRgb(map), map.width, map.height, 1.0f);
+    auto map = std::make_shared<const ReliefMap>(skin_relief_.get());
+    if (visual_) visual_->setNormalMap(ReliefKind::kSkin, encodeNormalMapRgb(*map), map->width, map->height, 1.0f);
+    skin_map_ = std::move(map);
     clearError("Skin relief");
   } catch (const std::exception& error) {
     reportError("Skin relief", error.what());
   }
-  const SkinParameterKey current{skin_levels_property_->getInt(), skin_cell_size_property_->getFloat(),
-                                 static_cast<std::uint32_t>(skin_seed_property_->getInt())};
-  if (!(current == requested_skin_parameters_)) regenerateSkinRelief();
+  if (!sameSkinParameters(skinParametersFromProperties(), requested_skin_parameters_)) regenerateSkinRelief();
   updateAppearance();
 }
 
@@ -318,11 +443,15 @@ bool DressedHumanDisplay::lookUpBones() {
     const Bone& bone = skeleton_->bone(b);
     const std::string frame = skeleton_->frameName(bone.name);
     const RigidTransform& parent = bone.parent < 0 ? root_ : bones_[static_cast<std::size_t>(bone.parent)];
+    // Eq. 5: the joint sits at the parent's shaped offset (as ForwardKinematics puts it); TF
+    // carries the URDF's unshaped skeleton, so only its rotations are taken as they are.
+    const Eigen::Vector3d parent_scale =
+        bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
     const std::string parent_frame =
         bone.parent < 0 ? root : skeleton_->frameName(skeleton_->bone(static_cast<std::size_t>(bone.parent)).name);
     try {
       const RigidTransform local = toRigid(buffer->lookupTransform(parent_frame, frame, stamp).transform);
-      bones_[b].translation = parent.translation + parent.rotation * local.translation;
+      bones_[b].translation = parent.translation + parent.rotation * parent_scale.cwiseProduct(local.translation);
       bones_[b].rotation = parent.rotation * local.rotation;
       clearError("Frame " + frame);
     } catch (const tf2::TransformException& error) {
@@ -364,6 +493,10 @@ void DressedHumanDisplay::updateSurfaces() {
   LevelOfDetail lod;
   lod.level = lod_level_property_->getInt();
   lod.automatic = lod_mode_property_->getOptionInt() == kAutomatic;
+  if (relief_mode_property_->getOptionInt() == kDisplacedGeometry) {
+    lod.automatic = false;  // relief in the geometry needs vertices at the relief's scale
+    lod.level = displacement_level_property_->getInt();
+  }
   if (lod.automatic) {
     const Ogre::Camera* camera = context_->getViewManager()->getCurrent()->getCamera();
     const Ogre::Vector3 eye = camera->getDerivedPosition();
@@ -375,12 +508,24 @@ void DressedHumanDisplay::updateSurfaces() {
   try {
     model_->update(root_, bones_, lod);
     visual_->update(model_->parts());
+    if (show_skeleton_property_->getBool()) drawSkeleton();
     setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
                  std::to_string(model_->parts().size()) + " parts, " + std::to_string(model_->triangleCount()) +
                      " triangles");
   } catch (const std::exception& error) {
     reportError("Surfaces", error.what());
   }
+}
+
+void DressedHumanDisplay::drawSkeleton() {
+  std::vector<Eigen::Vector3f> segments;
+  segments.reserve(2 * kBoneCount);
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const double length = skeleton_->bone(b).length * shape_.scale[b].z();
+    segments.push_back(bones_[b].translation.cast<float>());
+    segments.push_back((bones_[b].translation + bones_[b].rotation * Eigen::Vector3d(0.0, 0.0, length)).cast<float>());
+  }
+  visual_->updateSkeleton(segments);
 }
 
 }  // namespace dressed_human

@@ -13,6 +13,7 @@
 
 #include "dressed_human/core/human_model.h"
 #include "dressed_human/core/relief_map.h"
+#include "dressed_human/core/skin_relief.h"
 
 namespace rviz {
 class BoolProperty;
@@ -20,7 +21,9 @@ class ColorProperty;
 class EnumProperty;
 class FloatProperty;
 class IntProperty;
+class Property;
 class StringProperty;
+class VectorProperty;
 }  // namespace rviz
 
 namespace dressed_human {
@@ -47,6 +50,7 @@ class DressedHumanDisplay : public rviz::Display {
   void updateAppearance();
   void regenerateSkinRelief();
   void updateGarmentColourVisibility();
+  void updateBodyShape();
 
  private:
   bool lookUpBones();
@@ -55,6 +59,9 @@ class DressedHumanDisplay : public rviz::Display {
   void clearError(const std::string& name);
   void pollSkinRelief();
   void pollWrinkleRelief();
+  void applyDisplacement();
+  void drawSkeleton();
+  SkinReliefParameters skinParametersFromProperties() const;
 
   rviz::StringProperty* description_property_;
   rviz::StringProperty* body_file_property_;
@@ -70,28 +77,35 @@ class DressedHumanDisplay : public rviz::Display {
   rviz::IntProperty* skin_levels_property_;
   rviz::FloatProperty* skin_cell_size_property_;
   rviz::IntProperty* skin_seed_property_;
+  rviz::FloatProperty* skin_direction_property_;
+  rviz::FloatProperty* skin_stretch_property_;
+  rviz::FloatProperty* skin_wobble_property_;
+  rviz::FloatProperty* skin_jitter_property_;
+  rviz::FloatProperty* skin_slope_property_;
+  rviz::FloatProperty* skin_roundness_property_;
+  rviz::IntProperty* displacement_level_property_;
+  rviz::Property* body_shape_category_;
+  // (a, b, c) of Eq. 5 per limb group of bodyShapeGroups(), multiplying the body file's shape.
+  std::vector<std::pair<std::string, rviz::VectorProperty*>> shape_properties_;
+  rviz::BoolProperty* show_skeleton_property_;
   rviz::EnumProperty* lod_mode_property_;
   rviz::IntProperty* lod_level_property_;
   rviz::FloatProperty* lod_pixels_property_;
 
   std::unique_ptr<Skeleton> skeleton_;
   std::vector<int> leaf_bones_;  // bones no other bone hangs from: the ends of the TF chains
-  std::unique_ptr<BodyDescription> body_;
+  std::unique_ptr<BodyDescription> body_;   // as the body file says
+  BodyShape shape_;                         // the file's shape times the Body Shape properties
   std::unique_ptr<HumanModel> model_;
   std::unique_ptr<HumanVisual> visual_;
-  // What the running skin-relief job was started with; a property change meanwhile is picked
-  // up when it finishes.
-  struct SkinParameterKey {
-    int levels = 0;
-    double cell_size = 0.0;
-    std::uint32_t seed = 0;
-    bool operator==(const SkinParameterKey& o) const {
-      return levels == o.levels && cell_size == o.cell_size && seed == o.seed;
-    }
-  };
   std::future<ReliefMap> skin_relief_;
   std::future<ReliefMap> wrinkle_relief_;
-  SkinParameterKey requested_skin_parameters_;
+  // What the running skin-relief job was started with; a property change meanwhile is picked
+  // up when it finishes.
+  SkinReliefParameters requested_skin_parameters_;
+  // The finished maps, kept for the displaced-geometry mode (the GPU has its own copies).
+  std::shared_ptr<const ReliefMap> skin_map_, cloth_map_;
+  float cloth_height_to_tile_ = 1.0f;
   std::map<std::string, std::string> logged_errors_;
   double update_cpu_seconds_ = 0.0;
   int update_count_ = 0;

@@ -9,6 +9,8 @@
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
 
+#include <rviz/ogre_helpers/billboard_line.h>
+
 #include "dressed_human/core/human_model.h"
 #include "relief_material.h"
 #include "surface_mesh_object.h"
@@ -27,6 +29,9 @@ class HumanVisual {
   void setVisible(bool visible);
   void setReliefStrength(ReliefKind kind, float strength);
   void setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height, float tiling);
+  // Bones as lines drawn over everything (pairs of end points, fixed frame).
+  void setSkeletonVisible(bool visible);
+  void updateSkeleton(const std::vector<Eigen::Vector3f>& segment_ends);
 
  private:
   struct Part {
@@ -50,6 +55,9 @@ class HumanVisual {
   float cloth_relief_strength_ = 1.0f;
   NormalMap skin_map_, cloth_map_;
   bool visible_ = true;
+  std::unique_ptr<rviz::BillboardLine> skeleton_lines_;  // created when first shown
+  bool skeleton_visible_ = false;
+  std::uint32_t skeleton_line_count_ = 0;
 };
 
 }  // namespace dressed_human

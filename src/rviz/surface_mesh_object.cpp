@@ -1,5 +1,7 @@
 #include "surface_mesh_object.h"
 
+#include <algorithm>
+
 namespace dressed_human {
 
 SurfaceMeshObject::SurfaceMeshObject(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent,
@@ -24,17 +26,19 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh) {
     vertex_count_ = index_count_ = 0;
     return;
   }
-  if (object_->getSections().size() == 1 && vertices == vertex_count_ && indices == index_count_) {
+  if (object_->getSections().size() == 1) {
+    // Same section, new data: Ogre keeps the hardware buffers while they are large enough and
+    // grows them otherwise, so level-of-detail and relief-mode changes stop reallocating once
+    // the largest mesh has been seen.
     object_->beginUpdate(0);
+    if (vertices > vertex_count_ || indices > index_count_) ++rebuild_count_;
   } else {
     object_->clear();
-    object_->estimateVertexCount(vertices);
-    object_->estimateIndexCount(indices);
     object_->begin(material_, Ogre::RenderOperation::OT_TRIANGLE_LIST, "dressed_human");
-    vertex_count_ = vertices;
-    index_count_ = indices;
     ++rebuild_count_;
   }
+  vertex_count_ = std::max(vertex_count_, vertices);
+  index_count_ = std::max(index_count_, indices);
   for (std::size_t i = 0; i < vertices; ++i) {
     const Eigen::Vector3f& p = mesh.positions[i];
     const Eigen::Vector3f& n = mesh.normals[i];

@@ -1,6 +1,6 @@
 #pragma once
-// An Ogre::ManualObject fed from a core TriangleMesh; refilled in place while the vertex and index
-// counts stay the same (the common case: a new pose at the same level of detail).
+// An Ogre::ManualObject fed from a core TriangleMesh; refilled in place (its hardware buffers
+// reused while they are large enough, grown otherwise).
 
 #include <string>
 
@@ -28,9 +28,9 @@ class SurfaceMeshObject {
   Ogre::SceneManager* scene_manager_;
   Ogre::ManualObject* object_;
   std::string material_;
-  std::size_t vertex_count_ = 0;
+  std::size_t vertex_count_ = 0;  // largest counts seen: what the buffers hold
   std::size_t index_count_ = 0;
-  std::size_t rebuild_count_ = 0;
+  std::size_t rebuild_count_ = 0;  // buffer (re)creations
 };
 
 }  // namespace dressed_human

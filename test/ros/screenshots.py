@@ -11,13 +11,17 @@ BACKGROUND = numpy.array([48, 48, 48])
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
+# Placeholders of test/ros/data/display_test.rviz a test need not set.
+DEFAULT_REPLACEMENTS = {"SHOW_SKELETON": "false", "LEGS_THICKNESS": "1.0"}
+
+
 class Rviz:
     """rviz on a copy of test/ros/data/<template> with text replacements; stopped on exit."""
 
     def __init__(self, template, replacements):
         with open(os.path.join(HERE, "data", template)) as f:
             text = f.read()
-        for key, value in replacements.items():
+        for key, value in {**DEFAULT_REPLACEMENTS, **replacements}.items():
             text = text.replace(key, value)
         self.directory = tempfile.mkdtemp()
         self.config = os.path.join(self.directory, "test.rviz")

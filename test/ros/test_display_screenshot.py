@@ -18,12 +18,15 @@ class DisplayScreenshotTest(unittest.TestCase):
         rospy.init_node("test_display_screenshot")
         cls.directory = tempfile.mkdtemp()
         cls.images, cls.outputs = {}, {}
-        for mode in ("Bump mapping", "Flat"):
-            path = os.path.join(cls.directory, mode.replace(" ", "_") + ".png")
-            with Rviz("display_test.rviz", {"RELIEF_MODE": mode}) as rviz:
-                cls.images[mode] = wait_for_figure(rviz, path)
-                cls.outputs[mode] = rviz.output()
-            rospy.loginfo("screenshot %s: %s", mode, path)
+        runs = {mode: {"RELIEF_MODE": mode} for mode in ("Bump mapping", "Flat", "Displaced geometry")}
+        # The skeleton drawn through the clothes, on a body with legs twice as thick (Eq. 5 a, b).
+        runs["Skeleton and thick legs"] = {"RELIEF_MODE": "Flat", "SHOW_SKELETON": "true", "LEGS_THICKNESS": "2.0"}
+        for name, replacements in runs.items():
+            path = os.path.join(cls.directory, name.replace(" ", "_") + ".png")
+            with Rviz("display_test.rviz", replacements) as rviz:
+                cls.images[name] = wait_for_figure(rviz, path)
+                cls.outputs[name] = rviz.output()
+            rospy.loginfo("screenshot %s: %s", name, path)
 
     def test_human_covers_the_centre_of_the_view(self):
         mask = figure_mask(self.images["Bump mapping"])
@@ -65,6 +68,32 @@ class DisplayScreenshotTest(unittest.TestCase):
         rospy.loginfo("high-pass luminance energy: bump %.3f over %d px, flat %.3f over %d px",
                       bump, bump_pixels, flat, flat_pixels)
         self.assertGreater(bump, 1.5 * flat)
+
+    def test_displaced_geometry_shows_relief(self):
+        # The relief moved into the mesh (and its normals) shows like bump mapping does.
+        displaced, pixels = high_pass_energy(self.images["Displaced geometry"],
+                                             figure_mask(self.images["Displaced geometry"]))
+        flat, _ = high_pass_energy(self.images["Flat"], figure_mask(self.images["Flat"]))
+        rospy.loginfo("high-pass luminance energy: displaced %.3f over %d px, flat %.3f", displaced, pixels, flat)
+        self.assertGreater(displaced, 1.5 * flat)
+
+    def test_skeleton_shows_through_and_legs_grow(self):
+        image, flat = self.images["Skeleton and thick legs"], self.images["Flat"]
+        # Bright yellow bone lines (1.0, 0.85, 0.1): none in the plain flat image, many here.
+        yellow = lambda im: ((im[:, :, 0] > 200) & (im[:, :, 1] > 160) & (im[:, :, 2] < 90)).sum()
+        rospy.loginfo("yellow skeleton pixels: %d (flat run: %d)", yellow(image), yellow(flat))
+        self.assertGreater(yellow(image), 300)
+        self.assertLess(yellow(flat), 30)
+
+        def lower_width(im):
+            """Median figure width over the lowest fifth of the figure: the shanks and feet."""
+            mask = figure_mask(im)
+            rows = numpy.nonzero(mask.any(axis=1))[0]
+            first, height = rows.min(), rows.max() - rows.min()
+            band = mask[int(first + 0.8 * height):int(first + 0.95 * height)]
+            return float(numpy.median(band.sum(axis=1)))
+        rospy.loginfo("shank band width: thick legs %.0f px, default %.0f px", lower_width(image), lower_width(flat))
+        self.assertGreater(lower_width(image), 1.4 * lower_width(flat))
 
     def test_no_error_reported(self):
         for mode, output in self.outputs.items():

@@ -14,6 +14,7 @@
 #include "dressed_human/core/body_description.h"
 #include "dressed_human/core/forward_kinematics.h"
 #include "dressed_human/core/garment.h"
+#include "dressed_human/core/mesh_displacement.h"
 #include "dressed_human/core/skin.h"
 #include "dressed_human/core/tessellation.h"
 
@@ -63,8 +64,18 @@ class HumanModel {
   void update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
               const LevelOfDetail& lod);
 
+  // Relief as displaced geometry (mesh_displacement.h) for every part of `kind`, from the next
+  // update() on; a null map turns it off (bump mapping is then the renderer's business). The
+  // model keeps the map alive. Throws std::invalid_argument naming a bad setting.
+  void setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling, float height_to_tile,
+                       float amplitude);
+
   const std::vector<SurfacePart>& parts() const { return parts_; }
   std::size_t triangleCount() const;
+  // Part `part`'s posed Bezier patches and the tessellation level each got in the last update()
+  // (for error budgets: geometricErrorBound(patch, level)).
+  const std::vector<BezierPatch>& partPatches(std::size_t part) const;
+  const std::vector<int>& partLevels(std::size_t part) const;
   const Skin& skin() const { return skin_; }
 
  private:
@@ -78,7 +89,13 @@ class HumanModel {
   std::vector<Garment> garments_;
   std::vector<std::unique_ptr<Tessellator>> garment_tessellators_;
   std::vector<SurfacePart> parts_;
-  std::map<const Tessellator*, std::vector<int>> automatic_levels_;  // per surface, last levels used
+  std::map<const Tessellator*, std::vector<int>> automatic_levels_;
+  struct Displacement {
+    std::shared_ptr<const ReliefMap> map;
+    ReliefDisplacement settings;
+  };
+  std::array<Displacement, 2> displacements_;  // by ReliefKind
+  std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced  // per surface, last levels used
 };
 
 }  // namespace dressed_human

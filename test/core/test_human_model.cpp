@@ -1,0 +1,99 @@
+// HumanModel (human_model.h): outfits become the expected surface parts, the level of detail is
+// validated, and the displaced-geometry relief mode moves each part by no more than its map
+// allows while leaving bump-mapped parts untouched.
+#include "dressed_human/core/human_model.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "garment_test_support.h"
+
+namespace dressed_human {
+namespace {
+
+using namespace garment_test;
+
+HumanModelSettings settingsFor(Outfit outfit) {
+  HumanModelSettings settings;
+  settings.outfit = outfit;
+  settings.garment_directory = sourcePath("config/garments");
+  return settings;
+}
+
+TEST(HumanModel, OutfitsBecomeTheirParts) {
+  const SkeletonPose pose = walkPoses(1, body().shape)[0];
+  const std::vector<std::pair<Outfit, std::vector<std::string>>> expected{
+      {Outfit::kNone, {"skin"}},
+      {Outfit::kOnePiece, {"skin", "one_piece"}},
+      {Outfit::kJacketSkirt, {"skin", "skirt", "jacket"}},
+      {Outfit::kJacketPants, {"skin", "pants", "jacket"}}};
+  for (const auto& outfit : expected) {
+    HumanModel model(skeleton(), body(), settingsFor(outfit.first));
+    model.update(pose.root, pose.bone_in_world, LevelOfDetail());
+    ASSERT_EQ(model.parts().size(), outfit.second.size());
+    for (std::size_t p = 0; p < outfit.second.size(); ++p) {
+      EXPECT_EQ(model.parts()[p].name, outfit.second[p]);
+      EXPECT_EQ(model.parts()[p].relief, p == 0 ? ReliefKind::kSkin : ReliefKind::kCloth);
+      ASSERT_NE(model.parts()[p].mesh, nullptr);
+      EXPECT_GT(model.parts()[p].mesh->triangleCount(), 100u);
+    }
+  }
+  EXPECT_THROW(outfitFromName("bikini"), std::invalid_argument);
+  EXPECT_EQ(outfitFromName("jacket_pants"), Outfit::kJacketPants);
+}
+
+TEST(HumanModel, RejectsABadFixedLevel) {
+  const SkeletonPose pose = walkPoses(1, body().shape)[0];
+  HumanModel model(skeleton(), body(), settingsFor(Outfit::kNone));
+  LevelOfDetail lod;
+  lod.level = 0;
+  EXPECT_THROW(model.update(pose.root, pose.bone_in_world, lod), std::invalid_argument);
+  lod.level = 6;
+  EXPECT_NO_THROW(model.update(pose.root, pose.bone_in_world, lod));
+}
+
+TEST(HumanModel, DisplacedGeometryMovesOnlyTheDisplacedKindWithinItsBound) {
+  const SkeletonPose pose = walkPoses(3, body().shape)[1];
+  HumanModel plain(skeleton(), body(), settingsFor(Outfit::kJacketSkirt));
+  HumanModel displaced(skeleton(), body(), settingsFor(Outfit::kJacketSkirt));
+  auto map = std::make_shared<ReliefMap>(64, 64);
+  for (int r = 0; r < 64; ++r) {
+    for (int c = 0; c < 64; ++c) map->heights[map->index(c, r)] = 0.05f * static_cast<float>(std::sin(0.3 * c + 0.2 * r));
+  }
+  displaced.setDisplacement(ReliefKind::kCloth, map, 2.0f, 1.0f, 1.0f);
+  LevelOfDetail lod;
+  lod.level = 8;
+  plain.update(pose.root, pose.bone_in_world, lod);
+  displaced.update(pose.root, pose.bone_in_world, lod);
+  ASSERT_EQ(plain.parts().size(), displaced.parts().size());
+  for (std::size_t p = 0; p < plain.parts().size(); ++p) {
+    const TriangleMesh& a = *plain.parts()[p].mesh;
+    const TriangleMesh& b = *displaced.parts()[p].mesh;
+    ASSERT_EQ(a.vertexCount(), b.vertexCount());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < a.vertexCount(); ++i) {
+      const double moved = (a.positions[i] - b.positions[i]).norm();
+      // |d| <= amplitude * max|h| * sqrt(|F_u| |F_v|) / tiling
+      const double bound = 0.05 * std::sqrt(a.tangents_u[i].norm() * a.tangents_v[i].norm()) / 2.0;
+      EXPECT_LE(moved, bound + 1e-6) << plain.parts()[p].name << " vertex " << i;
+      largest = std::max(largest, moved);
+    }
+    if (plain.parts()[p].relief == ReliefKind::kSkin) {
+      EXPECT_EQ(largest, 0.0) << "the skin is not displaced";
+    } else {
+      EXPECT_GT(largest, 1e-3) << plain.parts()[p].name << " should move by millimetres";
+    }
+  }
+  // Off again: the same surfaces as the plain model.
+  displaced.setDisplacement(ReliefKind::kCloth, nullptr, 1.0f, 1.0f, 1.0f);
+  displaced.update(pose.root, pose.bone_in_world, lod);
+  for (std::size_t p = 0; p < plain.parts().size(); ++p) {
+    EXPECT_EQ(plain.parts()[p].mesh->positions, displaced.parts()[p].mesh->positions);
+  }
+  EXPECT_THROW(displaced.setDisplacement(ReliefKind::kSkin, map, 0.0f, 1.0f, 1.0f), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dressed_human

@@ -1,0 +1,136 @@
+// Displaced geometry (mesh_displacement.h): positions move along the normal by the scaled
+// relief height, normals tilt by the relief slope; checked against the analytic displaced
+// surface of a flat patch and against the displaced mesh's own finite differences.
+#include "dressed_human/core/mesh_displacement.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace dressed_human {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A flat 1 m x 1 m patch in the xy plane, u along x, v along y (normal +z).
+BezierPatch flatPatch() {
+  BezierPatch::ControlPoints points;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) points[BezierPatch::index(i, j)] = Eigen::Vector3d(i / 3.0, j / 3.0, 0.0);
+  }
+  return BezierPatch(points);
+}
+
+// h(U, V) = a sin(2 pi U): one period per tile along u, exact slopes.
+ReliefMap sineMap(int size, double a) {
+  ReliefMap map(size, size);
+  for (int r = 0; r < size; ++r) {
+    for (int c = 0; c < size; ++c) {
+      const double u = (c + 0.5) / size;
+      map.heights[map.index(c, r)] = static_cast<float>(a * std::sin(2.0 * kPi * u));
+      map.slope_u[map.index(c, r)] = static_cast<float>(a * 2.0 * kPi * std::cos(2.0 * kPi * u));
+      map.slope_v[map.index(c, r)] = 0.0f;
+    }
+  }
+  return map;
+}
+
+TEST(MeshDisplacement, SamplesPixelCentresExactlyAndWraps) {
+  ReliefMap map(4, 2);
+  for (std::size_t i = 0; i < map.heights.size(); ++i) map.heights[i] = static_cast<float>(i);
+  EXPECT_DOUBLE_EQ(sampleReliefMap(map, 0.125, 0.25).height, 0.0);
+  EXPECT_DOUBLE_EQ(sampleReliefMap(map, 0.375, 0.75).height, 5.0);
+  EXPECT_DOUBLE_EQ(sampleReliefMap(map, 0.25, 0.25).height, 0.5);  // halfway between columns 0 and 1
+  EXPECT_DOUBLE_EQ(sampleReliefMap(map, 2.375, -0.25).height, sampleReliefMap(map, 0.375, 0.75).height);
+  // Across the seam: halfway between the last column (3) and the first (0).
+  EXPECT_DOUBLE_EQ(sampleReliefMap(map, 1.0, 0.25).height, 1.5);
+}
+
+TEST(MeshDisplacement, FlatPatchFollowsTheAnalyticDisplacedSurface) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 32);
+  const ReliefMap map = sineMap(512, 0.01);
+  ReliefDisplacement displacement;
+  displacement.map = &map;
+  displacement.tiling = 2.0f;
+  displacement.amplitude = 1.5f;
+  TriangleMesh displaced;
+  displaceMesh(base, displacement, displaced);
+  ASSERT_EQ(displaced.vertexCount(), base.vertexCount());
+  EXPECT_EQ(displaced.indices, base.indices);
+  double worst_position = 0.0, worst_normal = 0.0;
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    const double x = base.positions[i].x();
+    // z = amplitude * h(x * tiling) * (1 m / tiling): a tile is half a metre here.
+    const double z = 1.5 * 0.01 * std::sin(2.0 * kPi * 2.0 * x) / 2.0;
+    const double dzdx = 1.5 * 0.01 * 2.0 * kPi * std::cos(2.0 * kPi * 2.0 * x);
+    worst_position = std::max(worst_position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
+    worst_normal = std::max(worst_normal, (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
+  }
+  // Bilinear interpolation of a 512-pixel sine: relative error ~ (2 pi / 512)^2 / 8.
+  EXPECT_LT(worst_position, 2e-6);
+  EXPECT_LT(worst_normal, 1e-3);
+}
+
+TEST(MeshDisplacement, NormalsAgreeWithTheDisplacedPositions) {
+  // The normal is derived from slopes, the position from heights: a consistent map makes them
+  // agree with a finite difference of the displaced surface itself.
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 32);
+  const ReliefMap map = sineMap(256, 0.02);
+  ReliefDisplacement displacement{&map, 1.0f, 1.0f, 2.0f};
+  TriangleMesh displaced;
+  displaceMesh(base, displacement, displaced);
+  int checked = 0;
+  for (std::size_t t = 0; t < displaced.triangleCount(); ++t) {
+    const Eigen::Vector3f& a = displaced.positions[displaced.indices[3 * t]];
+    const Eigen::Vector3f& b = displaced.positions[displaced.indices[3 * t + 1]];
+    const Eigen::Vector3f& c = displaced.positions[displaced.indices[3 * t + 2]];
+    const Eigen::Vector3f face = (b - a).cross(c - a).normalized();
+    const Eigen::Vector3f vertex_mean = (displaced.normals[displaced.indices[3 * t]] + displaced.normals[displaced.indices[3 * t + 1]] +
+                                         displaced.normals[displaced.indices[3 * t + 2]]).normalized();
+    EXPECT_GT(face.dot(vertex_mean), std::cos(0.02)) << "triangle " << t;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(MeshDisplacement, ZeroAmplitudeKeepsTheMesh) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 8);
+  const ReliefMap map = sineMap(64, 0.05);
+  TriangleMesh displaced;
+  displaceMesh(base, {&map, 3.0f, 1.0f, 0.0f}, displaced);
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    EXPECT_EQ(displaced.positions[i], base.positions[i]);
+    EXPECT_LT((displaced.normals[i] - base.normals[i]).norm(), 1e-6f);
+  }
+}
+
+TEST(MeshDisplacement, RejectsBadSettingsByName) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 4);
+  const ReliefMap map = sineMap(8, 0.05);
+  TriangleMesh out;
+  const auto message = [&](const ReliefDisplacement& d) {
+    try {
+      displaceMesh(base, d, out);
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({nullptr, 1.0f, 1.0f, 1.0f}).find("no relief map"), std::string::npos);
+  EXPECT_NE(message({&map, 0.0f, 1.0f, 1.0f}).find("tiling"), std::string::npos);
+  EXPECT_NE(message({&map, 1.0f, -1.0f, 1.0f}).find("height_to_tile"), std::string::npos);
+  EXPECT_NE(message({&map, 1.0f, 1.0f, -0.5f}).find("amplitude"), std::string::npos);
+  EXPECT_NE(message({&map, 1.0f, 1.0f, std::nanf("")}).find("amplitude"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dressed_human
