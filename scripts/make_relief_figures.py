@@ -10,6 +10,9 @@ The tool writes raw PNGs/CSVs into <build_dir>/relief_raw/; this script composes
   fig11_slope.png ... fig17_direction.png, fig18_skin.png   skin parameter sweeps (paper 004)
   skin_tiling_2x2.png             the shaded skin tile repeated 2 x 2 (seams would show here)
   skin_mip_levels.png             normal map mip chain
+  wrinkle_placement_walk.png      wrinkle placement over a walk (wrinkle_placement_walk tool): alpha
+                                  behind the knee / inside the elbow / at the waist, pattern, h1
+Only the last figure: scripts/make_relief_figures.py <build_dir> wrinkle_placement
 """
 import csv
 import os
@@ -136,8 +139,68 @@ def main():
     mips = sorted(n[:-4] for n in os.listdir(RAW) if n.startswith("skin_normal_mip"))
     grid(mips, [m.replace("skin_normal_", "") for m in mips], "skin_mip_levels.png", len(mips),
          "Tangent-space normal map mip chain (gradient box filter)", cell=2.4)
+    wrinkle_placement_figure()
     print("figures in", OUT)
 
 
+def wrinkle_placement_figure():
+    """alpha per region over one walk cycle, the chosen pattern and amplitude h1, and the pose
+    wrinkle tile behind the left knee at the least / middle / most compressed pose."""
+    os.makedirs(RAW, exist_ok=True)
+    tool = os.path.join(BUILD, "wrinkle_placement_walk")
+    if not os.path.exists(tool):
+        sys.exit(f"{tool} not found: build first (cmake --build {BUILD} --target wrinkle_placement_walk)")
+    subprocess.run([tool, ROOT, RAW, "60"], check=True)
+    rows = read_csv("wrinkle_walk.csv")
+    tiles = read_csv("wrinkle_walk_tiles.csv")
+    phase = np.array([float(r["phase"]) for r in rows])
+    fig = plt.figure(figsize=(12, 8.2))
+    top = fig.add_axes([0.07, 0.56, 0.58, 0.38])
+    middle = fig.add_axes([0.07, 0.09, 0.58, 0.38], sharex=top)
+    bend_axis = top.twinx()
+    series = [("pants_l_knee_back", "behind left knee (pants)", "C0"),
+              ("pants_r_knee_back", "behind right knee (pants)", "C9"),
+              ("jacket_l_elbow_inside", "inside left elbow (jacket)", "C3"),
+              ("jacket_waist", "waist (jacket)", "C2"),
+              ("pants_waist", "waist (pants)", "C8")]
+    for key, label, colour in series:
+        alpha = np.array([float(r[key + "_alpha"]) for r in rows])
+        top.plot(phase, alpha, color=colour, label=label)
+        h1 = np.array([float(r[key + "_h1_mm"]) for r in rows])
+        chain = rows[int(np.argmin(alpha))][key + "_chain"]
+        middle.plot(phase, h1, color=colour, label=f"{label}: {chain}")
+    top.axhline(0.98, color="grey", linestyle=":", label="threshold 0.98 (no wrinkles above)")
+    bend_axis.plot(phase, [float(r["l_knee_bend_deg"]) for r in rows], "--", color="C0", alpha=0.5)
+    bend_axis.plot(phase, [float(r["l_elbow_bend_deg"]) for r in rows], "--", color="C3", alpha=0.5)
+    bend_axis.set_ylabel("bend [deg] (dashed: left knee, left elbow)")
+    top.set_ylabel("alpha (region's 10th percentile)")
+    top.set_title("Compression on the posed garments, walk.yaml (knee, elbow: span length along the joint axis;\n"
+                  "waist: smallest principal stretch vs rest)", fontsize=10)
+    top.legend(fontsize=7, loc="lower left")
+    top.grid(True, alpha=0.3)
+    middle.set_xlabel("phase of the walk cycle")
+    middle.set_ylabel("wrinkle amplitude h1 [mm]")
+    middle.set_title("Amplitude h1(alpha / 0.98) of the region's pattern (legend: chain at the lowest alpha)")
+    middle.legend(fontsize=7, loc="upper left")
+    middle.grid(True, alpha=0.3)
+    for index, tile in enumerate(tiles):
+        axis = fig.add_axes([0.72, 0.69 - 0.315 * index, 0.24, 0.24])
+        axis.imshow(mpimg.imread(os.path.join(RAW, f"wrinkle_walk_tile_{tile['name']}.png")), cmap="gray", vmin=0, vmax=1)
+        axis.set_xticks([])
+        axis.set_yticks([])
+        axis.set_xlabel("u (down the leg) ->", fontsize=7)
+        axis.set_ylabel("v (around)", fontsize=7)
+        axis.set_title(f"pose map behind left knee, phase {int(tile['pose']) / len(rows):.2f}\n"
+                       f"alpha {float(tile['alpha']):.3f}, {tile['chain']}, max height {float(tile['max_height_mm']):.1f} mm",
+                       fontsize=8)
+        top.axvline(int(tile["pose"]) / len(rows), color="k", alpha=0.25)
+    fig.savefig(os.path.join(OUT, "wrinkle_placement_walk.png"), dpi=110)
+    plt.close(fig)
+    print("wrote", os.path.join(OUT, "wrinkle_placement_walk.png"))
+
+
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) > 2 and sys.argv[2] == "wrinkle_placement":
+        wrinkle_placement_figure()
+    else:
+        main()

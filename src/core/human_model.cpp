@@ -39,6 +39,9 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
       description.legs.at_knee = false;
     }
     garments_.emplace_back(description, skeleton, body.shape);
+    rest_patches_.push_back(garments_.back().patches());  // built in the rest pose
+    compressions_.emplace_back();
+    wrinkle_weights_.emplace_back();
     garment_tessellators_.push_back(std::make_unique<Tessellator>());
     const auto colour = settings_.garment_colours.find(name);
     const Eigen::Vector4f rgba = colour != settings_.garment_colours.end()
@@ -80,11 +83,15 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
   for (std::size_t g = 0; g < garments_.size(); ++g) {
     garments_[g].pose(pose_);
     parts_[g + 1].mesh = &tessellate(*garment_tessellators_[g], garments_[g].patches(), garments_[g].topology(), lod);
+    compressions_[g].update(*parts_[g + 1].mesh, rest_patches_[g], wrinkle_weights_[g]);
+    parts_[g + 1].relief_weight = &wrinkle_weights_[g];
   }
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const Displacement& displacement = displacements_[static_cast<std::size_t>(parts_[p].relief)];
     if (!displacement.map) continue;
-    displaceMesh(*parts_[p].mesh, displacement.settings, displaced_meshes_[p]);
+    ReliefDisplacement settings = displacement.settings;
+    settings.weights = parts_[p].relief_weight;
+    displaceMesh(*parts_[p].mesh, settings, displaced_meshes_[p]);
     parts_[p].mesh = &displaced_meshes_[p];
   }
 }

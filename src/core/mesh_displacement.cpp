@@ -51,6 +51,10 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
                                 " must be finite and >= 0");
   }
   const std::size_t n = base.vertexCount();
+  if (displacement.weights != nullptr && displacement.weights->size() != n) {
+    throw std::invalid_argument("relief displacement: " + std::to_string(displacement.weights->size()) +
+                                " vertex weights for " + std::to_string(n) + " vertices");
+  }
   out.positions.resize(n);
   out.normals.resize(n);
   out.tangents_u = base.tangents_u;
@@ -59,8 +63,8 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
   out.indices = base.indices;
   out.triangle_patch = base.triangle_patch;
   const double tiling = displacement.tiling;
-  const double amplitude = displacement.amplitude;
   for (std::size_t i = 0; i < n; ++i) {
+    const double amplitude = displacement.amplitude * (displacement.weights ? (*displacement.weights)[i] : 1.0f);
     const Eigen::Vector3d normal = base.normals[i].cast<double>();
     const Eigen::Vector3d fu = base.tangents_u[i].cast<double>(), fv = base.tangents_v[i].cast<double>();
     const ReliefSample relief = sampleReliefMap(*map, base.uv[i].x() * tiling, base.uv[i].y() * tiling);

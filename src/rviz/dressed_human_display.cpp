@@ -45,6 +45,20 @@ bool sameSkinParameters(const SkinReliefParameters& a, const SkinReliefParameter
          a.profile.first_inner == b.profile.first_inner && a.profile.second_inner == b.profile.second_inner;
 }
 
+// The map with u and v swapped (heights and slopes).
+ReliefMap transposed(const ReliefMap& map) {
+  ReliefMap out(map.height, map.width);
+  for (int row = 0; row < map.height; ++row) {
+    for (int column = 0; column < map.width; ++column) {
+      const std::size_t from = map.index(column, row), to = out.index(row, column);
+      out.heights[to] = map.heights[from];
+      out.slope_u[to] = map.slope_v[from];
+      out.slope_v[to] = map.slope_u[from];
+    }
+  }
+  return out;
+}
+
 RigidTransform toRigid(const geometry_msgs::Transform& t) {
   RigidTransform rigid;
   rigid.translation = {t.translation.x, t.translation.y, t.translation.z};
@@ -212,14 +226,19 @@ void DressedHumanDisplay::onInitialize() {
   regenerateSkinRelief();
   // The garments' wrinkle texture: X-pattern buckling at mild compression (SPEC §4), once; a few
   // large cells per patch, as cloth buckles at the scale of a hand, not of a knit.
+  // Y-Y chains: the pattern wrinkle placement picks for the default garments' patches (their
+  // surfaces turn about half a bend angle per cell; wrinkle_placement.h), at a strong
+  // compression; the per-vertex wrinkle weight from the posed garment (HumanModel) decides
+  // where and how much of it shows. The map compresses along its rows (v); knees and elbows
+  // compress garments along the limb, patch u: hence the transpose.
   WrinkleMapSpec spec;
-  spec.chain = "X";
+  spec.chain = "YY";
   spec.cells_around = 2;
   spec.rows = 2;
-  spec.alpha = {0.9};
+  spec.alpha = {0.8};
   // A tile spans cells_around cells of 2 L_x each (wrinkle_map.h): heights in L_x units.
   cloth_height_to_tile_ = static_cast<float>(1.0 / (2.0 * spec.cell.half_width_x * spec.cells_around));
-  wrinkle_relief_ = std::async(std::launch::async, [spec] { return makeWrinkleMap(spec); });
+  wrinkle_relief_ = std::async(std::launch::async, [spec] { return transposed(makeWrinkleMap(spec)); });
 }
 
 void DressedHumanDisplay::updateGarmentColourVisibility() {

@@ -34,7 +34,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     }
     Part& part = parts_[i];
     part.material->setColour(source.colour.x(), source.colour.y(), source.colour.z(), source.colour.w());
-    part.mesh->update(*source.mesh);
+    part.mesh->update(*source.mesh, source.relief_weight);
   }
 }
 

@@ -18,7 +18,7 @@ void SurfaceMeshObject::setMaterial(const std::string& material) {
   if (object_->getSections().size() > 0) object_->setMaterialName(0, material_);
 }
 
-void SurfaceMeshObject::update(const TriangleMesh& mesh) {
+void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight) {
   const std::size_t vertices = mesh.positions.size();
   const std::size_t indices = mesh.indices.size();
   if (vertices == 0 || indices == 0) {
@@ -48,6 +48,7 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh) {
     object_->normal(n.x(), n.y(), n.z());
     object_->tangent(t.x(), t.y(), t.z());
     object_->textureCoord(uv.x(), uv.y());
+    object_->textureCoord(relief_weight != nullptr && i < relief_weight->size() ? (*relief_weight)[i] : 1.0f);
   }
   for (std::size_t i = 0; i < indices; ++i) object_->index(mesh.indices[i]);
   object_->end();

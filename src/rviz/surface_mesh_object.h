@@ -19,7 +19,8 @@ class SurfaceMeshObject {
   SurfaceMeshObject(const SurfaceMeshObject&) = delete;
   SurfaceMeshObject& operator=(const SurfaceMeshObject&) = delete;
 
-  void update(const TriangleMesh& mesh);
+  // `relief_weight`: per vertex, how much relief shows (second texture coordinate); null: 1.
+  void update(const TriangleMesh& mesh, const std::vector<float>* relief_weight = nullptr);
   void setMaterial(const std::string& material);
   void setVisible(bool visible) { object_->setVisible(visible); }
   std::size_t rebuildCount() const { return rebuild_count_; }

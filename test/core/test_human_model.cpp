@@ -97,3 +97,50 @@ TEST(HumanModel, DisplacedGeometryMovesOnlyTheDisplacedKindWithinItsBound) {
 
 }  // namespace
 }  // namespace dressed_human
+
+namespace dressed_human {
+namespace {
+
+using namespace garment_test;
+
+// Garment relief follows compression (wrinkle_placement.h): none in the rest pose, some behind
+// a bent knee; the skin has no weights (all of its relief shows).
+TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
+  HumanModelSettings settings;
+  settings.outfit = Outfit::kJacketPants;
+  settings.garment_directory = sourcePath("config/garments");
+  HumanModel model(skeleton(), body(), settings);
+  ForwardKinematics fk(skeleton(), body().shape);
+  const auto poseWithKnee = [&](double angle) {
+    JointAngles angles{};
+    angles[static_cast<std::size_t>(skeleton().findJoint("l_knee") * 3)] = angle;  // y: flexion axis
+    SkeletonPose pose;
+    fk.compute(RigidTransform(), angles, pose);
+    return pose;
+  };
+  // Anatomical flexion swings the ankle backwards (-x); pick the sign of the y angle that does.
+  const std::size_t ankle = static_cast<std::size_t>(skeleton().findBone("l_ankle"));
+  const double sign = poseWithKnee(0.3).bone_in_world[ankle].translation.x() <
+                              poseWithKnee(0.0).bone_in_world[ankle].translation.x() ? 1.0 : -1.0;
+  const auto strongest = [&](double knee_flexion) {
+    const SkeletonPose pose = poseWithKnee(sign * knee_flexion);
+    model.update(pose.root, pose.bone_in_world, LevelOfDetail());
+    EXPECT_EQ(model.parts()[0].relief_weight, nullptr);
+    const SurfacePart& pants = model.parts()[1];
+    EXPECT_EQ(pants.name, "pants");
+    if (pants.relief_weight == nullptr) return -1.0f;
+    EXPECT_EQ(pants.relief_weight->size(), pants.mesh->vertexCount());
+    float largest = 0.0f;
+    for (const float w : *pants.relief_weight) {
+      EXPECT_GE(w, 0.0f);
+      EXPECT_LE(w, 1.0f);
+      largest = std::max(largest, w);
+    }
+    return largest;
+  };
+  EXPECT_LT(strongest(0.0), 1e-3f) << "no wrinkles at rest";
+  EXPECT_GT(strongest(1.2), 0.5f) << "wrinkles behind a knee bent 70 degrees";
+}
+
+}  // namespace
+}  // namespace dressed_human

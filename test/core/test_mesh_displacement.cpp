@@ -134,3 +134,28 @@ TEST(MeshDisplacement, RejectsBadSettingsByName) {
 
 }  // namespace
 }  // namespace dressed_human
+
+namespace dressed_human {
+namespace {
+
+TEST(MeshDisplacement, VertexWeightsScaleTheAmplitude) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 8);
+  const ReliefMap map = sineMap(64, 0.05);
+  std::vector<float> weights(base.vertexCount());
+  for (std::size_t i = 0; i < weights.size(); ++i) weights[i] = i % 2 ? 1.0f : 0.0f;
+  ReliefDisplacement displacement{&map, 1.0f, 1.0f, 2.0f};
+  TriangleMesh full, weighted;
+  displaceMesh(base, displacement, full);
+  displacement.weights = &weights;
+  displaceMesh(base, displacement, weighted);
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    EXPECT_EQ(weighted.positions[i], i % 2 ? full.positions[i] : base.positions[i]) << i;
+  }
+  weights.pop_back();
+  EXPECT_THROW(displaceMesh(base, displacement, weighted), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dressed_human

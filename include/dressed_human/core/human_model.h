@@ -17,6 +17,7 @@
 #include "dressed_human/core/mesh_displacement.h"
 #include "dressed_human/core/skin.h"
 #include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/wrinkle_placement.h"
 
 namespace dressed_human {
 
@@ -27,6 +28,10 @@ struct SurfacePart {
   ReliefKind relief;
   Eigen::Vector4f colour;     // RGBA, 0..1
   const TriangleMesh* mesh;   // owned by the HumanModel, valid until its next update()
+  // Per vertex of `mesh`, how much of the relief shows there, in [0, 1]; null: all of it. For
+  // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
+  // wrinkles behind a bent knee, none on a straight leg.
+  const std::vector<float>* relief_weight = nullptr;
 };
 
 struct LevelOfDetail {
@@ -95,7 +100,11 @@ class HumanModel {
     ReliefDisplacement settings;
   };
   std::array<Displacement, 2> displacements_;  // by ReliefKind
-  std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced  // per surface, last levels used
+  std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced
+  // Per garment: its rest-pose patches, the per-vertex compression measure, the weights.
+  std::vector<std::vector<BezierPatch>> rest_patches_;
+  std::vector<VertexCompression> compressions_;
+  std::vector<std::vector<float>> wrinkle_weights_;  // per surface, last levels used
 };
 
 }  // namespace dressed_human

@@ -24,6 +24,8 @@ struct ReliefDisplacement {
   float tiling = 1.0f;             ///< tiles per patch along u and v, > 0
   float height_to_tile = 1.0f;     ///< tile units per map height unit, > 0
   float amplitude = 1.0f;          ///< relief strength (as the shader's), >= 0
+  /// Optional per-vertex factor on the amplitude (SurfacePart::relief_weight); null: 1.
+  const std::vector<float>* weights = nullptr;
 };
 
 /// Height and slopes of the map at tile coordinates (any real values: the map wraps),

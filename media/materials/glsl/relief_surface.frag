@@ -8,6 +8,7 @@ uniform float reliefStrength;       // 0: flat shading with the geometric normal
 uniform float specularStrength;
 
 varying vec2 reliefUv;
+varying float reliefWeight;
 varying vec3 lightTangent;
 varying vec3 viewTangent;
 varying vec3 lightObject;
@@ -16,7 +17,7 @@ varying vec3 normalObject;
 
 void main() {
   vec3 relief = texture2D(normalMap, reliefUv).xyz * 2.0 - 1.0;
-  vec3 n = normalize(vec3(relief.xy * reliefStrength, max(relief.z, 1e-3)));
+  vec3 n = normalize(vec3(relief.xy * (reliefStrength * reliefWeight), max(relief.z, 1e-3)));
   vec3 l = normalize(lightTangent);
   vec3 v = normalize(viewTangent);
   // Both sides of thin cloth are visible (skirt hems, sleeves): light the side facing the viewer.

@@ -6,6 +6,7 @@ attribute vec4 vertex;
 attribute vec3 normal;
 attribute vec3 tangent;
 attribute vec4 uv0;
+attribute vec4 uv1;                 // x: how much of the relief shows here (wrinkles follow compression)
 
 uniform mat4 worldViewProj;
 uniform vec4 lightPositionObject;   // w = 0 for rviz's directional light
@@ -13,6 +14,7 @@ uniform vec4 cameraPositionObject;
 uniform float reliefTiling;
 
 varying vec2 reliefUv;
+varying float reliefWeight;
 varying vec3 lightTangent;
 varying vec3 viewTangent;
 varying vec3 lightObject;
@@ -22,6 +24,7 @@ varying vec3 normalObject;
 void main() {
   gl_Position = worldViewProj * vertex;
   reliefUv = uv0.xy * reliefTiling;
+  reliefWeight = uv1.x;
 
   vec3 n = normalize(normal);
   // A collapsed patch edge (a pole) has dF/du = 0: pick any tangent orthogonal to the normal.
