@@ -94,19 +94,30 @@ Eigen::Matrix3d chainRotation(const std::vector<CoordinateRotation>& chain, cons
 
 }  // namespace
 
+// Where the middle angle nears +-90 degrees the outer two share one axis. Their split is then
+// ill-conditioned: reading them off entries that carry cos(middle) costs eps / cos(middle) in the
+// rebuilt rotation, while putting everything into the first angle costs ~cos(middle). Switching
+// where the two meet, cos(middle) ~ sqrt(eps), bounds the rebuild error by ~3e-8 everywhere (the
+// former test 1 - |sin| < 1e-12 switched at cos ~ 1.4e-6 and lost up to ~3e-6). The middle angle
+// comes from atan2 with cos(middle) = |column or row|: asin near +-1 loses half the digits.
+constexpr double kGimbalCosine = 1e-8;
+
 Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& r) {
   // R = Ry(a) Rx(b) Rz(c): third column (sa cb, -sb, ca cb), second row (cb sc, cb cc, -sb).
-  const double x = std::asin(std::clamp(-r(1, 2), -1.0, 1.0));
-  if (std::abs(r(1, 2)) > 1.0 - 1e-12) {
-    // Gimbal lock: only y - z (or y + z) is defined; put it all into y.
+  const double cos_x = std::hypot(r(0, 2), r(2, 2));
+  const double x = std::atan2(-r(1, 2), cos_x);
+  if (cos_x < kGimbalCosine) {
+    // Gimbal lock: only y - z (at +90 degrees) or y + z (at -90) is defined; put it all into y.
     return {std::atan2(-r(2, 0), r(0, 0)), x, 0.0};
   }
   return {std::atan2(r(0, 2), r(2, 2)), x, std::atan2(r(1, 0), r(1, 1))};
 }
 
 Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& r) {
-  const double pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
-  if (std::abs(r(2, 0)) > 1.0 - 1e-12) return {0.0, pitch, std::atan2(-r(0, 1), r(1, 1))};
+  // R = Rz(yaw) Ry(pitch) Rx(roll): third row (-sp, cp sr, cp cr), first column (cy cp, sy cp, -sp).
+  const double cos_pitch = std::hypot(r(2, 1), r(2, 2));
+  const double pitch = std::atan2(-r(2, 0), cos_pitch);
+  if (cos_pitch < kGimbalCosine) return {0.0, pitch, std::atan2(-r(0, 1), r(1, 1))};
   return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
 }
 

@@ -11,7 +11,9 @@
 // the overlap. Pooling weights channels by their energy: the large leg and arm swings dominate,
 // and since left and right are half a cycle apart, the stride (not the step) wins. The period is
 // the highest local maximum of r for lags from min_period up to half the record (two cycles must
-// be seen), refined to sub-frame precision by a parabola through the peak and its neighbours.
+// be seen) -- or the shortest peak it is a whole multiple of, if that one is within 0.02 of it
+// (r(T) and r(2T) of a long record differ only by noise) -- refined to sub-frame precision by a
+// parabola through the peak and its neighbours.
 // No local maximum, or one below min_correlation, means no clear period: an error, not a guess.
 
 #include <cstddef>

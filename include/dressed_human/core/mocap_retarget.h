@@ -42,9 +42,11 @@ struct SampledMotion {
   double frameTime() const { return times.size() > 1 ? times[1] - times[0] : 0.0; }
 };
 
-// R = Ry(y) Rx(x) Rz(z) -> (y, x, z), each in (-pi, pi], x in [-pi/2, pi/2].
+// R = Ry(y) Rx(x) Rz(z) -> (y, x, z), each in (-pi, pi], x in [-pi/2, pi/2]. At gimbal lock
+// (cos x < 1e-8) z = 0 and y takes y - z (x = +90 degrees) or y + z (x = -90); the angles rebuild
+// R to ~3e-8 everywhere, but y and z jump where a motion passes through x = +-90 degrees.
 Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& rotation);
-// R = Rz(yaw) Ry(pitch) Rx(roll) -> (roll, pitch, yaw).
+// R = Rz(yaw) Ry(pitch) Rx(roll) -> (roll, pitch, yaw); at pitch +-90 degrees roll = 0.
 Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& rotation);
 
 // The standing height of our skeleton at rest (lowest to highest bone end), metres.
