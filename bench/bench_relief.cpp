@@ -11,6 +11,15 @@
 //    seen, i.e. pays the 5 fits every iteration.
 #include "dressed_human/core/skin_relief.h"
 #include "dressed_human/core/wrinkle_map.h"
+#include "dressed_human/core/body_description.h"
+#include "dressed_human/core/garment_file.h"
+#include "dressed_human/core/motion_evaluator.h"
+#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/wrinkle_placement.h"
+
+#include <memory>
+#include <string>
 
 #include <benchmark/benchmark.h>
 
@@ -42,6 +51,16 @@ void SkinMap(benchmark::State& state) {
                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(SkinMap)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+// Resolution x levels, for the speed chart of docs/EVALUATION.md (scripts/make_evaluation.py).
+void SkinMapLevels(benchmark::State& state) {
+  SkinReliefParameters parameters = benchmarkSkin();
+  parameters.levels = static_cast<int>(state.range(1));
+  const SkinRelief relief(parameters);
+  const int size = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(relief.render(size, size));
+}
+BENCHMARK(SkinMapLevels)->ArgsProduct({{256, 512, 1024}, {1, 2, 3}})->Unit(benchmark::kMillisecond);
 
 // What a caller uploads: the map, its mip chain (down to 1x1) and the 8-bit normal map of every
 // mip level. The two extra stages are also timed alone on a fixed map.
@@ -113,6 +132,96 @@ void WrinkleMapNewAlphas(benchmark::State& state) {
   state.SetLabel("8 Gaussians, 5 new fits");
 }
 BENCHMARK(WrinkleMapNewAlphas)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Wrinkle placement (wrinkle_placement.h), jacket + pants in one walk pose (knee bent in swing).
+//  * WrinkleVertexCompression/level: the per-frame path of a renderer, VertexCompression::evaluate
+//    on both garments' meshes (alpha and strength per vertex); level 4 is LevelOfDetail's default
+//    (Skin::kDefaultLevel), 8 the Tessellator's. Target: well under 50 us for the outfit.
+//  * WrinklePoseMap: one pose's wrinkle atlas for the pants (128 px tiles) and the region summary.
+struct WrinkleOutfit {
+  Skeleton skeleton = Skeleton::fromUrdfFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/urdf/human.urdf");
+  BodyDescription body = loadBodyDescriptionFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/bodies/default.yaml", skeleton);
+  std::vector<Garment> garments;
+  std::vector<std::unique_ptr<WrinklePlacement>> placements;
+  SkeletonPose pose;
+  WrinkleOutfit() {
+    MotionEvaluator evaluator(loadMotionFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/motions/walk.yaml"));
+    JointAngles angles{};
+    RigidTransform root;
+    evaluator.evaluate(0.3 * evaluator.motion().period, angles, root);
+    ForwardKinematics(skeleton, body.shape).compute(root, angles, pose);
+    for (const char* name : {"pants", "jacket"}) {
+      garments.emplace_back(loadGarmentFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/garments/" + name + ".yaml", skeleton),
+                            skeleton, body.shape);
+      placements.push_back(std::make_unique<WrinklePlacement>(garments.back(), skeleton, body.shape));
+      garments.back().pose(pose);
+    }
+  }
+};
+
+void WrinkleVertexCompression(benchmark::State& state) {
+  const WrinkleOutfit outfit;
+  const int level = static_cast<int>(state.range(0));
+  std::vector<std::unique_ptr<Tessellator>> tessellators;
+  std::vector<VertexCompression> compressions(outfit.garments.size());
+  std::vector<std::vector<float>> alpha(outfit.garments.size()), strength(outfit.garments.size());
+  std::size_t vertices = 0;
+  for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
+    tessellators.push_back(std::make_unique<Tessellator>());
+    const TriangleMesh& mesh = tessellators[g]->tessellateUniform(outfit.garments[g].patches(), outfit.garments[g].topology(), level);
+    compressions[g].prepare(mesh, outfit.placements[g]->restPatches());
+    alpha[g].resize(mesh.vertexCount());
+    strength[g].resize(mesh.vertexCount());
+    vertices += mesh.vertexCount();
+  }
+  for (auto _ : state) {
+    for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
+      compressions[g].evaluate(tessellators[g]->mesh(), alpha[g].data(), strength[g].data());
+      benchmark::DoNotOptimize(strength[g].data());
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["vertices"] = static_cast<double>(vertices);
+  state.counters["ns_per_vertex"] = benchmark::Counter(static_cast<double>(vertices),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(WrinkleVertexCompression)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
+
+// The layout change a renderer pays when the level of detail changes (per garment pair).
+void WrinkleVertexCompressionPrepare(benchmark::State& state) {
+  const WrinkleOutfit outfit;
+  std::vector<std::unique_ptr<Tessellator>> tessellators;
+  for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
+    tessellators.push_back(std::make_unique<Tessellator>());
+    tessellators[g]->tessellateUniform(outfit.garments[g].patches(), outfit.garments[g].topology(), static_cast<int>(state.range(0)));
+  }
+  for (auto _ : state) {
+    for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
+      VertexCompression compression;
+      compression.prepare(tessellators[g]->mesh(), outfit.placements[g]->restPatches());
+      benchmark::DoNotOptimize(compression.vertexPatches().data());
+    }
+  }
+}
+BENCHMARK(WrinkleVertexCompressionPrepare)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
+
+void WrinklePoseMap(benchmark::State& state) {
+  const WrinkleOutfit outfit;
+  for (auto _ : state) benchmark::DoNotOptimize(makePoseWrinkleMap(*outfit.placements[0], outfit.garments[0].patches(), 128));
+  state.SetLabel("pants, " + std::to_string(outfit.garments[0].patches().size()) + " tiles of 128 px");
+}
+BENCHMARK(WrinklePoseMap)->Unit(benchmark::kMillisecond);
+
+void WrinkleRegions(benchmark::State& state) {
+  const WrinkleOutfit outfit;
+  for (auto _ : state) {
+    for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
+      benchmark::DoNotOptimize(outfit.placements[g]->measureRegions(outfit.garments[g].patches(), outfit.pose));
+    }
+  }
+  state.SetLabel("jacket + pants, all regions");
+}
+BENCHMARK(WrinkleRegions)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

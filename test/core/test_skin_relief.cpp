@@ -3,6 +3,7 @@
 #include <boost/polygon/voronoi.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -165,6 +166,56 @@ TEST(SkinRelief, BucketLookupMatchesBruteForceNearestSeed) {
   const ReliefMap brute = relief.renderBruteForce(64, 64);
   EXPECT_EQ(fast.heights, brute.heights);
   EXPECT_EQ(fast.slope_v, brute.slope_v);
+}
+
+// render() (packed fast path) against renderBruteForce() (the reference: the original per-pixel
+// code with every seed scanned), within the tolerance stated in skin_relief.h.
+TEST(SkinRelief, FastRenderMatchesReferenceWithinTolerance) {
+  SkinReliefParameters benchmark_like;  // the benchmark's map (bench_relief.cpp)
+  benchmark_like.cell_size = 1.0 / 10.0;
+  benchmark_like.levels = 3;
+  benchmark_like.wobble = 0.15;
+  benchmark_like.seed = 3;
+  SkinReliefParameters stretched = threeLevels();
+  stretched.direction_angle = 1.1;
+  stretched.direction_stretch = 2.2;
+  SkinReliefParameters rounded = threeLevels(5);
+  rounded.roundness = 0.5;
+  SkinReliefParameters straight = threeLevels(6);
+  straight.wobble = 0.0;
+  for (const SkinReliefParameters& parameters : {benchmark_like, stretched, rounded, straight}) {
+    const SkinRelief relief(parameters);
+    // 256^2 for the wobbled polygonal maps the tolerance is about; the brute-force reference is
+    // O(pixels x cells), so the two variants on the shared code path get 128^2.
+    const int size = parameters.roundness > 0.0 || parameters.wobble == 0.0 ? 128 : 256;
+    const ReliefMap fast = relief.render(size, size);
+    const ReliefMap reference = relief.renderBruteForce(size, size);
+    double largest = 0.0, largest_slope = 0.0;
+    std::size_t differing = 0;
+    for (std::size_t at = 0; at < fast.heights.size(); ++at) {
+      const double difference = std::abs(static_cast<double>(fast.heights[at]) - reference.heights[at]);
+      largest = std::max(largest, difference);
+      if (difference > SkinRelief::kReferenceHeightTolerance) ++differing;
+      largest_slope = std::max({largest_slope, std::abs(static_cast<double>(fast.slope_u[at]) - reference.slope_u[at]),
+                                std::abs(static_cast<double>(fast.slope_v[at]) - reference.slope_v[at])});
+    }
+    EXPECT_LE(largest, SkinRelief::kReferenceHeightTolerance) << "seed " << parameters.seed;
+    EXPECT_LE(static_cast<double>(differing) / static_cast<double>(fast.heights.size()), SkinRelief::kReferenceDifferingFraction);
+    EXPECT_LE(largest_slope, SkinRelief::kReferenceSlopeTolerance) << "seed " << parameters.seed;
+  }
+}
+
+TEST(SkinRelief, SampleAgreesWithRenderAndReferenceCells) {
+  const SkinRelief relief(threeLevels());
+  const ReliefMap map = relief.render(40, 40);
+  for (int row = 0; row < map.height; ++row) {
+    for (int column = 0; column < map.width; ++column) {
+      const Eigen::Vector2d point((column + 0.5) / map.width, (row + 0.5) / map.height);
+      EXPECT_NEAR(relief.sample(point).height, map.heights[map.index(column, row)], 1e-7);
+      // Whole tiles away: the same point after wrapping.
+      EXPECT_NEAR(relief.sample(point + Eigen::Vector2d(-2.0, 3.0)).height, map.heights[map.index(column, row)], 1e-7);
+    }
+  }
 }
 
 TEST(SkinRelief, TopLevelCellsMatchBoostPolygonVoronoi) {

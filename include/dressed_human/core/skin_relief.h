@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace dressed_human {
 
@@ -68,6 +69,16 @@ class SkinRelief {
   /// Cell index per level containing the point (after the wobble).
   std::vector<int> cellsAt(const Eigen::Vector2d& point) const;
 
+  /// Tolerance of render() / sample() against the reference (renderBruteForce(), the original
+  /// per-pixel evaluation with every seed scanned), checked in test_skin_relief.cpp at 256^2 (the
+  /// wobbled polygonal maps; 128^2 for the rounded and the straight-walled ones):
+  /// the fast path takes the same decisions in the same order with precomputed reciprocals, so
+  /// only rounding differs -- max |height difference| <= 1e-9 tile units (far below float
+  /// resolution of the stored map), no pixel beyond that, slopes within 1e-5.
+  static constexpr double kReferenceHeightTolerance = 1e-9;
+  static constexpr double kReferenceDifferingFraction = 0.0;
+  static constexpr double kReferenceSlopeTolerance = 1e-5;
+
   /// Render the tile at pixel centres ((column + 0.5) / width, (row + 0.5) / height).
   /// only_level >= 0 renders that level alone. Level-1 cells are found with the bucket grid.
   ReliefMap render(int width, int height, int only_level = -1) const;
@@ -97,8 +108,66 @@ class SkinRelief {
                         RowCache* cache = nullptr) const;
   ReliefMap renderWith(int width, int height, int only_level, bool brute_force) const;
 
+  // Fast path (render, sample, cellsAt). Same model as the reference path above (which
+  // renderBruteForce keeps), restructured for speed: per-level wall data packed contiguously with
+  // the reciprocals and the per-segment wobble constants of the ray hit precomputed, and the
+  // wall projections q . n computed once per pixel and level and shared by the straight-cell
+  // test, the wobble test and the ray hit.
+  struct PackedSegment {
+    double numerator = 0.0;          // ray parameter at the hit = numerator / denominator
+    double inverse_numerator = 0.0;  // 0 when numerator <= 0 (the reference keeps the straight hit)
+    double slope = 0.0;              // outward wobble per unit u
+    double start_u = 0.0;            // segment start in u
+    double offset = 0.0;             // outward wobble at start_u
+    double step = 0.0;               // outward wobble change over the segment
+    double gradient_x = 0.0, gradient_y = 0.0;  // gradient of s on this segment
+  };
+  struct PackedWall {
+    double normal_x, normal_y;
+    double centre_distance;
+    double inverse_distance;  // 1 / centre_distance
+    double inverse_outer;     // 1 / (centre_distance + wobble_extent)
+    double inverse_inner;     // 1 / (centre_distance - wobble_extent), +inf when that is <= 0
+    double wobble_extent;
+    double wobble_threshold;  // q . n above this: the wobble test must look at this wall
+    double tangent_x, tangent_y;  // unit tangent / length: q . t gives u units
+    double centre_u;
+    int first_segment;  // into PackedLevel::segments, -1 straight
+    int neighbour;
+    int neighbour_offset_x, neighbour_offset_y;
+  };
+  struct PackedCell {
+    double centre_x, centre_y;
+    int first_wall, wall_count;
+  };
+  struct PackedLevel {
+    std::vector<PackedCell> cells;
+    std::vector<PackedWall> walls;
+    std::vector<PackedSegment> segments;
+    int segment_count = 0;  // per wobbled wall, 2^subdivisions
+    double depth = 0.0;
+  };
+  struct FastHit {
+    int cell = -1;
+    int offset_x = 0, offset_y = 0;
+  };
+  struct FastCache {
+    FastHit straight[3];
+    FastHit parent[3];
+    bool valid[3] = {false, false, false};
+  };
+  struct LevelResult {
+    FastHit hit;
+    double s = 0.0, gradient_x = 0.0, gradient_y = 0.0;
+  };
+  void buildPackedLevels();
+  void evaluateLevel(int level, double x, double y, const FastHit& parent, FastCache* cache, LevelResult& out) const;
+  ReliefSample evaluateFast(double x, double y, int first_level, int end_level, FastCache* cache, int* cells_out = nullptr) const;
+
   SkinReliefParameters parameters_;
   std::vector<skin_detail::CellLevel> levels_;
+  std::vector<PackedLevel> packed_;
+  int max_wall_count_ = 0;
   BezierProfileTable profile_table_;
   int roundness_exponent_ = 0;  // 0 = max (polygonal)
 };
