@@ -1,0 +1,58 @@
+#!/bin/bash
+# Regenerates every benchmark figure and chart in docs/ and docs/EVALUATION.md (issue 8):
+# builds in build/ (Release), runs the core tools and Google Benchmarks, the ROS-side benchmarks
+# (node vs robot_state_publisher, display vs RobotModel, relief modes; under Xvfb), then
+# scripts/make_evaluation.py. Raw results go to build/evaluation/. About 15 minutes on 2 cores.
+#
+# Usage: scripts/evaluate.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$(pwd)
+RESULTS=$ROOT/build/evaluation
+BIN=$ROOT/build/devel/lib/dressed_human
+PY=/usr/bin/python3   # Debian's, with numpy and matplotlib (scripts/install_deps.sh)
+
+step() { echo; echo "==== $(date +%H:%M:%S) $*"; }
+
+step "build (Release)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDRESSED_HUMAN_BENCHMARKS=ON >/dev/null
+cmake --build build -j2
+mkdir -p "$RESULTS"
+{
+  echo -n "$(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, "
+  echo -n "$(free -g | awk '/^Mem:/ {print $2}') GiB, $(. /etc/os-release && echo "$PRETTY_NAME"), "
+  echo "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u +%Y-%m-%d)."
+} > "$RESULTS/machine.txt"
+
+step "Fourier order sweep (fit_motion) and chart"
+"$BIN/fit_motion" data/motion/cmu_02_01_walk.bvh -o "$RESULTS/walk_fit.yaml" --tolerance-deg 1.5 \
+  --tolerance-mm 10 --max-order 6 --name cmu_02_01_walk --sweep-csv docs/fourier_order_sweep_cmu_02_01.csv
+$PY scripts/chart_fourier_order.py docs/fourier_order_sweep_cmu_02_01.csv
+
+step "tessellation accuracy and chart"
+$PY scripts/chart_tessellation.py --tool "$BIN/tessellation_accuracy"
+
+step "core benchmarks (Google Benchmark, 5 repetitions, medians)"
+for bench in bench_skeleton_update bench_bezier bench_skin bench_relief; do
+  "$BIN/$bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+    --benchmark_format=json --benchmark_out="$RESULTS/$bench.json" --benchmark_out_format=json >/dev/null
+done
+
+step "scene budget"
+"$BIN/scene_budget" "$ROOT" > "$RESULTS/scene_budget.csv"
+
+step "relief, garment and stability figures"
+$PY scripts/make_relief_figures.py "$BIN"
+$PY scripts/make_garment_figures.py "$BIN"
+$PY scripts/make_stability_figures.py --tool "$BIN/stability_cases"
+
+step "ROS side: node vs robot_state_publisher, display vs RobotModel, relief modes (Xvfb)"
+set +u
+source build/devel/setup.bash
+set -u
+$PY bench/node_cpu.py --markdown docs/node_cpu.md
+$PY bench/rviz_scaling.py --markdown docs/rviz_scaling.md
+$PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
+
+step "docs/EVALUATION.md"
+$PY scripts/make_evaluation.py "$RESULTS"
