@@ -238,18 +238,34 @@ class Builder {
     Lattice lat;
     lat.columns = 4;
     std::vector<int> explicit_rows;   // lattice row of rows[k]
-    int leg_first = -1;               // lattice row of leg row r = 1
+    std::vector<int> leg_rows;        // lattice rows of the leg's inner control rows, then the hem
     switch (type) {
       case GarmentType::kJacket: lat.patch_rows = 2; explicit_rows = {0, 1, 2, 4, 5, 6}; break;
-      case GarmentType::kSkirt:
-      case GarmentType::kPants: lat.patch_rows = 2; explicit_rows = {0, 1, 2}; leg_first = 4; break;
-      case GarmentType::kOnePiece: lat.patch_rows = 4; explicit_rows = {0, 1, 2, 4, 5, 7, 8}; leg_first = 10; break;
+      case GarmentType::kSkirt: lat.patch_rows = 2; explicit_rows = {0, 1, 2}; leg_rows = {4, 5, 6}; break;
+      // Two patch rows per trouser leg: one cubic from crotch to ankle cannot bend with the knee.
+      case GarmentType::kPants: lat.patch_rows = 3; explicit_rows = {0, 1, 2}; leg_rows = {4, 5, 7, 8, 9}; break;
+      case GarmentType::kOnePiece: lat.patch_rows = 4; explicit_rows = {0, 1, 2, 4, 5, 7, 8}; leg_rows = {10, 11, 12}; break;
     }
     if (d_.rows.size() != explicit_rows.size()) {
       throw GarmentError(d_.name + ": a " + garmentTypeName(type) + " needs " + std::to_string(explicit_rows.size()) +
                          " shape rows, got " + std::to_string(d_.rows.size()));
     }
-    if (leg_first >= 0) {
+    std::vector<double> fractions = d_.legs.row_fractions;
+    if (!leg_rows.empty()) {
+      const std::size_t inner = leg_rows.size() - 1;
+      if (fractions.empty()) {
+        for (std::size_t k = 1; k <= inner; ++k) fractions.push_back(static_cast<double>(k) / static_cast<double>(inner + 1));
+      }
+      if (fractions.size() != inner) {
+        throw GarmentError(d_.name + ": a " + garmentTypeName(type) + " needs " + std::to_string(inner) + " leg row fractions, got " +
+                           std::to_string(fractions.size()));
+      }
+      for (std::size_t k = 0; k < inner; ++k) {
+        if (!(fractions[k] > (k == 0 ? 0.0 : fractions[k - 1]) && fractions[k] < 1.0)) {
+          throw GarmentError(d_.name + ": leg row fractions must increase strictly within (0, 1)");
+        }
+      }
+      fractions.push_back(1.0);
       const int upper = boneOf(d_.legs.knee.frame);
       const int lower = boneOf(d_.legs.long_hem.frame);
       knee_ = kneeLength(boneLength(upper), boneLength(lower));
@@ -303,8 +319,9 @@ class Builder {
       for (std::size_t k = 0; k < explicit_rows.size(); ++k) {
         if (explicit_rows[k] == j) return ringPoint(d_.rows[k], 4, 0.0, i, right);
       }
-      const int r = j - leg_first + 1;  // 1..3
-      const double c = r == 3 ? length_ : length_ * d_.legs.row_fractions[r - 1];
+      std::size_t r = 0;
+      while (r + 1 < leg_rows.size() && leg_rows[r] != j) ++r;
+      const double c = length_ * fractions[r];
       if (pants) {
         const int half = n / 2;
         const bool right_leg = i >= half;

@@ -29,6 +29,16 @@ std::size_t garmentRowCount(GarmentType type) {
   return 0;
 }
 
+std::size_t legRowFractionCount(GarmentType type) {
+  switch (type) {
+    case GarmentType::kJacket: return 0;
+    case GarmentType::kSkirt: return 2;
+    case GarmentType::kPants: return 4;
+    case GarmentType::kOnePiece: return 2;
+  }
+  return 0;
+}
+
 namespace {
 
 // The project's strict reader (file:line:col, key path) plus what garments need: fixed-size
@@ -138,13 +148,20 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
     const YAML::Node legs = reader.require(document, "legs", "");
     reader.requireMap(legs, "legs");
     reader.rejectUnknownKeys(legs, "legs", {"length", "rows", "top", "knee", "long"});
-    if (legs["rows"]) {
-      const Eigen::Vector2d f = reader.vector<2>(legs["rows"], "legs.rows");
-      if (!(f[0] > 0.0 && f[0] < f[1] && f[1] < 1.0)) {
-        reader.fail(legs["rows"], "legs.rows", "fractions must satisfy 0 < f1 < f2 < 1");
+    if (const YAML::Node rows = legs["rows"]) {
+      const std::size_t count = legRowFractionCount(g.type);
+      if (!rows.IsSequence() || rows.size() != count) {
+        reader.fail(rows, "legs.rows", "expected a list of " + std::to_string(count) + " fractions for a " + type_name + ", got " +
+                                           reader.describe(rows));
       }
-      g.legs.row_fractions[0] = f[0];
-      g.legs.row_fractions[1] = f[1];
+      double previous = 0.0;
+      for (std::size_t i = 0; i < count; ++i) {
+        const std::string key = "legs.rows[" + std::to_string(i) + "]";
+        const double f = reader.number(rows[i], key);
+        if (!(f > previous && f < 1.0)) reader.fail(rows[i], key, "fractions must increase strictly within (0, 1), got " + rows[i].Scalar());
+        g.legs.row_fractions.push_back(f);
+        previous = f;
+      }
     }
     const YAML::Node length = reader.require(legs, "length", "legs");
     if (length.IsScalar() && length.Scalar() == "knee") {

@@ -132,7 +132,9 @@ TEST(GarmentContinuity, PantsAreG1AtTheCrotchPoint) {
 TEST(GarmentContinuity, PatchCountsFollowTheSeed) {
   EXPECT_EQ(Garment(garmentFile("jacket"), skeleton()).patches().size(), 12u);
   EXPECT_EQ(Garment(garmentFile("skirt"), skeleton()).patches().size(), 8u);
-  EXPECT_EQ(Garment(garmentFile("pants"), skeleton()).patches().size(), 8u);
+  // Pants: the seed's 8 (hips row 4 + each leg front and back) with each leg split at the knee
+  // into a thigh row and a shank row (garment.h): 4 + 2 x 2 x 2 = 12.
+  EXPECT_EQ(Garment(garmentFile("pants"), skeleton()).patches().size(), 12u);
   EXPECT_EQ(Garment(garmentFile("one_piece"), skeleton()).patches().size(), 20u);  // 8 + 8 + 2 x 2
 }
 

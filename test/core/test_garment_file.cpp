@@ -80,7 +80,21 @@ TEST(GarmentFile, ErrorsNameFileLineColumnAndKey) {
                                                    skeleton());
     EXPECT_EQ(ok.crotch_radius, Eigen::Vector2d(0.17, 0.02));
     EXPECT_EQ(ok.crotch_leg_radius, ok.crotch_radius);  // defaults to radius
+    // Pants legs have two patch rows (garment.h): 4 inner control rows, not the skirt's 2.
+    const std::string crotch = "crotch: {frame: body, point: [0, 0, -0.2]}\n";
+    std::string two = replaced("length: 0.3", "length: 0.3\n  rows: [0.3, 0.6]");
+    two.replace(two.find("type: skirt"), 11, "type: pants");
+    EXPECT_NE(errorOf(two + crotch).find("legs.rows: expected a list of 4 fractions for a pants"), std::string::npos)
+        << errorOf(two + crotch);
+    std::string four = replaced("length: 0.3", "length: 0.3\n  rows: [0.2, 0.5, 0.4, 0.8]");
+    four.replace(four.find("type: skirt"), 11, "type: pants");
+    EXPECT_NE(errorOf(four + crotch).find("legs.rows[2]: fractions must increase strictly within (0, 1), got 0.4"), std::string::npos)
+        << errorOf(four + crotch);
+    EXPECT_EQ(parseGarmentYaml(four.replace(four.find("0.4,"), 4, "0.6,") + crotch, skeleton()).legs.row_fractions,
+              (std::vector<double>{0.2, 0.5, 0.6, 0.8}));
   }
+  EXPECT_NE(errorOf(replaced("length: 0.3", "length: 0.3\n  rows: [0.3, 0.6, 0.8]")).find("legs.rows: expected a list of 2 fractions for a skirt"),
+            std::string::npos);
   EXPECT_EQ(errorOf(""), "bad.yaml: the garment file is empty");
   EXPECT_THROW(loadGarmentFile("/nonexistent/skirt.yaml", skeleton()), GarmentError);
 }

@@ -1,6 +1,6 @@
 // Garment topology (SPEC §3): pants are a hips ring on two tubes (boundary loops of the
-// tessellated mesh: waist + two cuffs = 3; each leg alone is a tube with 2), a skirt is one tube
-// (2 loops); the link structure of every outfit.
+// tessellated mesh: waist + two cuffs = 3; each leg, two patch rows joined at the knee, alone is
+// a tube with 2), a skirt is one tube (2 loops); the link structure of every outfit.
 #include <gtest/gtest.h>
 
 #include "dressed_human/core/mesh_boundary.h"
@@ -43,9 +43,9 @@ TEST(GarmentTopology, PantsAreAHipsRingOnTwoTubes) {
     const std::string& piece = pants.net().patchPiece(p);
     if (piece == "l_leg" || piece == "r_leg") legs.insert(p);
   }
-  ASSERT_EQ(legs.size(), 4u);
+  ASSERT_EQ(legs.size(), 8u);  // per leg: thigh row and shank row, front and back each
   EXPECT_EQ(linkedComponents(pants.topology(), legs), 2u);  // left and right are not joined
-  // Each tube alone: an annulus (its rim at the crotch and its cuff).
+  // Each tube alone: an annulus (its rim at the crotch and its cuff), its two rows joined at the knee.
   for (const std::string side : {"l_leg", "r_leg"}) {
     std::vector<BezierPatch> tube;
     for (std::uint32_t p : legs) {
@@ -53,8 +53,8 @@ TEST(GarmentTopology, PantsAreAHipsRingOnTwoTubes) {
     }
     EXPECT_EQ(loopsOf(tube, PatchTopology::fromCoincidentEdges(tube, 1e-12)), 2u) << side;
   }
-  // 4 hips ring + 2 per tube (side seam, inseam) + 4 rim links.
-  EXPECT_EQ(pants.topology().links().size(), 4u + 4u + 4u);
+  // 4 hips ring + per tube 2 rows x 2 (side seam, inseam) + 2 at the knee + 4 rim links.
+  EXPECT_EQ(pants.topology().links().size(), 4u + 2u * (4u + 2u) + 4u);
 }
 
 TEST(GarmentTopology, SkirtIsOneTubeAndTheJacketHasSleeves) {

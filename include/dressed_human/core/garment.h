@@ -8,19 +8,27 @@
 // (F_u x F_v) point outwards.
 //   jacket     torso 2 rows x 4 = 8 patches + each sleeve 1 row x 2 around = 12
 //   skirt      hips row + leg row, 2 x 4 = 8; the leg row's hem follows Eq. 8' (thigh/shank)
-//   pants      hips row (4) + two leg tubes of 2 patches (front, back): the leg row's left and
-//              right patches are not joined; each leg's front joins its own back at the inseam.
-//              The eight patches meet at the crotch C (see "The crotch" below).
+//   pants      hips row (4) + two leg tubes, each 2 patch rows (thigh, shank) x 2 patches
+//              (front, back) = 12: left and right legs are not joined; each leg's front joins
+//              its own back at the inseam and side seam. The seed's 8 (4 front, 4 back) has one
+//              patch row per leg, one cubic from crotch to ankle, which cannot bend at the knee:
+//              a knee bent ~70 degrees in the walk went 25 mm through its front (issue 5). The
+//              knee ring (the boundary between the two leg rows) is the midpoint of the thigh
+//              row's last control ring and the shank row's first, like any other boundary, so
+//              the leg stays C1 and bends with the knee. The 8 patches around the crotch C (4
+//              hips, 4 thigh) meet as below (see "The crotch").
 //   one_piece  bodice 2 rows + skirt 2 rows (4 x 4 = 16) in one lattice, so the waist row is a
 //              boundary like any other: C1 by the same midpoint rule; optional sleeves (+4)
-// Lower (leg) rows sit at normalized lengths f1 c, f2 c and c (legs.rows, default 1/3, 2/3) on
-// Eq. 8'. Pants only: a row below the knee (c > c_k) rides the shank alone, at the knee ring
+// Lower (leg) control rows sit at normalized lengths f1 c, f2 c and c (legs.rows, default 1/3,
+// 2/3) on Eq. 8'; pants: f1 c .. f4 c and c (default 1/5 .. 4/5), rows f1, f2 for the thigh row and
+// f3, f4 for the shank row; f2 c < c_k < f3 c puts the knee ring at the knee. Pants only: a row
+// below the knee (c > c_k) rides the shank alone, at the knee ring
 // carried into the shank's rest frame blended toward the long ring by A_j: Eq. 8' keeps P^i's
 // offset from the bone axis in the thigh frame, which swings a narrow trouser leg off the shank
 // when the knee bends (a wide skirt does not mind, and keeps Eq. 8').
 //
 // The crotch. The pants' hips ring must split into the two tubes' top rings, so its front and
-// back centre lines end in one point C, where 8 patches meet (4 hips, 4 legs) and 8 boundaries
+// back centre lines end in one point C, where 8 patches meet (4 hips, 4 thigh) and 8 boundaries
 // start: front seam, back seam, two inseams, four rims. Call E_0..E_7 the control points next
 // to C on those edges in order around C (front seam, front-left rim, left inseam, back-left rim,
 // back seam, ...). The midpoint rule at C would need C = (E_{k-1} + E_{k+1}) / 2 for every k;
@@ -49,9 +57,12 @@
 // frame's xy plane in every pose (projected onto it), so all 8 patches share that tangent
 // plane there, with one orientation (the sectors go once around C): a saddle, seams rising to
 // the front and back, inseams falling to the legs. C, the 8 sources and the 8 T carry piece
-// "crotch"; crotchPoint() names C. Known limit (test_garment_clearance): the crotch and leg
-// patches around it ride the pelvis and thighs rigidly, so in some walk poses the thighs
-// reach through them (see the clearance test's output for the numbers).
+// "crotch"; crotchPoint() names C. Tight spot (test_garment_clearance): C and the twist points
+// ride the pelvis rigidly while the thighs swing and cross the midline below about 16 cm under
+// the pelvis centre in some walk poses, so the default pants keep C just under the skin's
+// crotch and slightly forward, and their inseams leave C between the thighs. The default pants
+// clear the real skin over the walk by under a millimetre where the seat's rims leave C and
+// where the knees pass each other 12 cm apart (the test prints the number).
 //
 // Body shape (Eq. 5, a, b, c per bone) is applied to every shape point in its bone frame, and
 // the skirt's d_i, d_j (hence c_k) are the shaped bone lengths, so a changed body carries

@@ -33,8 +33,11 @@ struct GarmentRing {
 struct GarmentLegs {
   double length = 0.5;   // normalized c in [0, 1]; knee length c_k = d_i / (d_i + d_j)
   bool at_knee = false;  // `length: knee`: c = c_k of the shaped body (overrides `length`)
-  // The two control rows between the hips and the hem sit at these fractions of c (0 < f1 < f2 < 1).
-  double row_fractions[2] = {1.0 / 3.0, 2.0 / 3.0};
+  // The inner control rows between the hips and the hem sit at these fractions of c, strictly
+  // increasing in (0, 1): legRowFractionCount(type) of them (skirt, one_piece: 2, one patch
+  // row; pants: 4, two patch rows per leg whose shared ring is the midpoint of rows 2 and 3).
+  // Empty: evenly spaced.
+  std::vector<double> row_fractions;
   GarmentRing top;       // P^0 ring (thigh frame): the hem of a zero-length skirt
   GarmentRing knee;      // P^i ring (thigh frame): the knee-length hem
   GarmentRing long_hem;  // Q^j ring (shank frame, at rest): the full-length hem
@@ -60,5 +63,7 @@ struct GarmentDescription {
 
 // Shape rows each type needs in `rows` (jacket 6, skirt 3, pants 3, one_piece 7).
 std::size_t garmentRowCount(GarmentType type);
+// Inner leg control rows (legs.row_fractions) per type: skirt, one_piece 2; pants 4; jacket 0.
+std::size_t legRowFractionCount(GarmentType type);
 
 }  // namespace dressed_human

@@ -10,7 +10,8 @@
 //     - {frame: l_shoulder, centre: [0.0, 0.0, 0.0], radius: [0.06, 0.06]}
 //   legs:                       # skirt, pants, one_piece
 //     length: 0.5               # c in [0, 1]; or "knee" for c_k
-//     rows: [0.333, 0.667]      # optional: the inner control rows at these fractions of c
+//     rows: [0.333, 0.667]      # optional: the inner control rows at these fractions of c;
+//                               # pants: 4 (thigh row 2, shank row 2; garment.h)
 //     top:  {frame: l_hip,  centre: [...], radius: [...]}   # P^0 ring
 //     knee: {frame: l_hip,  centre: [...], radius: [...]}   # P^i ring
 //     long: {frame: l_knee, centre: [...], radius: [...]}   # Q^j ring; frame: child of knee's
