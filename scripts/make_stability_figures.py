@@ -32,6 +32,15 @@ import numpy as np  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
+
+def finish(fig, axes, out, name):
+    """Grid on every axes, tight layout, PNG into `out`."""
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
 def read(directory, name):
     with open(os.path.join(directory, name)) as handle:
         rows = list(csv.reader(handle))
@@ -98,11 +107,7 @@ def gimbal(directory, out):
     axes[2].set_xlabel("true x of the rotation (deg)")
     axes[2].set_ylabel("|Ry Rx Rz(split) - R|")
     axes[2].set_title("...but they compose back to R")
-    for ax in axes:
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "fk_gimbal.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, axes, out, "fk_gimbal.png")
 
 
 def wrap(directory, out):
@@ -156,11 +161,7 @@ def skirt(directory, out):
     axes[1].set_xlabel("normalized skirt length c")
     axes[1].set_ylabel("lowest skirt control point z (m), standing")
     axes[1].set_title("Hem height: monotone, continuous at c_k")
-    for ax in axes:
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "skirt_map.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, axes, out, "skirt_map.png")
 
 
 def period(directory, out):
@@ -182,10 +183,7 @@ def period(directory, out):
     ax.set_ylabel("pooled normalised autocorrelation r")
     ax.set_title("Gait period detection: periodic vs non-periodic input (6 s records)")
     ax.legend(fontsize=9, loc="lower left")
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "period.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, [ax], out, "period.png")
 
 
 def corner(directory, out):
