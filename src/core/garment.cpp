@@ -2,6 +2,7 @@
 
 #include "dressed_human/core/skirt_length_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -270,6 +271,9 @@ class Builder {
       const int lower = boneOf(d_.legs.long_hem.frame);
       knee_ = kneeLength(boneLength(upper), boneLength(lower));
       length_ = d_.legs.at_knee ? knee_ : d_.legs.length;
+      // A trouser leg of length 0 is a curve (every leg row on the crotch ring): no tangent
+      // plane to tessellate. The shortest leg is a micrometre; a skirt at 0 stays a surface.
+      if (type == GarmentType::kPants) length_ = std::max(length_, Garment::kShortestPantsLeg);
     }
     const bool pants = type == GarmentType::kPants;
     if (pants) lat.tube_row = 1;

@@ -81,6 +81,10 @@ namespace dressed_human {
 
 class Garment {
  public:
+  // Pants legs shorter than this (normalized c, Eq. 8') are made this long: at c = 0 the leg
+  // patches collapse to curves.
+  static constexpr double kShortestPantsLeg = 1e-6;
+
   // Throws GarmentError if the description does not fit the skeleton.
   Garment(const GarmentDescription& description, const Skeleton& skeleton,
           const BodyShape& shape = BodyShape());
