@@ -100,10 +100,7 @@ void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMa
                                  float height_to_tile, float amplitude) {
   Displacement displacement{std::move(map), ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
   displacement.settings.map = displacement.map.get();
-  if (displacement.map) {
-    TriangleMesh probe;  // validates the settings now, with the caller, not at the next update
-    displaceMesh(TriangleMesh(), displacement.settings, probe);
-  }
+  if (displacement.map) checkReliefDisplacement(displacement.settings);  // now, not at the next update
   displacements_[static_cast<std::size_t>(kind)] = std::move(displacement);
   displaced_meshes_.resize(parts_.size());
 }

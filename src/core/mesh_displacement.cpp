@@ -33,7 +33,7 @@ ReliefSample sampleReliefMap(const ReliefMap& map, double tile_u, double tile_v)
   return sample;
 }
 
-void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displacement, TriangleMesh& out) {
+void checkReliefDisplacement(const ReliefDisplacement& displacement) {
   const ReliefMap* map = displacement.map;
   if (map == nullptr || map->width <= 0 || map->height <= 0 ||
       map->heights.size() != static_cast<std::size_t>(map->width) * static_cast<std::size_t>(map->height)) {
@@ -50,6 +50,11 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     throw std::invalid_argument("relief displacement: amplitude " + std::to_string(displacement.amplitude) +
                                 " must be finite and >= 0");
   }
+}
+
+void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displacement, TriangleMesh& out) {
+  checkReliefDisplacement(displacement);
+  const ReliefMap* map = displacement.map;
   const std::size_t n = base.vertexCount();
   if (displacement.weights != nullptr && displacement.weights->size() != n) {
     throw std::invalid_argument("relief displacement: " + std::to_string(displacement.weights->size()) +

@@ -32,10 +32,13 @@ struct ReliefDisplacement {
 /// bilinear between pixel centres.
 ReliefSample sampleReliefMap(const ReliefMap& map, double tile_u, double tile_v);
 
+/// Throws std::invalid_argument naming a bad field (no map, empty map, tiling or
+/// height_to_tile <= 0, negative or non-finite amplitude).
+void checkReliefDisplacement(const ReliefDisplacement& displacement);
+
 /// `out` = `base` with every vertex moved along its normal and normals tilted by the relief
-/// (tangents and uv copied). Allocation-free once `out` has had the same size. Throws
-/// std::invalid_argument naming a bad field (no map, empty map, tiling or height_to_tile <= 0,
-/// negative or non-finite amplitude).
+/// (tangents and uv copied). Allocation-free once `out` has had the same size. Throws as
+/// checkReliefDisplacement, or when `weights` does not have one entry per vertex.
 void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displacement, TriangleMesh& out);
 
 }  // namespace dressed_human
