@@ -150,6 +150,15 @@ int main(int argc, char** argv) {
   for (rviz::Display* display : displays) {
     for (int c = 0; c < display->numChildren(); ++c) {
       auto* statuses = dynamic_cast<rviz::StatusProperty*>(display->childAt(c));
+      // Warnings and errors go to stderr: a benchmark of a display that fell back to another
+      // path, or failed, must say so.
+      for (int s = 0; statuses && s < statuses->numChildren(); ++s) {
+        auto* status = dynamic_cast<rviz::StatusProperty*>(statuses->childAt(s));
+        if (status && status->getLevel() != rviz::StatusProperty::Ok) {
+          std::fprintf(stderr, "status %s: %s\n", status->getName().toStdString().c_str(),
+                       status->getValue().toString().toStdString().c_str());
+        }
+      }
       rviz::Property* update = statuses ? statuses->subProp("Update") : nullptr;
       if (update == nullptr || update->getValue().toString().isEmpty()) continue;
       display_ms += update->getValue().toString().split(' ').front().toDouble();

@@ -5,6 +5,18 @@
 #include "dressed_human/core/garment_file.h"
 
 namespace dressed_human {
+namespace {
+
+SurfacePart surfacePart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour) {
+  SurfacePart part;
+  part.name = name;
+  part.relief = relief;
+  part.colour = colour;
+  part.mesh = nullptr;
+  return part;
+}
+
+}  // namespace
 
 Outfit outfitFromName(const std::string& name) {
   if (name == "none") return Outfit::kNone;
@@ -26,7 +38,7 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
     : settings_(settings), skin_(skeleton, body) {
-  parts_.push_back({"skin", ReliefKind::kSkin, settings_.skin_colour, nullptr});
+  parts_.push_back(surfacePart("skin", ReliefKind::kSkin, settings_.skin_colour));
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
     GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
     const bool has_skirt = description.type == GarmentType::kSkirt || description.type == GarmentType::kOnePiece;
@@ -49,12 +61,12 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
                                      : Eigen::Vector4f(static_cast<float>(description.colour.x()),
                                                        static_cast<float>(description.colour.y()),
                                                        static_cast<float>(description.colour.z()), 1.0f);
-    parts_.push_back({name, ReliefKind::kCloth, rgba, nullptr});
+    parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
 }
 
-const TriangleMesh& HumanModel::tessellate(Tessellator& tessellator, const std::vector<BezierPatch>& patches,
-                                           const PatchTopology& topology, const LevelOfDetail& lod) {
+const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
+                                              const LevelOfDetail& lod) {
   if (lod.automatic) {
     // Levels from the screen-space error, with hysteresis: a level drops only when two below
     // the current one would do. Otherwise a walking human flickers between levels and the
@@ -65,13 +77,22 @@ const TriangleMesh& HumanModel::tessellate(Tessellator& tessellator, const std::
       const int wanted = levelForScreenError(patches[p], lod.camera, lod.max_error_pixels, lod.max_level);
       if (wanted > levels[p] || wanted < levels[p] - 1) levels[p] = wanted;
     }
-    return tessellator.tessellate(patches, topology, levels);
+    return levels;
   }
   if (lod.level < 1 || lod.level > Tessellator::kMaxLevel) {
     throw std::invalid_argument("tessellation level " + std::to_string(lod.level) + " is outside [1, " +
                                 std::to_string(Tessellator::kMaxLevel) + "]");
   }
-  return tessellator.tessellateUniform(patches, topology, lod.level);
+  uniform_levels_.assign(patches.size(), lod.level);
+  return uniform_levels_;
+}
+
+Tessellator& HumanModel::tessellatorOf(std::size_t part) {
+  return part == 0 ? skin_tessellator_ : *garment_tessellators_.at(part - 1);
+}
+
+const PatchTopology& HumanModel::topologyOf(std::size_t part) const {
+  return part == 0 ? skin_.topology() : garments_.at(part - 1).topology();
 }
 
 void HumanModel::update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
@@ -79,20 +100,39 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
   pose_.root = root;
   pose_.bone_in_world = bones;
   skin_.pose(pose_);
-  parts_[0].mesh = &tessellate(skin_tessellator_, skin_.patches(), skin_.topology(), lod);
-  for (std::size_t g = 0; g < garments_.size(); ++g) {
-    garments_[g].pose(pose_);
-    parts_[g + 1].mesh = &tessellate(*garment_tessellators_[g], garments_[g].patches(), garments_[g].topology(), lod);
-    compressions_[g].update(*parts_[g + 1].mesh, rest_patches_[g], wrinkle_weights_[g]);
-    parts_[g + 1].relief_weight = &wrinkle_weights_[g];
-  }
+  for (Garment& garment : garments_) garment.pose(pose_);
   for (std::size_t p = 0; p < parts_.size(); ++p) {
-    const Displacement& displacement = displacements_[static_cast<std::size_t>(parts_[p].relief)];
-    if (!displacement.map) continue;
-    ReliefDisplacement settings = displacement.settings;
-    settings.weights = parts_[p].relief_weight;
-    displaceMesh(*parts_[p].mesh, settings, displaced_meshes_[p]);
-    parts_[p].mesh = &displaced_meshes_[p];
+    SurfacePart& part = parts_[p];
+    const Displacement& displacement = displacements_[static_cast<std::size_t>(part.relief)];
+    const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displacement.map;
+    Tessellator& tessellator = tessellatorOf(p);
+    const std::vector<BezierPatch>& patches = partPatches(p);
+    const std::vector<int>& levels = levelsFor(tessellator, patches, lod);
+    part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(p), levels)
+                         : &tessellator.layout(patches, topologyOf(p), levels);
+    part.evaluated = evaluate;
+    part.patches = &patches;
+    part.layout_id = tessellator.layoutId();
+    if (p > 0) {
+      const std::size_t g = p - 1;
+      VertexCompression& compression = compressions_[g];
+      if (evaluate) {
+        compression.update(*part.mesh, rest_patches_[g], wrinkle_weights_[g]);
+        part.relief_weight = &wrinkle_weights_[g];
+        part.inverse_rest_metric = nullptr;
+      } else {
+        if (!compression.preparedFor(*part.mesh)) compression.prepare(*part.mesh, rest_patches_[g]);
+        part.relief_weight = nullptr;
+        part.inverse_rest_metric = &compression.inverseRestMetric();
+      }
+      part.wrinkle_constants = compression.strengthConstants();
+    }
+    if (displacement.map) {
+      ReliefDisplacement settings = displacement.settings;
+      settings.weights = part.relief_weight;
+      displaceMesh(*part.mesh, settings, displaced_meshes_[p]);
+      part.mesh = &displaced_meshes_[p];
+    }
   }
 }
 

@@ -65,6 +65,7 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
   out.tangents_u = base.tangents_u;
   out.tangents_v = base.tangents_v;
   out.uv = base.uv;
+  out.vertex_patch = base.vertex_patch;
   out.indices = base.indices;
   out.triangle_patch = base.triangle_patch;
   const double tiling = displacement.tiling;

@@ -1,6 +1,7 @@
 #include "dressed_human/core/tessellation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -319,6 +320,19 @@ const TriangleMesh& Tessellator::tessellateForCamera(const std::vector<BezierPat
 const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patches,
                                             const PatchTopology& topology,
                                             const std::vector<int>& levels) {
+  prepareLayout(patches, topology, levels);
+  evaluateVertices(patches);
+  return mesh_;
+}
+
+const TriangleMesh& Tessellator::layout(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                        const std::vector<int>& levels) {
+  prepareLayout(patches, topology, levels);
+  return mesh_;
+}
+
+void Tessellator::prepareLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                const std::vector<int>& levels) {
   if (topology.patchCount() != patches.size() || levels.size() != patches.size()) {
     throw std::invalid_argument("Tessellator: " + std::to_string(patches.size()) + " patches, but " +
                                 std::to_string(topology.patchCount()) + " in the topology and " +
@@ -356,8 +370,6 @@ const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patc
     layout_requested_levels_ = levels;
     buildLayout(patches, topology);
   }
-  evaluateVertices(patches);
-  return mesh_;
 }
 
 bool Tessellator::layoutMatches(const PatchTopology& topology) const {
@@ -371,6 +383,8 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
   layout_links_ = topology.links();
   layout_collapsed_edges_ = collapsed_edges_;
   ++layout_build_count_;
+  static std::atomic<std::uint64_t> last_layout_id{0};
+  layout_id_ = ++last_layout_id;
 
   // Edge levels: the larger of the two patches' levels on a shared edge.
   std::vector<int> edge_level(4 * patch_count);
@@ -429,6 +443,7 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
   patch_layouts_.resize(patch_count);
   owned_boundary_vertices_.clear();
   mesh_.uv.clear();
+  mesh_.vertex_patch.clear();
   std::uint32_t vertex_count = 0;
   for (std::size_t p = 0; p < patch_count; ++p) {
     const int n = levels_[p];
@@ -439,6 +454,7 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
     for (int j = 1; j < n; ++j) {
       for (int i = 1; i < n; ++i) {
         mesh_.uv.emplace_back(static_cast<float>(i) / n, static_cast<float>(j) / n);
+        mesh_.vertex_patch.push_back(static_cast<std::uint32_t>(p));
       }
     }
     vertex_count += static_cast<std::uint32_t>((n - 1) * (n - 1));
@@ -461,6 +477,7 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
               root_vertex[root], static_cast<std::uint32_t>(p), uv.x(), uv.y(), weights_of(uv.x()),
               weights_of(uv.y())});
           mesh_.uv.emplace_back(uv.cast<float>());
+          mesh_.vertex_patch.push_back(static_cast<std::uint32_t>(p));
         }
         slot_vertex[s] = root_vertex[root];
       }

@@ -524,6 +524,11 @@ void VertexCompression::prepare(const TriangleMesh& mesh, const std::vector<Bezi
   }
 }
 
+WrinkleStrengthConstants VertexCompression::strengthConstants() const {
+  return {static_cast<float>(1.0 / options_.alpha_threshold),
+          static_cast<float>(1.0 / std::sqrt(1.0 - options_.saturation_alpha * options_.saturation_alpha))};
+}
+
 bool VertexCompression::preparedFor(const TriangleMesh& mesh) const {
   return mesh.uv.size() == uv_.size() && std::equal(uv_.begin(), uv_.end(), mesh.uv.begin());
 }
@@ -534,10 +539,9 @@ void VertexCompression::evaluate(const TriangleMesh& posed_mesh, float* alpha, f
     throw std::invalid_argument("VertexCompression: posed mesh has " + str(posed_mesh.tangents_u.size()) +
                                 " vertices, prepared for " + str(vertices));
   }
-  const float inverse_threshold = static_cast<float>(1.0 / options_.alpha_threshold);
-  const float inverse_saturation = static_cast<float>(1.0 / std::sqrt(1.0 - options_.saturation_alpha * options_.saturation_alpha));
+  const WrinkleStrengthConstants constants = strengthConstants();
   const VertexStretchInput input{inverse_rest_metric_.data(), posed_mesh.tangents_u.data(), posed_mesh.tangents_v.data(), vertices,
-                                 inverse_threshold, inverse_saturation};
+                                 constants.inverse_threshold, constants.inverse_saturation};
   if (alpha && strength) {
     vertexStretch<true, true>(input, alpha, strength);
   } else if (alpha) {

@@ -30,6 +30,7 @@ namespace {
 
 enum ReliefMode { kBumpMapping = 0, kFlat = 1, kDisplacedGeometry = 2 };
 enum LodMode { kAutomatic = 0, kFixed = 1 };
+enum VertexSource { kGpuVertices = 0, kCpuVertices = 1 };
 constexpr int kSkinMapSize = 512;
 constexpr double kStaleSeconds = 1.0;
 constexpr double kPi = 3.14159265358979323846;
@@ -194,7 +195,8 @@ DressedHumanDisplay::DressedHumanDisplay() {
   }
   show_skeleton_property_ = new rviz::BoolProperty("Show Skeleton", false,
                                                    "Draw the bones as lines, visible through skin and garments.",
-                                                   this, SLOT(updateAppearance()));  lod_mode_property_ = new rviz::EnumProperty(
+                                                   this, SLOT(updateAppearance()));
+  lod_mode_property_ = new rviz::EnumProperty(
       "Level of Detail", "Automatic",
       "Automatic: tessellation follows the human's size on screen. Fixed: the level below.", this);
   lod_mode_property_->addOption("Automatic", kAutomatic);
@@ -206,6 +208,13 @@ DressedHumanDisplay::DressedHumanDisplay() {
   lod_pixels_property_ = new rviz::FloatProperty("Max Screen Error", 1.0,
                                                  "Automatic level: largest geometric error in pixels.", this);
   lod_pixels_property_->setMin(0.1);
+  vertex_evaluation_property_ = new rviz::EnumProperty(
+      "Vertex Evaluation", "GPU",
+      "GPU: the vertex shader evaluates the Bezier patches from their control points; rviz's thread only poses "
+      "the control points. CPU: every vertex is evaluated and sent each frame. Displaced geometry is always CPU.",
+      this, SLOT(updateVertexEvaluation()));
+  vertex_evaluation_property_->addOption("GPU", kGpuVertices);
+  vertex_evaluation_property_->addOption("CPU", kCpuVertices);
 }
 
 DressedHumanDisplay::~DressedHumanDisplay() {
@@ -218,6 +227,7 @@ void DressedHumanDisplay::onInitialize() {
     visual_ = std::make_unique<HumanVisual>(scene_manager_, scene_node_, "dressed_human/" + getName().toStdString() +
                                                                            "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
     clearError("Material");
+    ReliefMaterial::bezierEvaluationAvailable(&gpu_vertices_problem_);
   } catch (const std::exception& error) {
     reportError("Material", error.what());
   }
@@ -352,11 +362,31 @@ void DressedHumanDisplay::rebuildModel() {
     shaped.shape = shape_;
     model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
     clearError("Model");
+    updateVertexEvaluation();
   } catch (const std::exception& error) {
     model_.reset();
     reportError("Model", error.what());
   }
   applyDisplacement();
+  context_->queueRender();
+}
+
+void DressedHumanDisplay::updateVertexEvaluation() {
+  if (!model_) return;
+  std::string problem = gpu_vertices_problem_;
+  for (std::size_t p = 0; problem.empty() && p < model_->parts().size(); ++p) {
+    if (model_->partPatches(p).size() > ReliefMaterial::kMaxPatches) {
+      problem = model_->parts()[p].name + " has " + std::to_string(model_->partPatches(p).size()) +
+                " patches, the vertex shader holds " + std::to_string(ReliefMaterial::kMaxPatches);
+    }
+  }
+  const bool gpu = vertex_evaluation_property_->getOptionInt() == kGpuVertices;
+  if (gpu && !problem.empty()) {
+    setStatusStd(rviz::StatusProperty::Warn, "Vertex Evaluation", problem + "; the CPU evaluates the vertices");
+  } else {
+    deleteStatus("Vertex Evaluation");
+  }
+  model_->setVertexEvaluation(gpu && problem.empty() ? VertexEvaluation::kRenderer : VertexEvaluation::kCpu);
   context_->queueRender();
 }
 

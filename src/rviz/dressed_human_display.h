@@ -51,6 +51,7 @@ class DressedHumanDisplay : public rviz::Display {
   void regenerateSkinRelief();
   void updateGarmentColourVisibility();
   void updateBodyShape();
+  void updateVertexEvaluation();
 
  private:
   bool lookUpBones();
@@ -91,6 +92,9 @@ class DressedHumanDisplay : public rviz::Display {
   rviz::EnumProperty* lod_mode_property_;
   rviz::IntProperty* lod_level_property_;
   rviz::FloatProperty* lod_pixels_property_;
+  rviz::EnumProperty* vertex_evaluation_property_;
+  // Why the Bezier vertex shader cannot run here (empty: it can).
+  std::string gpu_vertices_problem_ = "the relief material did not load";
 
   std::unique_ptr<Skeleton> skeleton_;
   std::vector<int> leaf_bones_;  // bones no other bone hangs from: the ends of the TF chains

@@ -4,6 +4,21 @@
 #include <OgreTechnique.h>
 
 namespace dressed_human {
+namespace {
+
+// A Bezier patch lies in the convex hull of its control points, so their box bounds it.
+Ogre::AxisAlignedBox controlPointBounds(const std::vector<BezierPatch>& patches) {
+  Ogre::AxisAlignedBox box;
+  for (const BezierPatch& patch : patches) {
+    for (const Eigen::Vector3d& point : patch.controlPoints()) {
+      box.merge(Ogre::Vector3(static_cast<Ogre::Real>(point.x()), static_cast<Ogre::Real>(point.y()),
+                              static_cast<Ogre::Real>(point.z())));
+    }
+  }
+  return box;
+}
+
+}  // namespace
 
 HumanVisual::HumanVisual(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& name_prefix)
     : scene_manager_(scene_manager), node_(parent->createChildSceneNode()), name_prefix_(name_prefix) {}
@@ -18,11 +33,14 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
   if (parts_.size() > parts.size()) parts_.resize(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const SurfacePart& source = parts[i];
-    if (i == parts_.size() || parts_[i].name != source.name || parts_[i].relief != source.relief) {
+    const bool bezier_vertices = !source.evaluated;
+    if (i == parts_.size() || parts_[i].name != source.name || parts_[i].relief != source.relief ||
+        parts_[i].bezier_vertices != bezier_vertices) {
       Part part;
       part.name = source.name;
       part.relief = source.relief;
-      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name);
+      part.bezier_vertices = bezier_vertices;
+      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices);
       part.mesh = std::make_unique<SurfaceMeshObject>(scene_manager_, node_, part.material->name());
       part.mesh->setVisible(visible_);
       applyMaps(part);
@@ -34,7 +52,13 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     }
     Part& part = parts_[i];
     part.material->setColour(source.colour.x(), source.colour.y(), source.colour.z(), source.colour.w());
-    part.mesh->update(*source.mesh, source.relief_weight);
+    if (source.evaluated) {
+      part.mesh->update(*source.mesh, source.relief_weight);
+      continue;
+    }
+    part.material->setPatches(*source.patches);
+    part.material->setWrinkleStrength(source.inverse_rest_metric ? &source.wrinkle_constants : nullptr);
+    part.mesh->updateLayout(*source.mesh, source.inverse_rest_metric, source.layout_id, controlPointBounds(*source.patches));
   }
 }
 

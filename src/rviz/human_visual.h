@@ -37,6 +37,7 @@ class HumanVisual {
   struct Part {
     std::string name;
     ReliefKind relief;
+    bool bezier_vertices;  // the vertex shader evaluates the patches (SurfacePart::evaluated false)
     std::unique_ptr<ReliefMaterial> material;
     std::unique_ptr<SurfaceMeshObject> mesh;
   };

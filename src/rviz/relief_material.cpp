@@ -2,11 +2,15 @@
 
 #include <stdexcept>
 
+#include <GL/gl.h>
 #include <OgreGpuProgramManager.h>
 #include <OgreHardwarePixelBuffer.h>
 #include <OgreMaterialManager.h>
 #include <OgrePass.h>
+#include <OgreRenderSystem.h>
+#include <OgreRenderSystemCapabilities.h>
 #include <OgreResourceGroupManager.h>
+#include <OgreRoot.h>
 #include <OgreTechnique.h>
 #include <OgreTextureManager.h>
 #include <ros/package.h>
@@ -16,6 +20,7 @@ namespace {
 
 const char* const kGroup = "dressed_human";
 const char* const kBaseMaterial = "dressed_human/ReliefSurface";
+const char* const kBezierMaterial = "dressed_human/ReliefBezierSurface";
 
 std::string mediaDirectory() {
   const std::string package = ros::package::getPath("dressed_human");
@@ -24,6 +29,25 @@ std::string mediaDirectory() {
 
 Ogre::GpuProgramParametersSharedPtr fragmentParameters(const Ogre::MaterialPtr& material) {
   return material->getTechnique(0)->getPass(0)->getFragmentProgramParameters();
+}
+
+Ogre::GpuProgramParametersSharedPtr vertexParameters(const Ogre::MaterialPtr& material) {
+  return material->getTechnique(0)->getPass(0)->getVertexProgramParameters();
+}
+
+// Empty when the material's GLSL programs compiled and are supported; else what went wrong.
+std::string programProblem(const std::string& material_name) {
+  Ogre::MaterialPtr material = Ogre::MaterialManager::getSingleton().getByName(material_name, kGroup);
+  if (!material) return "material " + material_name + " not found";
+  material->load();
+  const Ogre::Pass* pass = material->getTechnique(0)->getPass(0);
+  for (const Ogre::GpuProgramPtr& program : {pass->getVertexProgram(), pass->getFragmentProgram()}) {
+    if (!program || program->hasCompileError() || !program->isSupported()) {
+      return "GLSL program " + (program ? program->getName() : std::string("(missing)")) +
+             " failed to compile (see the Ogre log)";
+    }
+  }
+  return "";
 }
 
 }  // namespace
@@ -38,24 +62,45 @@ void ReliefMaterial::loadMediaOnce() {
     groups.addResourceLocation(media + "/glsl", "FileSystem", kGroup);
     groups.initialiseResourceGroup(kGroup);
     groups.loadResourceGroup(kGroup);
-    Ogre::MaterialPtr base = Ogre::MaterialManager::getSingleton().getByName(kBaseMaterial, kGroup);
-    if (!base) throw std::runtime_error(std::string("material ") + kBaseMaterial + " not found in " + media);
-    base->load();
-    const Ogre::Pass* pass = base->getTechnique(0)->getPass(0);
-    for (const Ogre::GpuProgramPtr& program : {pass->getVertexProgram(), pass->getFragmentProgram()}) {
-      if (!program || program->hasCompileError() || !program->isSupported()) {
-        throw std::runtime_error("GLSL program " + (program ? program->getName() : std::string("(missing)")) +
-                                 " failed to compile (see the Ogre log)");
-      }
-    }
+    const std::string problem = programProblem(kBaseMaterial);
+    if (!problem.empty()) throw std::runtime_error(problem + " (media: " + media + ")");
   } catch (const Ogre::Exception& error) {
     throw std::runtime_error(error.getFullDescription());
   }
 }
 
-ReliefMaterial::ReliefMaterial(const std::string& unique_name) : name_(unique_name) {
+bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   loadMediaOnce();
-  material_ = Ogre::MaterialManager::getSingleton().getByName(kBaseMaterial, kGroup)->clone(name_);
+  std::string problem;
+  try {
+    problem = programProblem(kBezierMaterial);
+  } catch (const Ogre::Exception& error) {
+    problem = error.getFullDescription();
+  }
+  // The shader's uniform array and its few other uniforms must fit the GL's vertex uniform
+  // space. Ogre 1.9 reports a fixed 2048 registers for GLSL, not what the GL can do: ask the GL
+  // (rviz's context is current on its thread); Ogre's figure only if that fails.
+  GLint components = 0;
+  glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &components);
+  const Ogre::RenderSystemCapabilities* capabilities = Ogre::Root::getSingleton().getRenderSystem()->getCapabilities();
+  const std::size_t registers = components > 0 ? static_cast<std::size_t>(components) / 4
+                                : capabilities                  ? capabilities->getVertexProgramConstantFloatCount()
+                                                                : 0;
+  const std::size_t needed = 16 * kMaxPatches + 16;
+  if (problem.empty() && registers < needed) {
+    problem = "the GPU has " + std::to_string(registers) + " vertex shader uniform vectors, the Bezier evaluation needs " +
+              std::to_string(needed);
+  }
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_vertices)
+    : name_(unique_name), bezier_vertices_(bezier_vertices) {
+  loadMediaOnce();
+  material_ = Ogre::MaterialManager::getSingleton()
+                  .getByName(bezier_vertices ? kBezierMaterial : kBaseMaterial, kGroup)
+                  ->clone(name_);
   setNormalMap({128, 128, 255}, 1, 1);  // flat until a relief map arrives
 }
 
@@ -81,8 +126,34 @@ void ReliefMaterial::setReliefStrength(float strength) {
 }
 
 void ReliefMaterial::setReliefTiling(float repeats_per_patch) {
-  material_->getTechnique(0)->getPass(0)->getVertexProgramParameters()->setNamedConstant("reliefTiling",
-                                                                                       repeats_per_patch);
+  vertexParameters(material_)->setNamedConstant("reliefTiling", repeats_per_patch);
+}
+
+void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
+  if (!bezier_vertices_) throw std::logic_error("ReliefMaterial " + name_ + ": patches set on a CPU-vertex material");
+  if (patches.size() > kMaxPatches) {
+    throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) + " patches; the Bezier vertex shader holds " +
+                                std::to_string(kMaxPatches));
+  }
+  control_points_.resize(patches.size() * 16 * 4);
+  float* out = control_points_.data();
+  for (const BezierPatch& patch : patches) {
+    for (const Eigen::Vector3d& point : patch.controlPoints()) {
+      *out++ = static_cast<float>(point.x());
+      *out++ = static_cast<float>(point.y());
+      *out++ = static_cast<float>(point.z());
+      *out++ = 1.0f;
+    }
+  }
+  if (!patches.empty()) vertexParameters(material_)->setNamedConstant("controlPoints", control_points_.data(), 16 * patches.size(), 4);
+}
+
+void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constants) {
+  const Ogre::GpuProgramParametersSharedPtr parameters = vertexParameters(material_);
+  parameters->setNamedConstant("wrinkleWeighting", constants ? 1.0f : 0.0f);
+  if (!constants) return;
+  parameters->setNamedConstant("wrinkleInverseThreshold", constants->inverse_threshold);
+  parameters->setNamedConstant("wrinkleInverseSaturation", constants->inverse_saturation);
 }
 
 void ReliefMaterial::setNormalMap(const std::vector<std::uint8_t>& rgb, int width, int height) {

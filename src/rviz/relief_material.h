@@ -1,6 +1,8 @@
 #pragma once
 // One bump-mapped material per surface part: a clone of dressed_human/ReliefSurface (media/) with
-// the part's colour, relief strength and tangent-space normal map.
+// the part's colour, relief strength and tangent-space normal map -- or of
+// dressed_human/ReliefBezierSurface, whose vertex shader evaluates the Bezier patches from the
+// control points set here.
 
 #include <cstdint>
 #include <string>
@@ -8,6 +10,9 @@
 
 #include <OgreMaterial.h>
 #include <OgreTexture.h>
+
+#include "dressed_human/core/bezier_patch.h"
+#include "dressed_human/core/wrinkle_placement.h"
 
 namespace dressed_human {
 
@@ -17,7 +22,15 @@ class ReliefMaterial {
   // std::runtime_error with Ogre's message when the material or its GLSL programs do not load.
   static void loadMediaOnce();
 
-  explicit ReliefMaterial(const std::string& unique_name);
+  // What the Bezier vertex shader holds per part (its uniform array, relief_surface.vert).
+  static constexpr std::size_t kMaxPatches = 192;  // the skin has 188
+  // Whether this GL can run the Bezier vertex shader; if not, `why` says what is missing.
+  // Loads the media first (may throw like loadMediaOnce).
+  static bool bezierEvaluationAvailable(std::string* why);
+
+  // bezier_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
+  // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout).
+  ReliefMaterial(const std::string& unique_name, bool bezier_vertices);
   ~ReliefMaterial();
   ReliefMaterial(const ReliefMaterial&) = delete;
   ReliefMaterial& operator=(const ReliefMaterial&) = delete;
@@ -29,11 +42,17 @@ class ReliefMaterial {
   void setReliefTiling(float repeats_per_patch);
   // RGB8 tangent-space normals (n * 0.5 + 0.5), width * height * 3 bytes, with mipmaps.
   void setNormalMap(const std::vector<std::uint8_t>& rgb, int width, int height);
+  // Bezier vertices only: the posed patches (at most kMaxPatches, else std::invalid_argument)
+  // and, for garments, the wrinkle strength's constants (null: the relief shows everywhere).
+  void setPatches(const std::vector<BezierPatch>& patches);
+  void setWrinkleStrength(const WrinkleStrengthConstants* constants);
 
  private:
   std::string name_;
   Ogre::MaterialPtr material_;
   Ogre::TexturePtr texture_;
+  bool bezier_vertices_;
+  std::vector<float> control_points_;  // xyzw per control point, reused every frame
 };
 
 }  // namespace dressed_human

@@ -1,6 +1,8 @@
 #include "surface_mesh_object.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace dressed_human {
 
@@ -18,13 +20,11 @@ void SurfaceMeshObject::setMaterial(const std::string& material) {
   if (object_->getSections().size() > 0) object_->setMaterialName(0, material_);
 }
 
-void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight) {
-  const std::size_t vertices = mesh.positions.size();
-  const std::size_t indices = mesh.indices.size();
+bool SurfaceMeshObject::beginFilling(std::size_t vertices, std::size_t indices) {
   if (vertices == 0 || indices == 0) {
     object_->clear();
     vertex_count_ = index_count_ = 0;
-    return;
+    return false;
   }
   if (object_->getSections().size() == 1) {
     // Same section, new data: Ogre keeps the hardware buffers while they are large enough and
@@ -39,6 +39,14 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float
   }
   vertex_count_ = std::max(vertex_count_, vertices);
   index_count_ = std::max(index_count_, indices);
+  return true;
+}
+
+void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight) {
+  layout_id_ = 0;
+  const std::size_t vertices = mesh.positions.size();
+  const std::size_t indices = mesh.indices.size();
+  if (!beginFilling(vertices, indices)) return;
   for (std::size_t i = 0; i < vertices; ++i) {
     const Eigen::Vector3f& p = mesh.positions[i];
     const Eigen::Vector3f& n = mesh.normals[i];
@@ -52,6 +60,30 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float
   }
   for (std::size_t i = 0; i < indices; ++i) object_->index(mesh.indices[i]);
   object_->end();
+}
+
+void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vector<Eigen::Vector4f>* inverse_rest_metric,
+                                     std::uint64_t layout_id, const Ogre::AxisAlignedBox& bounds) {
+  if (layout_id == 0 || layout_id != layout_id_) {
+    layout_id_ = layout_id;
+    const std::size_t vertices = layout.uv.size();
+    if (layout.vertex_patch.size() != vertices ||
+        (inverse_rest_metric != nullptr && inverse_rest_metric->size() != vertices)) {
+      throw std::invalid_argument("mesh layout with " + std::to_string(vertices) + " vertices has " +
+                                  std::to_string(layout.vertex_patch.size()) + " vertex patches and " +
+                                  std::to_string(inverse_rest_metric ? inverse_rest_metric->size() : vertices) +
+                                  " rest metrics");
+    }
+    if (!beginFilling(vertices, layout.indices.size())) return;
+    for (std::size_t i = 0; i < vertices; ++i) {
+      object_->position(layout.uv[i].x(), layout.uv[i].y(), static_cast<float>(layout.vertex_patch[i]));
+      const Eigen::Vector4f metric = inverse_rest_metric ? (*inverse_rest_metric)[i] : Eigen::Vector4f::Zero();
+      object_->textureCoord(metric.x(), metric.y(), metric.z(), metric.w());
+    }
+    for (const std::uint32_t index : layout.indices) object_->index(index);
+    object_->end();
+  }
+  if (object_->getSections().size() == 1) object_->setBoundingBox(bounds);
 }
 
 }  // namespace dressed_human

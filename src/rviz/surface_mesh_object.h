@@ -1,8 +1,12 @@
 #pragma once
 // An Ogre::ManualObject fed from a core TriangleMesh; refilled in place (its hardware buffers
-// reused while they are large enough, grown otherwise).
+// reused while they are large enough, grown otherwise). Either with evaluated vertices every
+// frame (update), or with a layout for the Bezier vertex shader, re-sent only when it changes
+// (updateLayout).
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <OgreManualObject.h>
 #include <OgreSceneManager.h>
@@ -21,6 +25,12 @@ class SurfaceMeshObject {
 
   // `relief_weight`: per vertex, how much relief shows (second texture coordinate); null: 1.
   void update(const TriangleMesh& mesh, const std::vector<float>* relief_weight = nullptr);
+  // Per vertex (u, v, patch) as the position and the garment's rest metric (VertexCompression::
+  // inverseRestMetric; null: zeros) as texture coordinate 0. Nothing is sent while `layout_id`
+  // stays the same. `bounds`: the posed surface's box (its control points' box), every frame --
+  // Ogre culls by it, and the (u, v, patch) positions say nothing about where the surface is.
+  void updateLayout(const TriangleMesh& layout, const std::vector<Eigen::Vector4f>* inverse_rest_metric,
+                    std::uint64_t layout_id, const Ogre::AxisAlignedBox& bounds);
   void setMaterial(const std::string& material);
   void setVisible(bool visible) { object_->setVisible(visible); }
   std::size_t rebuildCount() const { return rebuild_count_; }
@@ -32,6 +42,8 @@ class SurfaceMeshObject {
   std::size_t vertex_count_ = 0;  // largest counts seen: what the buffers hold
   std::size_t index_count_ = 0;
   std::size_t rebuild_count_ = 0;  // buffer (re)creations
+  std::uint64_t layout_id_ = 0;    // of the layout the buffers hold; 0: evaluated vertices
+  bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
 };
 
 }  // namespace dressed_human

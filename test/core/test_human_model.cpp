@@ -142,5 +142,78 @@ TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
   EXPECT_GT(strongest(1.2), 0.5f) << "wrinkles behind a knee bent 70 degrees";
 }
 
+// VertexEvaluation::kRenderer hands the renderer the layout, the posed patches and the rest
+// metric instead of vertices. What a vertex shader computes from them -- the patch at
+// (vertex_patch, uv), the wrinkle strength from the rest metric -- must be what kCpu delivers.
+TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
+  HumanModelSettings settings;
+  settings.outfit = Outfit::kJacketPants;
+  settings.garment_directory = sourcePath("config/garments");
+  HumanModel cpu(skeleton(), body(), settings);
+  HumanModel renderer(skeleton(), body(), settings);
+  renderer.setVertexEvaluation(VertexEvaluation::kRenderer);
+  LevelOfDetail lod;
+  lod.automatic = true;
+  lod.camera.position = Eigen::Vector3d(3.0, -2.0, 1.2);
+  const std::vector<SkeletonPose> poses = walkPoses(4, body().shape);
+  float strongest = 0.0f;
+  for (const SkeletonPose& pose : poses) {
+    cpu.update(pose.root, pose.bone_in_world, lod);
+    renderer.update(pose.root, pose.bone_in_world, lod);
+    ASSERT_EQ(cpu.parts().size(), renderer.parts().size());
+    for (std::size_t p = 0; p < cpu.parts().size(); ++p) {
+      const SurfacePart& expected = cpu.parts()[p];
+      const SurfacePart& part = renderer.parts()[p];
+      EXPECT_TRUE(expected.evaluated);
+      EXPECT_FALSE(part.evaluated);
+      EXPECT_EQ(part.relief_weight, nullptr);
+      EXPECT_NE(part.layout_id, expected.layout_id) << "layout ids are unique across tessellators";
+      ASSERT_EQ(part.mesh->indices, expected.mesh->indices) << part.name;
+      ASSERT_EQ(part.mesh->vertex_patch.size(), expected.mesh->vertexCount());
+      ASSERT_EQ(part.mesh->uv.size(), expected.mesh->vertexCount());
+      ASSERT_NE(part.patches, nullptr);
+      EXPECT_EQ(p > 0, part.inverse_rest_metric != nullptr);
+      double worst_position = 0.0, worst_weight = 0.0;
+      for (std::size_t i = 0; i < part.mesh->vertexCount(); ++i) {
+        const BezierPatch& patch = (*part.patches)[part.mesh->vertex_patch[i]];
+        const PatchDerivatives d = patch.derivatives(part.mesh->uv[i].x(), part.mesh->uv[i].y());
+        worst_position = std::max(worst_position, (d.position - expected.mesh->positions[i].cast<double>()).norm());
+        if (p == 0) continue;
+        // VertexCompression's formula, as relief_surface.vert evaluates it.
+        const Eigen::Vector4f& inverse = (*part.inverse_rest_metric)[i];
+        const double e = d.d_du.squaredNorm(), f = d.d_du.dot(d.d_dv), g = d.d_dv.squaredNorm();
+        const double m11 = inverse.x() * e + inverse.y() * f, m12 = inverse.x() * f + inverse.y() * g;
+        const double m21 = inverse.y() * e + inverse.z() * f, m22 = inverse.y() * f + inverse.z() * g;
+        const double half = 0.5 * (m11 - m22);
+        const double lambda_max = 0.5 * (m11 + m22) + std::sqrt(std::max(0.0, half * half + m12 * m21));
+        const double det = e * g - f * f;
+        const double lambda_min = std::max(0.0, inverse.w() * det / std::max(lambda_max, 1e-30));
+        const bool defined = inverse.w() > 0.0f && det > 1e-6 * e * g;
+        const double alpha = defined ? std::min(1.0, std::sqrt(lambda_min)) : 1.0;
+        const double effective = std::min(1.0, alpha * part.wrinkle_constants.inverse_threshold);
+        const double strength =
+            std::min(1.0, std::sqrt(std::max(0.0, 1.0 - effective * effective)) * part.wrinkle_constants.inverse_saturation);
+        worst_weight = std::max(worst_weight, std::abs(strength - (*expected.relief_weight)[i]));
+        strongest = std::max(strongest, (*expected.relief_weight)[i]);
+      }
+      EXPECT_LT(worst_position, 1e-5) << part.name;  // float storage of the CPU mesh
+      EXPECT_LT(worst_weight, 1e-3) << part.name;
+    }
+    // Same pose again: same levels, so the renderer's copy of the layout stays valid.
+    const std::uint64_t skin_layout = renderer.parts()[0].layout_id;
+    renderer.update(pose.root, pose.bone_in_world, lod);
+    EXPECT_EQ(renderer.parts()[0].layout_id, skin_layout);
+  }
+  EXPECT_GT(strongest, 0.1f) << "the walk must bend a knee enough to test the wrinkle weights";
+
+  // Displaced relief needs vertices: those parts are evaluated even in kRenderer mode.
+  ReliefMap map(8, 8);
+  renderer.setDisplacement(ReliefKind::kCloth, std::make_shared<const ReliefMap>(map), 1.0f, 1.0f, 0.01f);
+  renderer.update(poses[0].root, poses[0].bone_in_world, lod);
+  EXPECT_FALSE(renderer.parts()[0].evaluated);
+  EXPECT_TRUE(renderer.parts()[1].evaluated);
+  EXPECT_NE(renderer.parts()[1].relief_weight, nullptr);
+}
+
 }  // namespace
 }  // namespace dressed_human

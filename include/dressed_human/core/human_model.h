@@ -32,7 +32,22 @@ struct SurfacePart {
   // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
   // wrinkles behind a bent knee, none on a straight leg.
   const std::vector<float>* relief_weight = nullptr;
+  // false: `mesh` is only the layout (uv, vertex_patch, indices; positions, normals, tangents
+  // unspecified) and relief_weight is null. The renderer evaluates `patches` at (vertex_patch, uv)
+  // itself and, for garments, the wrinkle strength from `inverse_rest_metric` and
+  // `wrinkle_constants` (VertexCompression's formula). See VertexEvaluation.
+  bool evaluated = true;
+  const std::vector<BezierPatch>* patches = nullptr;  // posed, in the world frame of update()
+  std::uint64_t layout_id = 0;                        // Tessellator::layoutId() of `mesh`
+  const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex
+  WrinkleStrengthConstants wrinkle_constants;
 };
+
+// Who evaluates the surface at the mesh vertices. kRenderer leaves it to the renderer (a vertex
+// shader evaluating the Bezier patches from their control points): update() then only poses the
+// control points and re-lays out the mesh when the levels change, which is what makes a frame
+// cheap. Parts with displaced relief are always evaluated here (the displacement needs vertices).
+enum class VertexEvaluation { kCpu, kRenderer };
 
 struct LevelOfDetail {
   bool automatic = false;      // true: from the camera's screen-space error; false: `level`
@@ -75,6 +90,10 @@ class HumanModel {
   void setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling, float height_to_tile,
                        float amplitude);
 
+  // From the next update() on; kCpu by default.
+  void setVertexEvaluation(VertexEvaluation evaluation) { vertex_evaluation_ = evaluation; }
+  VertexEvaluation vertexEvaluation() const { return vertex_evaluation_; }
+
   const std::vector<SurfacePart>& parts() const { return parts_; }
   std::size_t triangleCount() const;
   // Part `part`'s posed Bezier patches and the tessellation level each got in the last update()
@@ -84,8 +103,10 @@ class HumanModel {
   const Skin& skin() const { return skin_; }
 
  private:
-  const TriangleMesh& tessellate(Tessellator& tessellator, const std::vector<BezierPatch>& patches,
-                                 const PatchTopology& topology, const LevelOfDetail& lod);
+  const std::vector<int>& levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
+                                    const LevelOfDetail& lod);
+  Tessellator& tessellatorOf(std::size_t part);
+  const PatchTopology& topologyOf(std::size_t part) const;
 
   HumanModelSettings settings_;
   Skin skin_;
@@ -95,6 +116,8 @@ class HumanModel {
   std::vector<std::unique_ptr<Tessellator>> garment_tessellators_;
   std::vector<SurfacePart> parts_;
   std::map<const Tessellator*, std::vector<int>> automatic_levels_;
+  std::vector<int> uniform_levels_;
+  VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;
     ReliefDisplacement settings;

@@ -75,6 +75,7 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3f> tangents_u;   // dF/du (zero along a collapsed v-edge)
   std::vector<Eigen::Vector3f> tangents_v;   // dF/dv
   std::vector<Eigen::Vector2f> uv;           // (u, v) in the patch that owns the vertex
+  std::vector<std::uint32_t> vertex_patch;   // that patch
   std::vector<std::uint32_t> indices;        // 3 per triangle, counter-clockwise around the normal
   std::vector<std::uint32_t> triangle_patch; // patch each triangle lies on
 
@@ -116,6 +117,12 @@ class Tessellator {
   // levels, or linked edges whose control points do not coincide.
   const TriangleMesh& tessellate(const std::vector<BezierPatch>& patches,
                                  const PatchTopology& topology, const std::vector<int>& levels);
+  // The same mesh without evaluating the surface: uv, vertex_patch, indices and triangle_patch
+  // are filled, positions, normals and tangents are sized but left as they were. For renderers
+  // that evaluate the patches themselves at (vertex_patch, uv) -- a vertex shader -- and re-send
+  // the vertices only when layoutId() changes. Same checks and exceptions as tessellate().
+  const TriangleMesh& layout(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                             const std::vector<int>& levels);
   const TriangleMesh& tessellateUniform(const std::vector<BezierPatch>& patches,
                                          const PatchTopology& topology, int level = kDefaultLevel);
   const TriangleMesh& tessellateToError(const std::vector<BezierPatch>& patches,
@@ -136,12 +143,17 @@ class Tessellator {
   }
   // How many times the vertex/triangle layout was rebuilt (it is rebuilt only when needed).
   std::size_t layoutBuildCount() const { return layout_build_count_; }
+  // Unique across all tessellators of the process and changed by every layout rebuild: a
+  // renderer holding a copy of the layout compares it to know when to re-send it.
+  std::uint64_t layoutId() const { return layout_id_; }
 
  private:
   struct OwnedBoundaryVertex;
   struct PatchLayout;
 
   bool layoutMatches(const PatchTopology& topology) const;
+  void prepareLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                     const std::vector<int>& levels);
   void buildLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology);
   void evaluateVertices(const std::vector<BezierPatch>& patches);
   const BernsteinTable& boundaryTable(int level);
@@ -158,6 +170,7 @@ class Tessellator {
   std::size_t layout_patch_count_ = 0;
   bool has_layout_ = false;
   std::size_t layout_build_count_ = 0;
+  std::uint64_t layout_id_ = 0;
 
   std::vector<PatchLayout> patch_layouts_;
   std::vector<OwnedBoundaryVertex> owned_boundary_vertices_;

@@ -222,6 +222,14 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
 /// has it, and its uv and tangents are that patch's -- and stores the inverse rest metric
 /// there; evaluate() then reads only the posed mesh's tangents: a 2x2 eigenvalue per vertex,
 /// no allocation, no patch evaluation.
+/// The per-vertex strength formula's constants (see VertexCompression::evaluate), for a renderer
+/// that evaluates the strength itself (the GLSL vertex shader):
+/// strength = min(1, sqrt(max(0, 1 - min(1, alpha * inverse_threshold)^2)) * inverse_saturation).
+struct WrinkleStrengthConstants {
+  float inverse_threshold = 1.0f;
+  float inverse_saturation = 1.0f;
+};
+
 class VertexCompression {
  public:
   explicit VertexCompression(const WrinklePlacementOptions& options = {});
@@ -243,6 +251,10 @@ class VertexCompression {
               std::vector<float>& strength);
 
   const std::vector<std::uint32_t>& vertexPatches() const { return vertex_patch_; }
+  /// Per prepared vertex: G_rest^-1 as (a, b, c) = [[a, b], [b, c]] and det(G_rest^-1); all zero
+  /// at a pole. With the posed dF/du, dF/dv this is all evaluate() needs per vertex.
+  const std::vector<Eigen::Vector4f>& inverseRestMetric() const { return inverse_rest_metric_; }
+  WrinkleStrengthConstants strengthConstants() const;
 
  private:
   WrinklePlacementOptions options_;
