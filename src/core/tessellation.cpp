@@ -72,6 +72,8 @@ void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
 
 // Curvature constant K of the bound K / n^2 (see geometricErrorBound).
 double errorBoundConstant(const BezierPatch& patch) {
+  // Maxima of squared norms, one square root each at the end: this runs for every patch every
+  // frame under automatic level of detail.
   double second_u = 0.0;
   double second_v = 0.0;
   double twist = 0.0;
@@ -79,21 +81,21 @@ double errorBoundConstant(const BezierPatch& patch) {
     for (int i = 0; i < 4; ++i) {
       if (i < 2) {
         second_u = std::max(second_u, (patch.controlPoint(i + 2, j) - 2.0 * patch.controlPoint(i + 1, j) +
-                                       patch.controlPoint(i, j)).norm());
+                                       patch.controlPoint(i, j)).squaredNorm());
       }
       if (j < 2) {
         second_v = std::max(second_v, (patch.controlPoint(i, j + 2) - 2.0 * patch.controlPoint(i, j + 1) +
-                                       patch.controlPoint(i, j)).norm());
+                                       patch.controlPoint(i, j)).squaredNorm());
       }
       if (i < 3 && j < 3) {
         twist = std::max(twist, (patch.controlPoint(i + 1, j + 1) - patch.controlPoint(i + 1, j) -
-                                 patch.controlPoint(i, j + 1) + patch.controlPoint(i, j)).norm());
+                                 patch.controlPoint(i, j + 1) + patch.controlPoint(i, j)).squaredNorm());
       }
     }
   }
-  const double bound_uu = 6.0 * second_u;  // sup |F_uu|: F_uu is a Bezier patch on 6 * second differences
-  const double bound_vv = 6.0 * second_v;
-  const double bound_uv = 9.0 * twist;     // sup |F_uv|: F_uv is a Bezier patch on 9 * twists
+  const double bound_uu = 6.0 * std::sqrt(second_u);  // sup |F_uu|: F_uu is a Bezier patch on 6 * second differences
+  const double bound_vv = 6.0 * std::sqrt(second_v);
+  const double bound_uv = 9.0 * std::sqrt(twist);     // sup |F_uv|: F_uv is a Bezier patch on 9 * twists
   return (bound_uu + 2.0 * bound_uv + bound_vv) / 8.0;
 }
 

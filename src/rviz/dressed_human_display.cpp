@@ -87,8 +87,11 @@ void DressedHumanDisplay::reportError(const std::string& name, const std::string
 }
 
 void DressedHumanDisplay::clearError(const std::string& name) {
+  // Called for every bone every frame: only a reported error has anything to clear.
+  const auto reported = logged_errors_.find(name);
+  if (reported == logged_errors_.end()) return;
   deleteStatus(QString::fromStdString(name));
-  logged_errors_.erase(name);
+  logged_errors_.erase(reported);
 }
 
 DressedHumanDisplay::DressedHumanDisplay() {
@@ -280,6 +283,9 @@ void DressedHumanDisplay::onDisable() {
 
 void DressedHumanDisplay::reset() {
   rviz::Display::reset();  // clears the statuses; TF problems report themselves again
+  logged_errors_.clear();
+  surfaces_status_.clear();
+  stale_reported_ = false;
   loadRobotDescription();
 }
 
@@ -297,6 +303,13 @@ void DressedHumanDisplay::loadRobotDescription() {
   }
   try {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
+    bone_frames_.clear();
+    bone_status_names_.clear();
+    for (const Bone& bone : skeleton_->bones()) {
+      bone_frames_.push_back(skeleton_->frameName(bone.name));
+      bone_status_names_.push_back("Frame " + bone_frames_.back());
+    }
+    root_status_name_ = "Frame " + skeleton_->rootFrame();
     leaf_bones_.clear();
     for (std::size_t b = 0; b < kBoneCount; ++b) {
       bool has_child = false;
@@ -461,50 +474,57 @@ void DressedHumanDisplay::pollSkinRelief() {
 bool DressedHumanDisplay::lookUpBones() {
   const std::shared_ptr<tf2_ros::Buffer> buffer = context_->getTF2BufferPtr();
   const std::string fixed = fixed_frame_.toStdString();
-  const std::string root = skeleton_->rootFrame();
+  const std::string& root = skeleton_->rootFrame();
   ros::Time stamp;
   try {
     // One consistent time for every bone, so that garments spanning two bones never tear: the
     // newest time at which every chain from the fixed frame to a leaf bone (head, hands, feet) is
     // known. The root's newest stamp alone is not enough: TF inserts a message's transforms one
-    // by one while rviz reads, so a bone can still lag its root by one tick.
-    stamp = buffer->lookupTransform(fixed, root, ros::Time(0)).header.stamp;
-    for (const int leaf : leaf_bones_) {
-      const std::string frame = skeleton_->frameName(skeleton_->bone(static_cast<std::size_t>(leaf)).name);
-      stamp = std::min(stamp, buffer->lookupTransform(fixed, frame, ros::Time(0)).header.stamp);
+    // by one while rviz reads, so a bone can still lag its root by one tick. tf2's latest common
+    // time gives that stamp without composing the chains; a lookup only runs to report an error.
+    const tf2::CompactFrameID fixed_id = buffer->_lookupFrameNumber(fixed);
+    bool first = true;
+    for (std::size_t chain = 0; chain <= leaf_bones_.size(); ++chain) {
+      const std::string& frame = chain == 0 ? root : bone_frames_[static_cast<std::size_t>(leaf_bones_[chain - 1])];
+      ros::Time newest;
+      if (fixed_id == 0 || buffer->_getLatestCommonTime(fixed_id, buffer->_lookupFrameNumber(frame), newest, nullptr) != 0) {
+        newest = buffer->lookupTransform(fixed, frame, ros::Time(0)).header.stamp;  // throws what is wrong
+      }
+      stamp = first ? newest : std::min(stamp, newest);
+      first = false;
     }
     root_ = toRigid(buffer->lookupTransform(fixed, root, stamp).transform);
-    clearError("Frame " + root);
+    clearError(root_status_name_);
   } catch (const tf2::TransformException& error) {
-    reportError("Frame " + root, error.what(), true);
+    reportError(root_status_name_, error.what(), true);
     return false;
   }
-  if (!stamp.isZero() && (ros::Time::now() - stamp).toSec() > kStaleSeconds) {
+  const bool stale = !stamp.isZero() && (ros::Time::now() - stamp).toSec() > kStaleSeconds;
+  if (stale) {
     setStatusStd(rviz::StatusProperty::Warn, "TF",
                  "the newest skeleton transform is " + std::to_string((ros::Time::now() - stamp).toSec()) + " s old");
-  } else {
+  } else if (stale_reported_) {
     deleteStatus("TF");
   }
+  stale_reported_ = stale;
   bool all_found = true;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     // Each bone relative to its parent (bones come parents first), composed here: tf2 then walks
     // the three links of one joint instead of the whole chain from the fixed frame every time.
     const Bone& bone = skeleton_->bone(b);
-    const std::string frame = skeleton_->frameName(bone.name);
     const RigidTransform& parent = bone.parent < 0 ? root_ : bones_[static_cast<std::size_t>(bone.parent)];
     // Eq. 5: the joint sits at the parent's shaped offset (as ForwardKinematics puts it); TF
     // carries the URDF's unshaped skeleton, so only its rotations are taken as they are.
     const Eigen::Vector3d parent_scale =
         bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
-    const std::string parent_frame =
-        bone.parent < 0 ? root : skeleton_->frameName(skeleton_->bone(static_cast<std::size_t>(bone.parent)).name);
+    const std::string& parent_frame = bone.parent < 0 ? root : bone_frames_[static_cast<std::size_t>(bone.parent)];
     try {
-      const RigidTransform local = toRigid(buffer->lookupTransform(parent_frame, frame, stamp).transform);
+      const RigidTransform local = toRigid(buffer->lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
       bones_[b].translation = parent.translation + parent.rotation * parent_scale.cwiseProduct(local.translation);
       bones_[b].rotation = parent.rotation * local.rotation;
-      clearError("Frame " + frame);
+      clearError(bone_status_names_[b]);
     } catch (const tf2::TransformException& error) {
-      reportError("Frame " + frame, error.what(), true);
+      reportError(bone_status_names_[b], error.what(), true);
       all_found = false;
     }
   }
@@ -558,10 +578,12 @@ void DressedHumanDisplay::updateSurfaces() {
     model_->update(root_, bones_, lod);
     visual_->update(model_->parts());
     if (show_skeleton_property_->getBool()) drawSkeleton();
-    setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
-                 std::to_string(model_->parts().size()) + " parts, " + std::to_string(model_->triangleCount()) +
-                     " triangles");
+    std::string surfaces = std::to_string(model_->parts().size()) + " parts, " +
+                           std::to_string(model_->triangleCount()) + " triangles";
+    if (surfaces != surfaces_status_) setStatusStd(rviz::StatusProperty::Ok, "Surfaces", surfaces);
+    surfaces_status_ = std::move(surfaces);
   } catch (const std::exception& error) {
+    surfaces_status_.clear();
     reportError("Surfaces", error.what());
   }
 }

@@ -98,6 +98,12 @@ class DressedHumanDisplay : public rviz::Display {
 
   std::unique_ptr<Skeleton> skeleton_;
   std::vector<int> leaf_bones_;  // bones no other bone hangs from: the ends of the TF chains
+  // Per bone its TF frame and the status reporting it, named once per URDF (every frame uses them).
+  std::vector<std::string> bone_frames_;
+  std::vector<std::string> bone_status_names_;
+  std::string root_status_name_;
+  bool stale_reported_ = false;
+  std::string surfaces_status_;  // what the "Surfaces" status says (set only when it changes)
   std::unique_ptr<BodyDescription> body_;   // as the body file says
   BodyShape shape_;                         // the file's shape times the Body Shape properties
   std::unique_ptr<HumanModel> model_;

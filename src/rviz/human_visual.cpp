@@ -4,21 +4,6 @@
 #include <OgreTechnique.h>
 
 namespace dressed_human {
-namespace {
-
-// A Bezier patch lies in the convex hull of its control points, so their box bounds it.
-Ogre::AxisAlignedBox controlPointBounds(const std::vector<BezierPatch>& patches) {
-  Ogre::AxisAlignedBox box;
-  for (const BezierPatch& patch : patches) {
-    for (const Eigen::Vector3d& point : patch.controlPoints()) {
-      box.merge(Ogre::Vector3(static_cast<Ogre::Real>(point.x()), static_cast<Ogre::Real>(point.y()),
-                              static_cast<Ogre::Real>(point.z())));
-    }
-  }
-  return box;
-}
-
-}  // namespace
 
 HumanVisual::HumanVisual(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& name_prefix)
     : scene_manager_(scene_manager), node_(parent->createChildSceneNode()), name_prefix_(name_prefix) {}
@@ -51,14 +36,20 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       }
     }
     Part& part = parts_[i];
-    part.material->setColour(source.colour.x(), source.colour.y(), source.colour.z(), source.colour.w());
+    if (!part.colour_set || part.colour != source.colour) {
+      part.material->setColour(source.colour.x(), source.colour.y(), source.colour.z(), source.colour.w());
+      part.colour = source.colour;
+      part.colour_set = true;
+    }
     if (source.evaluated) {
       part.mesh->update(*source.mesh, source.relief_weight);
       continue;
     }
-    part.material->setPatches(*source.patches);
+    const Eigen::AlignedBox3f bounds = part.material->setPatches(*source.patches);
     part.material->setWrinkleStrength(source.inverse_rest_metric ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, source.inverse_rest_metric, source.layout_id, controlPointBounds(*source.patches));
+    part.mesh->updateLayout(*source.mesh, source.inverse_rest_metric, source.layout_id,
+                            Ogre::AxisAlignedBox(bounds.min().x(), bounds.min().y(), bounds.min().z(), bounds.max().x(),
+                                                 bounds.max().y(), bounds.max().z()));
   }
 }
 

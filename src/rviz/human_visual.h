@@ -38,6 +38,8 @@ class HumanVisual {
     std::string name;
     ReliefKind relief;
     bool bezier_vertices;  // the vertex shader evaluates the patches (SurfacePart::evaluated false)
+    Eigen::Vector4f colour = Eigen::Vector4f::Zero();
+    bool colour_set = false;
     std::unique_ptr<ReliefMaterial> material;
     std::unique_ptr<SurfaceMeshObject> mesh;
   };

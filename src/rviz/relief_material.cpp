@@ -129,7 +129,7 @@ void ReliefMaterial::setReliefTiling(float repeats_per_patch) {
   vertexParameters(material_)->setNamedConstant("reliefTiling", repeats_per_patch);
 }
 
-void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
+Eigen::AlignedBox3f ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
   if (!bezier_vertices_) throw std::logic_error("ReliefMaterial " + name_ + ": patches set on a CPU-vertex material");
   if (patches.size() > kMaxPatches) {
     throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) + " patches; the Bezier vertex shader holds " +
@@ -137,15 +137,19 @@ void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
   }
   control_points_.resize(patches.size() * 16 * 4);
   float* out = control_points_.data();
+  Eigen::AlignedBox3f bounds;
   for (const BezierPatch& patch : patches) {
     for (const Eigen::Vector3d& point : patch.controlPoints()) {
-      *out++ = static_cast<float>(point.x());
-      *out++ = static_cast<float>(point.y());
-      *out++ = static_cast<float>(point.z());
+      const Eigen::Vector3f p = point.cast<float>();
+      bounds.extend(p);
+      *out++ = p.x();
+      *out++ = p.y();
+      *out++ = p.z();
       *out++ = 1.0f;
     }
   }
   if (!patches.empty()) vertexParameters(material_)->setNamedConstant("controlPoints", control_points_.data(), 16 * patches.size(), 4);
+  return bounds;
 }
 
 void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constants) {

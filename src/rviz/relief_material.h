@@ -11,6 +11,8 @@
 #include <OgreMaterial.h>
 #include <OgreTexture.h>
 
+#include <Eigen/Geometry>
+
 #include "dressed_human/core/bezier_patch.h"
 #include "dressed_human/core/wrinkle_placement.h"
 
@@ -44,7 +46,8 @@ class ReliefMaterial {
   void setNormalMap(const std::vector<std::uint8_t>& rgb, int width, int height);
   // Bezier vertices only: the posed patches (at most kMaxPatches, else std::invalid_argument)
   // and, for garments, the wrinkle strength's constants (null: the relief shows everywhere).
-  void setPatches(const std::vector<BezierPatch>& patches);
+  // Returns the box of the control points, which holds the surface (convex hull property).
+  Eigen::AlignedBox3f setPatches(const std::vector<BezierPatch>& patches);
   void setWrinkleStrength(const WrinkleStrengthConstants* constants);
 
  private:
