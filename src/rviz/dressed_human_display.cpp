@@ -395,7 +395,10 @@ void DressedHumanDisplay::updateVertexEvaluation() {
   }
   const bool gpu = vertex_evaluation_property_->getOptionInt() == kGpuVertices;
   if (gpu && !problem.empty()) {
-    setStatusStd(rviz::StatusProperty::Warn, "Vertex Evaluation", problem + "; the CPU evaluates the vertices");
+    const std::string text = problem + "; the CPU evaluates the vertices";
+    setStatusStd(rviz::StatusProperty::Warn, "Vertex Evaluation", text);
+    ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': Vertex Evaluation: %s", getName().toStdString().c_str(),
+                   text.c_str());
   } else {
     deleteStatus("Vertex Evaluation");
   }

@@ -21,6 +21,12 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     const bool bezier_vertices = !source.evaluated;
     if (i == parts_.size() || parts_[i].name != source.name || parts_[i].relief != source.relief ||
         parts_[i].bezier_vertices != bezier_vertices) {
+      if (i < parts_.size()) {
+        // The replacement's material takes the same name: the old one must be gone first
+        // (its mesh before it, which refers to it by that name).
+        parts_[i].mesh.reset();
+        parts_[i].material.reset();
+      }
       Part part;
       part.name = source.name;
       part.relief = source.relief;

@@ -51,6 +51,30 @@ class DisplayLifecycleTest : public ::testing::Test {
     }
     return rviz::StatusProperty::Error;
   }
+  // True once the display has drawn the human (its "Surfaces" status exists).
+  bool drawn() const {
+    for (int i = 0; i < display_->numChildren(); ++i) {
+      auto* list = dynamic_cast<rviz::StatusProperty*>(display_->childAt(i));
+      for (int s = 0; list && s < list->numChildren(); ++s) {
+        if (list->childAt(s)->getName() == "Surfaces") return true;
+      }
+    }
+    return false;
+  }
+  // Statuses at Error level other than `expected`, as "name: text" (empty: none).
+  std::string unexpectedErrors(const QString& expected) const {
+    std::string errors;
+    for (int i = 0; i < display_->numChildren(); ++i) {
+      auto* list = dynamic_cast<rviz::StatusProperty*>(display_->childAt(i));
+      for (int s = 0; list && s < list->numChildren(); ++s) {
+        auto* status = dynamic_cast<rviz::StatusProperty*>(list->childAt(s));
+        if (status && status->getLevel() == rviz::StatusProperty::Error && status->getName() != expected) {
+          errors += status->getName().toStdString() + ": " + status->getValue().toString().toStdString() + "\n";
+        }
+      }
+    }
+    return errors;
+  }
 
   rviz::RenderPanel panel_;
   rviz::VisualizationManager manager_;
@@ -61,8 +85,9 @@ class DisplayLifecycleTest : public ::testing::Test {
 TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(60.0);
-  while (level() != rviz::StatusProperty::Ok && ros::WallTime::now() < deadline) frame();
-  ASSERT_EQ(level(), rviz::StatusProperty::Ok) << "no OK status: is the skeleton publishing TF?";
+  while ((level() != rviz::StatusProperty::Ok || !drawn()) && ros::WallTime::now() < deadline) frame();
+  ASSERT_TRUE(drawn()) << "the human was never drawn: is the skeleton publishing TF?";
+  ASSERT_EQ(level(), rviz::StatusProperty::Ok);
   legs_ = dynamic_cast<rviz::VectorProperty*>(display_->subProp("Body Shape")->subProp("Legs"));
   ASSERT_NE(legs_, nullptr) << "no Body Shape / Legs property";
 
@@ -76,6 +101,7 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
     display_->subProp("Show Skeleton")->setValue(i % 4 == 1);
     display_->subProp("Level of Detail")->setValue(lod[(i / 2) % 2]);
     display_->subProp("Tessellation Level")->setValue(2 + i % 7);
+    display_->subProp("Vertex Evaluation")->setValue(i % 3 == 2 ? "CPU" : "GPU");
     display_->subProp("Relief Strength")->setValue(0.5 + 0.1 * (i % 10));
     if (i % 50 == 0) display_->subProp("Skin Seed")->setValue(1 + (i / 50) % 3);
     if (i % 10 == 0) display_->reset();
@@ -87,16 +113,20 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
     }
     if (i % 100 == 48) legs_->setVector(Ogre::Vector3(1.0f, 1.0f, 1.0f));
     frames(2);
+    // Only the deliberately bad body shape may be an error; anything else fails the cycle.
+    const std::string errors = unexpectedErrors("Body Shape");
+    EXPECT_TRUE(errors.empty()) << "cycle " << i << ":\n" << errors;
+    return errors.empty();
   };
   // Warm-up: caches, textures, every level and relief mode, the largest buffers. Mesa's
   // software GL driver keeps growing slowly under this churn (heaptrack: the unfreed blocks are
   // allocated inside swrast_dri.so, none in this package), hence the long warm-up.
-  for (int i = 0; i < 300; ++i) cycle(i);
+  for (int i = 0; i < 300; ++i) ASSERT_TRUE(cycle(i));
   const long before = residentKilobytes();
-  for (int i = 0; i < 1000; ++i) cycle(i);
+  for (int i = 0; i < 1000; ++i) ASSERT_TRUE(cycle(i));
   frames(30);
   const long after = residentKilobytes();
-  std::printf("resident memory: %ld kB before, %ld kB after 1000 cycles (%+.2f %%)\n", before, after,
+  std::fprintf(stderr, "resident memory: %ld kB before, %ld kB after 1000 cycles (%+.2f %%)\n", before, after,
               100.0 * static_cast<double>(after - before) / static_cast<double>(before));
   EXPECT_LE(after, before + before / 20);
   EXPECT_EQ(level(), rviz::StatusProperty::Ok);

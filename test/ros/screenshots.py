@@ -12,7 +12,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 # Placeholders of test/ros/data/display_test.rviz a test need not set.
-DEFAULT_REPLACEMENTS = {"SHOW_SKELETON": "false", "LEGS_THICKNESS": "1.0"}
+DEFAULT_REPLACEMENTS = {"SHOW_SKELETON": "false", "LEGS_THICKNESS": "1.0", "VERTEX_EVALUATION": "GPU"}
 
 
 class Rviz:

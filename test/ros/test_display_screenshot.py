@@ -21,6 +21,9 @@ class DisplayScreenshotTest(unittest.TestCase):
         runs = {mode: {"RELIEF_MODE": mode} for mode in ("Bump mapping", "Flat", "Displaced geometry")}
         # The skeleton drawn through the clothes, on a body with legs twice as thick (Eq. 5 a, b).
         runs["Skeleton and thick legs"] = {"RELIEF_MODE": "Flat", "SHOW_SKELETON": "true", "LEGS_THICKNESS": "2.0"}
+        # The other runs let the vertex shader evaluate the patches (the default); this one has
+        # the CPU evaluate every vertex, the reference the GPU path must reproduce.
+        runs["CPU vertices"] = {"RELIEF_MODE": "Bump mapping", "VERTEX_EVALUATION": "CPU"}
         for name, replacements in runs.items():
             path = os.path.join(cls.directory, name.replace(" ", "_") + ".png")
             with Rviz("display_test.rviz", replacements) as rviz:
@@ -94,6 +97,19 @@ class DisplayScreenshotTest(unittest.TestCase):
             return float(numpy.median(band.sum(axis=1)))
         rospy.loginfo("shank band width: thick legs %.0f px, default %.0f px", lower_width(image), lower_width(flat))
         self.assertGreater(lower_width(image), 1.4 * lower_width(flat))
+
+    def test_gpu_vertices_draw_what_the_cpu_evaluates(self):
+        gpu, cpu = self.images["Bump mapping"].astype(float), self.images["CPU vertices"].astype(float)
+        either = figure_mask(self.images["Bump mapping"]) | figure_mask(self.images["CPU vertices"])
+        difference = numpy.abs(gpu - cpu).max(axis=2)[either]
+        rospy.loginfo("GPU against CPU vertices: mean |difference| %.3f over %d figure pixels, %d above 40",
+                      difference.mean(), either.sum(), (difference > 40).sum())
+        # Same surface in float either way; only rounding (and the approximate pole normals of
+        # the shader) may differ: a handful of pixels along silhouettes.
+        self.assertLess(difference.mean(), 1.0)
+        self.assertLess((difference > 40).sum(), 0.002 * either.sum())
+        for name, output in self.outputs.items():
+            self.assertNotIn("the CPU evaluates the vertices", output, name)
 
     def test_no_error_reported(self):
         for mode, output in self.outputs.items():
