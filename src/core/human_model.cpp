@@ -1,11 +1,24 @@
 #include "dressed_human/core/human_model.h"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "dressed_human/core/garment_file.h"
 
 namespace dressed_human {
 namespace {
+
+constexpr int kDropAfterUpdates = 60;  // 2 s at rviz's 30 fps
+constexpr std::array<int, 12> kLevelLadder{{1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64}};
+
+// Index of the smallest ladder level >= level (the top one beyond it).
+int ladderRung(int level) {
+  for (std::size_t r = 0; r < kLevelLadder.size(); ++r) {
+    if (kLevelLadder[r] >= level) return static_cast<int>(r);
+  }
+  return static_cast<int>(kLevelLadder.size()) - 1;
+}
 
 SurfacePart surfacePart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour) {
   SurfacePart part;
@@ -71,11 +84,30 @@ const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, co
     // Levels from the screen-space error, with hysteresis: a level drops only when two below
     // the current one would do. Otherwise a walking human flickers between levels and the
     // tessellator rebuilds its layout every frame instead of only re-evaluating vertices.
-    std::vector<int>& levels = automatic_levels_[&tessellator];
+    AutomaticLevels& automatic = automatic_levels_[&tessellator];
+    std::vector<int>& levels = automatic.levels;
     levels.resize(patches.size(), 0);
+    automatic.frames_below.resize(patches.size(), 0);
+    const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kRenderer;
     for (std::size_t p = 0; p < patches.size(); ++p) {
       const int wanted = levelForScreenError(patches[p], lod.camera, lod.max_error_pixels, lod.max_level);
-      if (wanted > levels[p] || wanted < levels[p] - 1) levels[p] = wanted;
+      if (coarse_steps) {
+        // When the renderer evaluates the vertices, a frame costs the CPU almost nothing unless
+        // the layout changes, and a few more triangles cost the vertex shader little. So levels
+        // move on a coarse ladder (rounded up: the error bound still holds), rise at once, and
+        // drop only after two rungs less have sufficed for kDropAfterUpdates updates in a row:
+        // longer than a gait cycle, so a walking human keeps its layout.
+        const int rung = ladderRung(wanted);
+        const int current = levels[p] == 0 ? -1 : ladderRung(levels[p]);
+        int& below = automatic.frames_below[p];
+        below = rung + 1 < current ? below + 1 : 0;
+        if (rung > current || below > kDropAfterUpdates) {
+          levels[p] = std::min(kLevelLadder[static_cast<std::size_t>(rung)], lod.max_level);
+          below = 0;
+        }
+      } else if (wanted > levels[p] || wanted < levels[p] - 1) {
+        levels[p] = wanted;
+      }
     }
     return levels;
   }

@@ -115,7 +115,11 @@ class HumanModel {
   std::vector<Garment> garments_;
   std::vector<std::unique_ptr<Tessellator>> garment_tessellators_;
   std::vector<SurfacePart> parts_;
-  std::map<const Tessellator*, std::vector<int>> automatic_levels_;
+  struct AutomaticLevels {
+    std::vector<int> levels;        // per patch, the level in use
+    std::vector<int> frames_below;  // per patch, updates in a row a lower level would have done
+  };
+  std::map<const Tessellator*, AutomaticLevels> automatic_levels_;
   std::vector<int> uniform_levels_;
   VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
   struct Displacement {
