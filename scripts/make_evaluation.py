@@ -118,7 +118,8 @@ def scene_budget_section(results):
                 continue
             colour = {"automatic": "tab:green", "automatic, GPU vertices": "tab:purple"}.get(
                 r["label"], "tab:blue" if r["level"] == "4" else "tab:red")
-            text = "%s, %d× at %g m" % (r["label"], humans, r["distance_m"])
+            short = {"automatic": "auto", "automatic, GPU vertices": "GPU"}.get(r["label"], "L" + r["level"])
+            text = "%s %d×%gm" % (short, humans, r["distance_m"])
             for ax, x in ((axes[0], r["triangles"]), (axes[1], r["median_update_ms"])):
                 ax.plot(x, max(r["max_error_px"], 1e-3), marker, color=colour)
                 ax.annotate(text, (x, max(r["max_error_px"], 1e-3)), textcoords="offset points", xytext=(4, 3),
@@ -131,8 +132,8 @@ def scene_budget_section(results):
         ax.set_ylabel("max tessellation error on screen (pixels, bound)")
         ax.axhline(1.0, color="grey", lw=0.8, ls="--")
         ax.grid(True, which="both", alpha=0.3)
-    figure.suptitle("Scene budget: automatic level of detail (green; purple: GPU vertex evaluation) vs fixed level 4 "
-                    "(blue) and 8 (red)")
+    figure.suptitle("Scene budget: automatic level of detail (auto, green; GPU vertex evaluation, purple) vs fixed "
+                    "level 4 (L4, blue) and 8 (L8, red); n×d: n humans at d m")
     figure.tight_layout()
     figure.savefig(os.path.join(DOCS, "scene_budget.png"), dpi=110)
     plt.close(figure)
