@@ -65,7 +65,6 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float
 void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vector<Eigen::Vector4f>* inverse_rest_metric,
                                      std::uint64_t layout_id, const Ogre::AxisAlignedBox& bounds) {
   if (layout_id == 0 || layout_id != layout_id_) {
-    layout_id_ = layout_id;
     const std::size_t vertices = layout.uv.size();
     if (layout.vertex_patch.size() != vertices ||
         (inverse_rest_metric != nullptr && inverse_rest_metric->size() != vertices)) {
@@ -82,6 +81,7 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vect
     }
     for (const std::uint32_t index : layout.indices) object_->index(index);
     object_->end();
+    layout_id_ = layout_id;  // only now: a layout that failed above is tried again next frame
   }
   if (object_->getSections().size() == 1) object_->setBoundingBox(bounds);
 }
