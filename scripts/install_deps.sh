@@ -10,7 +10,7 @@ packages=(
   # ROS 1 (Debian's own packages)
   libroscpp-dev libroslib-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
   libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev
-  pluginlib-dev librviz-dev rviz qtbase5-dev
+  pluginlib-dev librviz-dev rviz qtbase5-dev libgl-dev
   rosout rosbash python3-roslaunch python3-rostopic python3-rosnode python3-rosbag python3-rostest librostest-dev python3-rosgraph
   ros-robot-state-publisher joint-state-publisher tf2-tools python3-tf2-ros
   python3-sensor-msgs python3-tf2-msgs python3-geometry-msgs
