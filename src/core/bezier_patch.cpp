@@ -81,10 +81,14 @@ BernsteinTable BernsteinTable::uniformInterior(int segments) {
   return BernsteinTable(parameters);
 }
 
-BezierPatch::BezierPatch(const ControlPoints& control_points) : control_points_(control_points) {
+BezierPatch::BezierPatch(const ControlPoints& control_points) { setControlPoints(control_points); }
+
+void BezierPatch::setControlPoints(const ControlPoints& control_points) {
+  // Everything is checked on the input first, so that a throw leaves this patch as it was.
+  Eigen::Vector3d box_min = control_points[0], box_max = control_points[0];
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
-      const Eigen::Vector3d& p = control_points_[index(i, j)];
+      const Eigen::Vector3d& p = control_points[index(i, j)];
       if (!p.allFinite()) {
         std::ostringstream message;
         message << "Bezier patch control point P[" << i << "][" << j << "] (u-index " << i
@@ -92,18 +96,19 @@ BezierPatch::BezierPatch(const ControlPoints& control_points) : control_points_(
                 << p.z() << ")";
         throw std::invalid_argument(message.str());
       }
+      box_min = box_min.cwiseMin(p);
+      box_max = box_max.cwiseMax(p);
     }
   }
-  net_ = asMatrix(control_points_);
-  box_min_ = box_max_ = control_points_[0];
-  for (const Eigen::Vector3d& p : control_points_) {
-    box_min_ = box_min_.cwiseMin(p);
-    box_max_ = box_max_.cwiseMax(p);
-  }
-  scale_ = (box_max_ - box_min_).norm();
-  if (!(scale_ > 0.0)) {
+  const double scale = (box_max - box_min).norm();
+  if (!(scale > 0.0)) {
     throw std::invalid_argument("Bezier patch: all 16 control points coincide, the patch is a point");
   }
+  control_points_ = control_points;
+  net_ = asMatrix(control_points_);
+  box_min_ = box_min;
+  box_max_ = box_max;
+  scale_ = scale;
   const double threshold = kDegenerateCrossRelative * scale_ * scale_;
   degenerate_cross_squared_ = threshold * threshold;
 }

@@ -66,6 +66,7 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     garments_.emplace_back(description, skeleton, body.shape);
     rest_patches_.push_back(garments_.back().patches());  // built in the rest pose
     compressions_.emplace_back();
+    compressed_layouts_.push_back(0);
     wrinkle_weights_.emplace_back();
     garment_tessellators_.push_back(std::make_unique<Tessellator>());
     const auto colour = settings_.garment_colours.find(name);
@@ -148,12 +149,19 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     if (p > 0) {
       const std::size_t g = p - 1;
       VertexCompression& compression = compressions_[g];
+      // The rest metric belongs to the layout: re-derived only when the tessellator laid the
+      // mesh out anew (comparing layouts vertex by vertex every frame would cost more than
+      // the rest of a GPU-evaluated frame).
+      if (compressed_layouts_[g] != part.layout_id) {
+        compression.prepare(*part.mesh, rest_patches_[g]);
+        compressed_layouts_[g] = part.layout_id;
+      }
       if (evaluate) {
-        compression.update(*part.mesh, rest_patches_[g], wrinkle_weights_[g]);
+        wrinkle_weights_[g].resize(part.mesh->vertexCount());
+        compression.evaluate(*part.mesh, nullptr, wrinkle_weights_[g].data());
         part.relief_weight = &wrinkle_weights_[g];
         part.inverse_rest_metric = nullptr;
       } else {
-        if (!compression.preparedFor(*part.mesh)) compression.prepare(*part.mesh, rest_patches_[g]);
         part.relief_weight = nullptr;
         part.inverse_rest_metric = &compression.inverseRestMetric();
       }

@@ -280,7 +280,7 @@ void Skin::assemblePatches() {
     for (int j = 0; j < 4; ++j) {
       for (int i = 0; i < 4; ++i) points[BezierPatch::index(i, j)] = (*rows[j])[static_cast<std::size_t>((3 * q + i) % 12)];
     }
-    patches_[patch] = BezierPatch(points);
+    patches_[patch].setControlPoints(points);
   };
   for (std::size_t s = 0; s < segments_.size(); ++s) {
     const SkinSegment& segment = segments_[s];

@@ -282,5 +282,29 @@ TEST(BezierPatch, RejectsBadInput) {
   EXPECT_THROW(patch.normal(0.5, std::nan("")), std::invalid_argument);
 }
 
+TEST(BezierPatch, SetControlPointsEqualsConstructionAndLeavesThePatchOnError) {
+  std::mt19937 random(11);
+  const BezierPatch::ControlPoints first = randomControlPoints(random);
+  const BezierPatch::ControlPoints second = randomControlPoints(random);
+  BezierPatch patch(first);
+  patch.setControlPoints(second);
+  const BezierPatch fresh(second);
+  EXPECT_EQ(patch.boundingBoxMin(), fresh.boundingBoxMin());
+  EXPECT_EQ(patch.boundingBoxMax(), fresh.boundingBoxMax());
+  EXPECT_EQ(patch.scale(), fresh.scale());
+  for (const double u : {0.0, 0.3, 1.0}) {
+    EXPECT_EQ(patch.position(u, 0.7), fresh.position(u, 0.7));
+    EXPECT_EQ(patch.normal(u, 0.7), fresh.normal(u, 0.7));
+  }
+  BezierPatch::ControlPoints bad = first;
+  bad[BezierPatch::index(3, 3)].x() = std::nan("");
+  EXPECT_THROW(patch.setControlPoints(bad), std::invalid_argument);
+  BezierPatch::ControlPoints point;
+  point.fill(Eigen::Vector3d(1, 2, 3));
+  EXPECT_THROW(patch.setControlPoints(point), std::invalid_argument);
+  EXPECT_EQ(patch.controlPoints(), second) << "a rejected update leaves the patch as it was";
+  EXPECT_EQ(patch.position(0.4, 0.4), fresh.position(0.4, 0.4));
+}
+
 }  // namespace
 }  // namespace dressed_human

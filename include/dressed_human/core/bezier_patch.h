@@ -80,6 +80,9 @@ class BezierPatch {
 
   // Throws std::invalid_argument if a control point is not finite or if all 16 coincide.
   explicit BezierPatch(const ControlPoints& control_points);
+  // The same in place (posing a surface every frame without a temporary patch); same checks and
+  // exceptions, and a throw leaves the patch unchanged.
+  void setControlPoints(const ControlPoints& control_points);
 
   const ControlPoints& controlPoints() const { return control_points_; }
   const Eigen::Vector3d& controlPoint(int i, int j) const { return control_points_[index(i, j)]; }

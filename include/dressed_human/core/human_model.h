@@ -131,6 +131,7 @@ class HumanModel {
   // Per garment: its rest-pose patches, the per-vertex compression measure, the weights.
   std::vector<std::vector<BezierPatch>> rest_patches_;
   std::vector<VertexCompression> compressions_;
+  std::vector<std::uint64_t> compressed_layouts_;  // Tessellator::layoutId() each was prepared for
   std::vector<std::vector<float>> wrinkle_weights_;  // per surface, last levels used
 };
 
