@@ -26,15 +26,14 @@ void requireUnitParameter(double t, const char* name) {
   }
 }
 
-// The control net as a 3x16 matrix, column index(i, j); block 4j..4j+3 is the v-row j.
-using ControlNet = Eigen::Matrix<double, 3, 16>;
+// The control net as a 3x16 matrix, column index(i, j); block 4j..4j+3 is the v-row j. A view
+// of the control points themselves (16 packed Vector3d are that matrix's storage), not a copy:
+// posing writes every patch every frame.
+using ControlNet = Eigen::Map<const Eigen::Matrix<double, 3, 16>>;
 using ControlRow = Eigen::Matrix<double, 3, 4>;
+static_assert(sizeof(BezierPatch::ControlPoints) == 48 * sizeof(double), "control points must be packed");
 
-ControlNet asMatrix(const BezierPatch::ControlPoints& points) {
-  ControlNet net;
-  for (int c = 0; c < 16; ++c) net.col(c) = points[c];
-  return net;
-}
+ControlNet netOf(const BezierPatch::ControlPoints& points) { return ControlNet(points[0].data()); }
 
 }  // namespace
 
@@ -105,7 +104,6 @@ void BezierPatch::setControlPoints(const ControlPoints& control_points) {
     throw std::invalid_argument("Bezier patch: all 16 control points coincide, the patch is a point");
   }
   control_points_ = control_points;
-  net_ = asMatrix(control_points_);
   box_min_ = box_min;
   box_max_ = box_max;
   scale_ = scale;
@@ -126,14 +124,14 @@ ControlRow contractV(const ControlNet& net, const Eigen::Vector4d& v_weights) {
 Eigen::Vector3d BezierPatch::position(double u, double v) const {
   requireUnitParameter(u, "u");
   requireUnitParameter(v, "v");
-  const ControlNet& net = net_;
+  const ControlNet net = netOf(control_points_);
   return contractV(net, cubicBernsteinWeights(v).value) * cubicBernsteinWeights(u).value;
 }
 
 PatchDerivatives BezierPatch::derivatives(double u, double v) const {
   requireUnitParameter(u, "u");
   requireUnitParameter(v, "v");
-  const ControlNet& net = net_;
+  const ControlNet net = netOf(control_points_);
   const BernsteinWeights bu = cubicBernsteinWeights(u);
   const BernsteinWeights bv = cubicBernsteinWeights(v);
   const ControlRow row = contractV(net, bv.value);
@@ -162,7 +160,7 @@ PatchSample BezierPatch::sample(double u, double v) const {
 
 PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u,
                                 const BernsteinWeights& v_weights, double v) const {
-  const ControlNet& net = net_;
+  const ControlNet net = netOf(control_points_);
   const ControlRow row = contractV(net, v_weights.value);
   const ControlRow row_dv = contractV(net, v_weights.first_derivative);
   PatchSample s;
@@ -175,7 +173,7 @@ PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u,
 
 void BezierPatch::evaluateGrid(const BernsteinTable& u_table, const BernsteinTable& v_table,
                                 const SurfaceSampleArrays& out) const {
-  const ControlNet& net = net_;
+  const ControlNet net = netOf(control_points_);
   const std::size_t u_count = u_table.size();
   std::size_t k = 0;
   for (std::size_t b = 0; b < v_table.size(); ++b) {
@@ -226,7 +224,7 @@ Eigen::Vector3d BezierPatch::unitNormal(const Eigen::Vector3d& d_du, const Eigen
 // collapsed edges meet, orders 2+ take over. Approaching toward the patch centre picks the
 // one-sided limit from the inside at corners, where the limit may depend on the direction.
 Eigen::Vector3d BezierPatch::limitNormal(double u, double v) const {
-  const ControlNet& net = net_;
+  const ControlNet net = netOf(control_points_);
   const std::array<Eigen::Vector4d, 4> bu = cubicBernsteinDerivatives(u);
   const std::array<Eigen::Vector4d, 4> bv = cubicBernsteinDerivatives(v);
   Eigen::Vector3d derivative[4][4];  // [a][b] = d^{a+b}F / du^a dv^b

@@ -111,9 +111,7 @@ class BezierPatch {
                               double v) const;
   Eigen::Vector3d limitNormal(double u, double v) const;
 
-  ControlPoints control_points_;
-  // The same points as columns index(i, j): the layout the evaluation kernels contract against.
-  Eigen::Matrix<double, 3, 16> net_;
+  ControlPoints control_points_;  // packed: also the 3 x 16 matrix the evaluation contracts against
   Eigen::Vector3d box_min_;
   Eigen::Vector3d box_max_;
   double scale_ = 0.0;
