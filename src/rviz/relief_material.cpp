@@ -153,6 +153,13 @@ Eigen::AlignedBox3f ReliefMaterial::setPatches(const std::vector<BezierPatch>& p
 }
 
 void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constants) {
+  const WrinkleStrengthConstants wanted = constants ? *constants : WrinkleStrengthConstants{0.0f, 0.0f};
+  if (wrinkle_strength_set_ && wanted.inverse_threshold == wrinkle_strength_.inverse_threshold &&
+      wanted.inverse_saturation == wrinkle_strength_.inverse_saturation) {
+    return;  // every frame otherwise: three constant lookups by name
+  }
+  wrinkle_strength_ = wanted;
+  wrinkle_strength_set_ = true;
   const Ogre::GpuProgramParametersSharedPtr parameters = vertexParameters(material_);
   parameters->setNamedConstant("wrinkleWeighting", constants ? 1.0f : 0.0f);
   if (!constants) return;
