@@ -117,36 +117,40 @@ struct VertexStretchInput {
   const Eigen::Vector3f* tangents_u;
   const Eigen::Vector3f* tangents_v;
   std::size_t count;
-  float inverse_threshold;
-  float inverse_saturation;
+  WrinkleStrengthConstants constants;
 };
 
-// The per-frame kernel of VertexCompression::evaluate: selects rather than branches, outputs
-// chosen at compile time (no per-vertex tests of the output pointers). Not vectorized by GCC
-// at -O3 (sqrt's errno path is control flow); ~11 ns per vertex measured (bench_relief).
+// sqrt of the smaller eigenvalue of G_rest^-1 G_posed, clamped to 1; 1 where undefined. Selects
+// rather than branches (the per-frame kernel below inlines it).
+inline float stretchAlpha(const Eigen::Vector4f& inverse, const Eigen::Vector3f& tu, const Eigen::Vector3f& tv) {
+  const float e = tu.squaredNorm(), f = tu.dot(tv), g = tv.squaredNorm();
+  const float m11 = inverse.x() * e + inverse.y() * f;
+  const float m12 = inverse.x() * f + inverse.y() * g;
+  const float m21 = inverse.y() * e + inverse.z() * f;
+  const float m22 = inverse.y() * f + inverse.z() * g;
+  const float half_difference = 0.5f * (m11 - m22);
+  const float lambda_max = 0.5f * (m11 + m22) + std::sqrt(std::max(0.0f, half_difference * half_difference + m12 * m21));
+  const float det_posed = e * g - f * f;
+  const float lambda_min = std::max(0.0f, inverse.w() * det_posed / std::max(lambda_max, 1e-30f));
+  // A pole at rest (inverse zero) or in this pose (rank < 2): no stretch defined.
+  const bool defined = inverse.w() > 0.0f && det_posed > 1e-6f * e * g;
+  return defined ? std::min(1.0f, std::sqrt(lambda_min)) : 1.0f;
+}
+
+inline float strengthOf(float alpha, const WrinkleStrengthConstants& constants) {
+  const float effective = std::min(1.0f, alpha * constants.inverse_threshold);
+  return std::min(1.0f, std::sqrt(std::max(0.0f, 1.0f - effective * effective)) * constants.inverse_saturation);
+}
+
+// The per-frame kernel of VertexCompression::evaluate, outputs chosen at compile time (no
+// per-vertex tests of the output pointers). Not vectorized by GCC at -O3 (sqrt's errno path is
+// control flow); ~11 ns per vertex measured (bench_relief).
 template <bool kAlpha, bool kStrength>
 void vertexStretch(const VertexStretchInput& in, float* alpha, float* strength) {
   for (std::size_t i = 0; i < in.count; ++i) {
-    const Eigen::Vector4f& inverse = in.inverse_rest_metric[i];
-    const Eigen::Vector3f& tu = in.tangents_u[i];
-    const Eigen::Vector3f& tv = in.tangents_v[i];
-    const float e = tu.squaredNorm(), f = tu.dot(tv), g = tv.squaredNorm();
-    const float m11 = inverse.x() * e + inverse.y() * f;
-    const float m12 = inverse.x() * f + inverse.y() * g;
-    const float m21 = inverse.y() * e + inverse.z() * f;
-    const float m22 = inverse.y() * f + inverse.z() * g;
-    const float half_difference = 0.5f * (m11 - m22);
-    const float lambda_max = 0.5f * (m11 + m22) + std::sqrt(std::max(0.0f, half_difference * half_difference + m12 * m21));
-    const float det_posed = e * g - f * f;
-    const float lambda_min = std::max(0.0f, inverse.w() * det_posed / std::max(lambda_max, 1e-30f));
-    // A pole at rest (inverse zero) or in this pose (rank < 2): no stretch defined.
-    const bool defined = inverse.w() > 0.0f && det_posed > 1e-6f * e * g;
-    const float a = defined ? std::min(1.0f, std::sqrt(lambda_min)) : 1.0f;
+    const float a = stretchAlpha(in.inverse_rest_metric[i], in.tangents_u[i], in.tangents_v[i]);
     if constexpr (kAlpha) alpha[i] = a;
-    if constexpr (kStrength) {
-      const float effective = std::min(1.0f, a * in.inverse_threshold);
-      strength[i] = std::min(1.0f, std::sqrt(std::max(0.0f, 1.0f - effective * effective)) * in.inverse_saturation);
-    }
+    if constexpr (kStrength) strength[i] = strengthOf(a, in.constants);
   }
 }
 
@@ -524,6 +528,12 @@ void VertexCompression::prepare(const TriangleMesh& mesh, const std::vector<Bezi
   }
 }
 
+VertexStretch vertexStretchAt(const Eigen::Vector4f& inverse_rest_metric, const Eigen::Vector3f& d_du,
+                              const Eigen::Vector3f& d_dv, const WrinkleStrengthConstants& constants) {
+  const float alpha = stretchAlpha(inverse_rest_metric, d_du, d_dv);
+  return {alpha, strengthOf(alpha, constants)};
+}
+
 WrinkleStrengthConstants VertexCompression::strengthConstants() const {
   return {static_cast<float>(1.0 / options_.alpha_threshold),
           static_cast<float>(1.0 / std::sqrt(1.0 - options_.saturation_alpha * options_.saturation_alpha))};
@@ -539,9 +549,8 @@ void VertexCompression::evaluate(const TriangleMesh& posed_mesh, float* alpha, f
     throw std::invalid_argument("VertexCompression: posed mesh has " + str(posed_mesh.tangents_u.size()) +
                                 " vertices, prepared for " + str(vertices));
   }
-  const WrinkleStrengthConstants constants = strengthConstants();
   const VertexStretchInput input{inverse_rest_metric_.data(), posed_mesh.tangents_u.data(), posed_mesh.tangents_v.data(), vertices,
-                                 constants.inverse_threshold, constants.inverse_saturation};
+                                 strengthConstants()};
   if (alpha && strength) {
     vertexStretch<true, true>(input, alpha, strength);
   } else if (alpha) {

@@ -178,21 +178,10 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
         const PatchDerivatives d = patch.derivatives(part.mesh->uv[i].x(), part.mesh->uv[i].y());
         worst_position = std::max(worst_position, (d.position - expected.mesh->positions[i].cast<double>()).norm());
         if (p == 0) continue;
-        // VertexCompression's formula, as relief_surface.vert evaluates it.
-        const Eigen::Vector4f& inverse = (*part.inverse_rest_metric)[i];
-        const double e = d.d_du.squaredNorm(), f = d.d_du.dot(d.d_dv), g = d.d_dv.squaredNorm();
-        const double m11 = inverse.x() * e + inverse.y() * f, m12 = inverse.x() * f + inverse.y() * g;
-        const double m21 = inverse.y() * e + inverse.z() * f, m22 = inverse.y() * f + inverse.z() * g;
-        const double half = 0.5 * (m11 - m22);
-        const double lambda_max = 0.5 * (m11 + m22) + std::sqrt(std::max(0.0, half * half + m12 * m21));
-        const double det = e * g - f * f;
-        const double lambda_min = std::max(0.0, inverse.w() * det / std::max(lambda_max, 1e-30));
-        const bool defined = inverse.w() > 0.0f && det > 1e-6 * e * g;
-        const double alpha = defined ? std::min(1.0, std::sqrt(lambda_min)) : 1.0;
-        const double effective = std::min(1.0, alpha * part.wrinkle_constants.inverse_threshold);
-        const double strength =
-            std::min(1.0, std::sqrt(std::max(0.0, 1.0 - effective * effective)) * part.wrinkle_constants.inverse_saturation);
-        worst_weight = std::max(worst_weight, std::abs(strength - (*expected.relief_weight)[i]));
+        // What relief_surface.vert computes from the renderer's inputs.
+        const float strength = vertexStretchAt((*part.inverse_rest_metric)[i], d.d_du.cast<float>(),
+                                               d.d_dv.cast<float>(), part.wrinkle_constants).strength;
+        worst_weight = std::max(worst_weight, static_cast<double>(std::abs(strength - (*expected.relief_weight)[i])));
         strongest = std::max(strongest, (*expected.relief_weight)[i]);
       }
       EXPECT_LT(worst_position, 1e-5) << part.name;  // float storage of the CPU mesh

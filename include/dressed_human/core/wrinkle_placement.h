@@ -230,6 +230,16 @@ struct WrinkleStrengthConstants {
   float inverse_saturation = 1.0f;
 };
 
+/// One vertex of VertexCompression::evaluate -- which relief_surface.vert transcribes to GLSL:
+/// alpha (1 = none) and the wrinkle strength from G_rest^-1 (inverseRestMetric()) and the posed
+/// dF/du, dF/dv.
+struct VertexStretch {
+  float alpha = 1.0f;
+  float strength = 0.0f;
+};
+VertexStretch vertexStretchAt(const Eigen::Vector4f& inverse_rest_metric, const Eigen::Vector3f& d_du,
+                              const Eigen::Vector3f& d_dv, const WrinkleStrengthConstants& constants);
+
 class VertexCompression {
  public:
   explicit VertexCompression(const WrinklePlacementOptions& options = {});

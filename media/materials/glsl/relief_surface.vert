@@ -59,7 +59,7 @@ void evaluatePatch(int base, vec2 uv, out vec3 position, out vec3 du, out vec3 d
   du = bv.x * row(base, dbu) + bv.y * row(base + 4, dbu) + bv.z * row(base + 8, dbu) + bv.w * row(base + 12, dbu);
 }
 
-// VertexCompression::evaluate's formula: alpha = sqrt of the smaller eigenvalue of
+// vertexStretchAt (wrinkle_placement.h) transcribed: alpha = sqrt of the smaller eigenvalue of
 // G_rest^-1 G_posed, strength from alpha by the threshold and saturation.
 float wrinkleStrength(vec4 inverse, vec3 du, vec3 dv) {
   float e = dot(du, du), f = dot(du, dv), g = dot(dv, dv);
