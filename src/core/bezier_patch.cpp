@@ -84,21 +84,24 @@ BezierPatch::BezierPatch(const ControlPoints& control_points) { setControlPoints
 
 void BezierPatch::setControlPoints(const ControlPoints& control_points) {
   // Everything is checked on the input first, so that a throw leaves this patch as it was.
-  Eigen::Vector3d box_min = control_points[0], box_max = control_points[0];
-  for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) {
-      const Eigen::Vector3d& p = control_points[index(i, j)];
-      if (!p.allFinite()) {
+  // The net as one 3 x 16 matrix: checked and bounded in a few vector operations (this runs
+  // for every patch every frame); the loop that names the culprit runs only on a bad point.
+  const Eigen::Map<const Eigen::Matrix<double, 3, 16>> net(control_points.front().data());
+  if (!net.allFinite()) {
+    for (int j = 0; j < 4; ++j) {
+      for (int i = 0; i < 4; ++i) {
+        const Eigen::Vector3d& p = control_points[index(i, j)];
+        if (p.allFinite()) continue;
         std::ostringstream message;
         message << "Bezier patch control point P[" << i << "][" << j << "] (u-index " << i
                 << ", v-index " << j << ") is not finite: (" << p.x() << ", " << p.y() << ", "
                 << p.z() << ")";
         throw std::invalid_argument(message.str());
       }
-      box_min = box_min.cwiseMin(p);
-      box_max = box_max.cwiseMax(p);
     }
   }
+  const Eigen::Vector3d box_min = net.rowwise().minCoeff();
+  const Eigen::Vector3d box_max = net.rowwise().maxCoeff();
   const double scale = (box_max - box_min).norm();
   if (!(scale > 0.0)) {
     throw std::invalid_argument("Bezier patch: all 16 control points coincide, the patch is a point");

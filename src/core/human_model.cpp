@@ -90,8 +90,9 @@ const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, co
     levels.resize(patches.size(), 0);
     automatic.frames_below.resize(patches.size(), 0);
     const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kRenderer;
+    levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
     for (std::size_t p = 0; p < patches.size(); ++p) {
-      const int wanted = levelForScreenError(patches[p], lod.camera, lod.max_error_pixels, lod.max_level);
+      const int wanted = wanted_levels_[p];
       if (coarse_steps) {
         // When the renderer evaluates the vertices, a frame costs the CPU almost nothing unless
         // the layout changes, and a few more triangles cost the vertex shader little. So levels

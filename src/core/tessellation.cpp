@@ -49,8 +49,9 @@ Eigen::Vector2d edgePointParameters(int edge, int k, int m) {
 
 bool edgesCoincide(const std::array<Eigen::Vector3d, 4>& a, const std::array<Eigen::Vector3d, 4>& b,
                     bool reversed, double tolerance) {
+  const double tolerance_squared = tolerance * tolerance;
   for (int k = 0; k < 4; ++k) {
-    if ((a[k] - b[reversed ? 3 - k : k]).norm() > tolerance) return false;
+    if (!((a[k] - b[reversed ? 3 - k : k]).squaredNorm() <= tolerance_squared)) return false;
   }
   return true;
 }
@@ -72,25 +73,30 @@ void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
 
 // Curvature constant K of the bound K / n^2 (see geometricErrorBound).
 double errorBoundConstant(const BezierPatch& patch) {
-  // Maxima of squared norms, one square root each at the end: this runs for every patch every
-  // frame under automatic level of detail.
+  // Maxima of squared norms, one square root each at the end, on the packed coordinates (row j
+  // of the net is p[12 j .. 12 j + 11], point i of it at 3 i): this runs for every patch every
+  // frame under automatic level of detail, so the loops have fixed bounds and unroll.
+  const double* p = patch.controlPoints().front().data();
+  const auto squared = [](double x, double y, double z) { return x * x + y * y + z * z; };
   double second_u = 0.0;
   double second_v = 0.0;
   double twist = 0.0;
   for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      const double* q = p + 12 * j + 3 * i;
+      second_u = std::max(second_u, squared(q[6] - 2.0 * q[3] + q[0], q[7] - 2.0 * q[4] + q[1], q[8] - 2.0 * q[5] + q[2]));
+    }
+  }
+  for (int j = 0; j < 2; ++j) {
     for (int i = 0; i < 4; ++i) {
-      if (i < 2) {
-        second_u = std::max(second_u, (patch.controlPoint(i + 2, j) - 2.0 * patch.controlPoint(i + 1, j) +
-                                       patch.controlPoint(i, j)).squaredNorm());
-      }
-      if (j < 2) {
-        second_v = std::max(second_v, (patch.controlPoint(i, j + 2) - 2.0 * patch.controlPoint(i, j + 1) +
-                                       patch.controlPoint(i, j)).squaredNorm());
-      }
-      if (i < 3 && j < 3) {
-        twist = std::max(twist, (patch.controlPoint(i + 1, j + 1) - patch.controlPoint(i + 1, j) -
-                                 patch.controlPoint(i, j + 1) + patch.controlPoint(i, j)).squaredNorm());
-      }
+      const double* q = p + 12 * j + 3 * i;
+      second_v = std::max(second_v, squared(q[24] - 2.0 * q[12] + q[0], q[25] - 2.0 * q[13] + q[1], q[26] - 2.0 * q[14] + q[2]));
+    }
+  }
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      const double* q = p + 12 * j + 3 * i;
+      twist = std::max(twist, squared(q[15] - q[12] - q[3] + q[0], q[16] - q[13] - q[4] + q[1], q[17] - q[14] - q[5] + q[2]));
     }
   }
   const double bound_uu = 6.0 * std::sqrt(second_u);  // sup |F_uu|: F_uu is a Bezier patch on 6 * second differences
@@ -118,24 +124,44 @@ void requireLevelLimit(int max_level) {
 
 }  // namespace
 
+namespace {
+
+// Index (4 j + i) of point k of an edge, by increasing edge parameter.
+int edgePointIndex(PatchEdge edge, int k) {
+  switch (edge) {
+    case PatchEdge::kV0: return BezierPatch::index(k, 0);
+    case PatchEdge::kU1: return BezierPatch::index(3, k);
+    case PatchEdge::kV1: return BezierPatch::index(k, 3);
+    default: return BezierPatch::index(0, k);
+  }
+}
+
+// edgesCoincide on the patches' own points: this runs for every link every frame.
+bool linkedEdgesCoincide(const BezierPatch& a, PatchEdge edge_a, const BezierPatch& b, PatchEdge edge_b, bool reversed,
+                         double tolerance) {
+  const double tolerance_squared = tolerance * tolerance;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d& from_a = a.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge_a, k))];
+    const Eigen::Vector3d& from_b = b.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge_b, reversed ? 3 - k : k))];
+    if (!((from_a - from_b).squaredNorm() <= tolerance_squared)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::array<Eigen::Vector3d, 4> edgeControlPoints(const BezierPatch& patch, PatchEdge edge) {
   std::array<Eigen::Vector3d, 4> points;
-  for (int k = 0; k < 4; ++k) {
-    switch (edge) {
-      case PatchEdge::kV0: points[k] = patch.controlPoint(k, 0); break;
-      case PatchEdge::kU1: points[k] = patch.controlPoint(3, k); break;
-      case PatchEdge::kV1: points[k] = patch.controlPoint(k, 3); break;
-      case PatchEdge::kU0: points[k] = patch.controlPoint(0, k); break;
-    }
-  }
+  for (int k = 0; k < 4; ++k) points[static_cast<std::size_t>(k)] = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, k))];
   return points;
 }
 
 bool isCollapsed(const BezierPatch& patch, PatchEdge edge) {
-  const std::array<Eigen::Vector3d, 4> points = edgeControlPoints(patch, edge);
   const double tolerance = kCollapsedRelative * patch.scale();
+  const Eigen::Vector3d& first = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, 0))];
   for (int k = 1; k < 4; ++k) {
-    if ((points[k] - points[0]).norm() > tolerance) return false;
+    const Eigen::Vector3d& point = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, k))];
+    if (!((point - first).squaredNorm() <= tolerance * tolerance)) return false;
   }
   return true;
 }
@@ -231,8 +257,10 @@ int levelForGeometricError(const BezierPatch& patch, double max_error, int max_l
 // the centre of the view, f = height / (2 tan(fov / 2)) being the focal length in pixels. Off
 // the view axis the true size is up to 1 / cos^2 of the off-axis angle larger; the camera's
 // orientation is not part of the query, so that factor is left to the caller's pixel budget.
-int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
-                           double max_error_pixels, int max_level) {
+namespace {
+
+// Pixels per metre of error at distance 1 (the focal length in pixels), after checking the query.
+double focalPixels(const CameraView& camera, double max_error_pixels, int max_level) {
   requireLevelLimit(max_level);
   if (!camera.position.allFinite() || !(camera.vertical_fov_radians > 0.0) ||
       !(camera.vertical_fov_radians < kPi) || !(camera.viewport_height_pixels > 0.0) ||
@@ -244,14 +272,32 @@ int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
   if (!(max_error_pixels > 0.0) || !std::isfinite(max_error_pixels)) {
     throw std::invalid_argument("levelForScreenError: max_error_pixels must be finite and > 0");
   }
-  const Eigen::Vector3d nearest =
-      camera.position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
-  const double distance = (nearest - camera.position).norm();
+  return camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
+}
+
+int screenErrorLevel(const BezierPatch& patch, const Eigen::Vector3d& camera_position, double error_per_distance,
+                     int max_level) {
+  const Eigen::Vector3d nearest = camera_position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
+  const double distance = (nearest - camera_position).norm();
   if (!(distance > 0.0)) return max_level;
-  const double focal_pixels =
-      camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
-  return smallestLevelFor(errorBoundConstant(patch), max_error_pixels * distance / focal_pixels,
-                            max_level);
+  return smallestLevelFor(errorBoundConstant(patch), error_per_distance * distance, max_level);
+}
+
+}  // namespace
+
+int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
+                           double max_error_pixels, int max_level) {
+  const double focal = focalPixels(camera, max_error_pixels, max_level);
+  return screenErrorLevel(patch, camera.position, max_error_pixels / focal, max_level);
+}
+
+void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
+                          double max_error_pixels, int max_level, std::vector<int>& levels) {
+  const double error_per_distance = max_error_pixels / focalPixels(camera, max_error_pixels, max_level);
+  levels.resize(patches.size());
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    levels[p] = screenErrorLevel(patches[p], camera.position, error_per_distance, max_level);
+  }
 }
 
 // ------------------------------------------------------------------------------- Tessellator
@@ -312,10 +358,7 @@ const TriangleMesh& Tessellator::tessellateForCamera(const std::vector<BezierPat
                                                        const PatchTopology& topology,
                                                        const CameraView& camera,
                                                        double max_error_pixels, int max_level) {
-  requested_levels_.resize(patches.size());
-  for (std::size_t p = 0; p < patches.size(); ++p) {
-    requested_levels_[p] = levelForScreenError(patches[p], camera, max_error_pixels, max_level);
-  }
+  levelsForScreenError(patches, camera, max_error_pixels, max_level, requested_levels_);
   return tessellate(patches, topology, requested_levels_);
 }
 
@@ -351,8 +394,7 @@ void Tessellator::prepareLayout(const std::vector<BezierPatch>& patches, const P
     const BezierPatch& a = patches[link.patch_a];
     const BezierPatch& b = patches[link.patch_b];
     const double tolerance = kLinkMismatchRelative * std::max(a.scale(), b.scale());
-    if (!edgesCoincide(edgeControlPoints(a, link.edge_a), edgeControlPoints(b, link.edge_b),
-                        link.reversed, tolerance)) {
+    if (!linkedEdgesCoincide(a, link.edge_a, b, link.edge_b, link.reversed, tolerance)) {
       std::ostringstream message;
       message << "Tessellator: edge " << edgeName(link.edge_a) << " of patch " << link.patch_a
               << " and edge " << edgeName(link.edge_b) << " of patch " << link.patch_b

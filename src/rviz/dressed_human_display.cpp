@@ -478,25 +478,43 @@ bool DressedHumanDisplay::lookUpBones() {
   const std::shared_ptr<tf2_ros::Buffer> buffer = context_->getTF2BufferPtr();
   const std::string fixed = fixed_frame_.toStdString();
   const std::string& root = skeleton_->rootFrame();
-  ros::Time stamp;
-  try {
-    // One consistent time for every bone, so that garments spanning two bones never tear: the
-    // newest time at which every chain from the fixed frame to a leaf bone (head, hands, feet) is
-    // known. The root's newest stamp alone is not enough: TF inserts a message's transforms one
-    // by one while rviz reads, so a bone can still lag its root by one tick. tf2's latest common
-    // time gives that stamp without composing the chains; a lookup only runs to report an error.
-    const tf2::CompactFrameID fixed_id = buffer->_lookupFrameNumber(fixed);
-    bool first = true;
-    for (std::size_t chain = 0; chain <= leaf_bones_.size(); ++chain) {
-      const std::string& frame = chain == 0 ? root : bone_frames_[static_cast<std::size_t>(leaf_bones_[chain - 1])];
-      ros::Time newest;
-      if (fixed_id == 0 || buffer->_getLatestCommonTime(fixed_id, buffer->_lookupFrameNumber(frame), newest, nullptr) != 0) {
-        newest = buffer->lookupTransform(fixed, frame, ros::Time(0)).header.stamp;  // throws what is wrong
-      }
-      stamp = first ? newest : std::min(stamp, newest);
-      first = false;
+  const tf2::CompactFrameID fixed_id = buffer->_lookupFrameNumber(fixed);
+  // The newest time at which the chain from the fixed frame to `frame` is known. tf2's latest
+  // common time gives it without composing the chain; a lookup only runs to report an error.
+  const auto newestStamp = [&](const std::string& frame) {
+    ros::Time newest;
+    if (fixed_id == 0 || buffer->_getLatestCommonTime(fixed_id, buffer->_lookupFrameNumber(frame), newest, nullptr) != 0) {
+      newest = buffer->lookupTransform(fixed, frame, ros::Time(0)).header.stamp;  // throws what is wrong
     }
+    return newest;
+  };
+  // One consistent time for every bone, so that garments spanning two bones never tear. Almost
+  // always every bone is known at the root's newest stamp (one message carries the skeleton).
+  // But TF inserts a message's transforms one by one while rviz reads, so a bone can lag its
+  // root by one tick: then a lookup at that stamp fails, and all bones are looked up again at
+  // the newest time every chain from the fixed frame to a leaf bone (head, hands, feet) is
+  // known. Walking every chain each frame instead would cost more than the lookups themselves:
+  // the TF tree is cold in the cache when rviz comes back from rendering.
+  ros::Time stamp;
+  bool found = false;
+  try {
+    stamp = newestStamp(root);
     root_ = toRigid(buffer->lookupTransform(fixed, root, stamp).transform);
+    found = lookUpBonesAt(*buffer, stamp, false);
+    if (!found) {
+      // A chain that is missing, or lags the root by more than the stale limit (a link no
+      // longer published), is left out: holding every bone back to it would freeze the human
+      // without naming the culprit. Its bone's lookup fails below and reports the frame.
+      const ros::Time root_stamp = stamp;
+      for (const int leaf : leaf_bones_) {
+        try {
+          const ros::Time newest = newestStamp(bone_frames_[static_cast<std::size_t>(leaf)]);
+          if ((root_stamp - newest).toSec() <= kStaleSeconds) stamp = std::min(stamp, newest);
+        } catch (const tf2::TransformException&) {
+        }
+      }
+      root_ = toRigid(buffer->lookupTransform(fixed, root, stamp).transform);
+    }
     clearError(root_status_name_);
   } catch (const tf2::TransformException& error) {
     reportError(root_status_name_, error.what(), true);
@@ -510,6 +528,10 @@ bool DressedHumanDisplay::lookUpBones() {
     deleteStatus("TF");
   }
   stale_reported_ = stale;
+  return found || lookUpBonesAt(*buffer, stamp, true);
+}
+
+bool DressedHumanDisplay::lookUpBonesAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report) {
   bool all_found = true;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     // Each bone relative to its parent (bones come parents first), composed here: tf2 then walks
@@ -520,13 +542,18 @@ bool DressedHumanDisplay::lookUpBones() {
     // carries the URDF's unshaped skeleton, so only its rotations are taken as they are.
     const Eigen::Vector3d parent_scale =
         bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
-    const std::string& parent_frame = bone.parent < 0 ? root : bone_frames_[static_cast<std::size_t>(bone.parent)];
+    const std::string& parent_frame = bone.parent < 0 ? skeleton_->rootFrame() : bone_frames_[static_cast<std::size_t>(bone.parent)];
     try {
-      const RigidTransform local = toRigid(buffer->lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
+      // A bone on a fixed URDF joint (clavicles, pelvis halves) sits where the URDF puts it:
+      // no lookup needed, and none that could fail.
+      const RigidTransform local =
+          bone.joint < 0 ? RigidTransform{bone.rest_translation, bone.rest_rotation}
+                         : toRigid(buffer.lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
       bones_[b].translation = parent.translation + parent.rotation * parent_scale.cwiseProduct(local.translation);
       bones_[b].rotation = parent.rotation * local.rotation;
       clearError(bone_status_names_[b]);
     } catch (const tf2::TransformException& error) {
+      if (!report) return false;
       reportError(bone_status_names_[b], error.what(), true);
       all_found = false;
     }

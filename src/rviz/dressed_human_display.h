@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <ros/time.h>
 #include <rviz/display.h>
+#include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/human_model.h"
 #include "dressed_human/core/relief_map.h"
@@ -55,6 +57,8 @@ class DressedHumanDisplay : public rviz::Display {
 
  private:
   bool lookUpBones();
+  // Every bone at `stamp`; false at the first failure, or (report) after reporting each one.
+  bool lookUpBonesAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report);
   void updateSurfaces();
   void reportError(const std::string& name, const std::string& text, bool transient = false);
   void clearError(const std::string& name);

@@ -135,9 +135,17 @@ Eigen::AlignedBox3f ReliefMaterial::setPatches(const std::vector<BezierPatch>& p
     throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) + " patches; the Bezier vertex shader holds " +
                                 std::to_string(kMaxPatches));
   }
-  control_points_.resize(patches.size() * 16 * 4);
-  float* out = control_points_.data();
   Eigen::AlignedBox3f bounds;
+  if (patches.empty()) return bounds;
+  // Straight into the parameters' float buffer (which the render system uploads when it binds
+  // the pass): a staging copy would double the bytes written per frame.
+  const Ogre::GpuProgramParametersSharedPtr parameters = vertexParameters(material_);
+  const Ogre::GpuConstantDefinition& definition = parameters->getConstantDefinition("controlPoints");
+  if (definition.arraySize * definition.elementSize < patches.size() * 16 * 4) {
+    throw std::logic_error(name_ + ": the shader's controlPoints array holds fewer than " + std::to_string(patches.size()) +
+                           " patches");
+  }
+  float* out = parameters->getFloatPointer(definition.physicalIndex);
   for (const BezierPatch& patch : patches) {
     for (const Eigen::Vector3d& point : patch.controlPoints()) {
       const Eigen::Vector3f p = point.cast<float>();
@@ -148,7 +156,6 @@ Eigen::AlignedBox3f ReliefMaterial::setPatches(const std::vector<BezierPatch>& p
       *out++ = 1.0f;
     }
   }
-  if (!patches.empty()) vertexParameters(material_)->setNamedConstant("controlPoints", control_points_.data(), 16 * patches.size(), 4);
   return bounds;
 }
 

@@ -55,7 +55,6 @@ class ReliefMaterial {
   Ogre::MaterialPtr material_;
   Ogre::TexturePtr texture_;
   bool bezier_vertices_;
-  std::vector<float> control_points_;  // xyzw per control point, reused every frame
   WrinkleStrengthConstants wrinkle_strength_;  // as last set (zeros: none)
   bool wrinkle_strength_set_ = false;
 };

@@ -1,8 +1,11 @@
 // The DressedHuman display in a real rviz VisualizationManager (on the test's X server): 1000
 // enable/disable cycles with resets and property changes, without a crash, an error status or
-// resident memory growing by more than 5 %.
+// resident memory growing by more than 5 %; and a bone frame that goes missing from TF is
+// reported on its own and recovers by itself.
 #include <fstream>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <QApplication>
@@ -12,6 +15,8 @@
 #include <rviz/properties/vector_property.h>
 #include <rviz/render_panel.h>
 #include <rviz/visualization_manager.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <urdf_parser/urdf_parser.h>
 
 namespace {
 
@@ -25,20 +30,25 @@ long residentKilobytes() {
 
 class DisplayLifecycleTest : public ::testing::Test {
  protected:
-  DisplayLifecycleTest() : manager_(&panel_) {
-    panel_.resize(320, 240);
-    panel_.show();
-    panel_.initialize(manager_.getSceneManager(), &manager_);
-    manager_.initialize();
-    manager_.setFixedFrame("world");
-    display_ = manager_.createDisplay("dressed_human/DressedHuman", "human", true);
+  // One rviz for the whole program: rviz registers its shared Ogre materials once per process,
+  // so a second VisualizationManager would fail.
+  static void SetUpTestSuite() {
+    if (manager_ != nullptr) return;
+    panel_ = new rviz::RenderPanel;
+    manager_ = new rviz::VisualizationManager(panel_);
+    panel_->resize(320, 240);
+    panel_->show();
+    panel_->initialize(manager_->getSceneManager(), manager_);
+    manager_->initialize();
+    manager_->setFixedFrame("world");
+    display_ = manager_->createDisplay("dressed_human/DressedHuman", "human", true);
   }
 
   // One rviz frame: Qt events, ROS callbacks (TF), then the displays' update() and a render.
   void frame() {
     QApplication::processEvents();
     ros::spinOnce();
-    QMetaObject::invokeMethod(&manager_, "onUpdate", Qt::DirectConnection);
+    QMetaObject::invokeMethod(manager_, "onUpdate", Qt::DirectConnection);
   }
   void frames(int count) {
     for (int i = 0; i < count; ++i) frame();
@@ -61,6 +71,24 @@ class DisplayLifecycleTest : public ::testing::Test {
     }
     return false;
   }
+  std::string allStatuses() const {
+    std::string text;
+    for (int i = 0; i < display_->numChildren(); ++i) {
+      auto* list = dynamic_cast<rviz::StatusProperty*>(display_->childAt(i));
+      for (int s = 0; list && s < list->numChildren(); ++s) text += list->childAt(s)->getName().toStdString() + " = " + list->childAt(s)->getValue().toString().toStdString() + "\n";
+    }
+    return text;
+  }
+  // The status called `name`, or nullptr.
+  const rviz::StatusProperty* status(const QString& name) const {
+    for (int i = 0; i < display_->numChildren(); ++i) {
+      auto* list = dynamic_cast<rviz::StatusProperty*>(display_->childAt(i));
+      for (int s = 0; list && s < list->numChildren(); ++s) {
+        if (list->childAt(s)->getName() == name) return dynamic_cast<rviz::StatusProperty*>(list->childAt(s));
+      }
+    }
+    return nullptr;
+  }
   // Statuses at Error level other than `expected`, as "name: text" (empty: none).
   std::string unexpectedErrors(const QString& expected) const {
     std::string errors;
@@ -76,11 +104,15 @@ class DisplayLifecycleTest : public ::testing::Test {
     return errors;
   }
 
-  rviz::RenderPanel panel_;
-  rviz::VisualizationManager manager_;
-  rviz::Display* display_ = nullptr;
+  static rviz::RenderPanel* panel_;
+  static rviz::VisualizationManager* manager_;
+  static rviz::Display* display_;
   rviz::VectorProperty* legs_ = nullptr;
 };
+
+rviz::RenderPanel* DisplayLifecycleTest::panel_ = nullptr;
+rviz::VisualizationManager* DisplayLifecycleTest::manager_ = nullptr;
+rviz::Display* DisplayLifecycleTest::display_ = nullptr;
 
 TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
@@ -130,6 +162,69 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
               100.0 * static_cast<double>(after - before) / static_cast<double>(before));
   EXPECT_LE(after, before + before / 20);
   EXPECT_EQ(level(), rviz::StatusProperty::Ok);
+}
+
+// The test publishes the TF of a second human itself (frames suffixed _9, all joints at zero),
+// so that it can leave one joint out: the knee's first link, which the left shank hangs from.
+TEST_F(DisplayLifecycleTest, MissingBoneFrameIsReportedAloneAndRecovers) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  std::string description;
+  ASSERT_TRUE(ros::param::get("missing_bone_description", description)) << "the .test file sets missing_bone_description";
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(description);
+  ASSERT_TRUE(model != nullptr);
+  display_->subProp("Robot Description")->setValue("missing_bone_description");
+  tf2_ros::TransformBroadcaster broadcaster;
+  const auto publish = [&](bool with_knee) {
+    std::vector<geometry_msgs::TransformStamped> transforms;
+    geometry_msgs::TransformStamped root;
+    root.header.stamp = ros::Time::now();
+    root.header.frame_id = "world";
+    root.child_frame_id = model->getRoot()->name;
+    root.transform.translation.z = 1.0;
+    root.transform.rotation.w = 1.0;
+    transforms.push_back(root);
+    for (const auto& entry : model->joints_) {
+      const urdf::Joint& joint = *entry.second;
+      if (!with_knee && joint.child_link_name == "l_knee_ry_link_9") continue;
+      geometry_msgs::TransformStamped transform = root;
+      transform.header.frame_id = joint.parent_link_name;
+      transform.child_frame_id = joint.child_link_name;
+      const urdf::Pose& origin = joint.parent_to_joint_origin_transform;
+      transform.transform.translation.x = origin.position.x;
+      transform.transform.translation.y = origin.position.y;
+      transform.transform.translation.z = origin.position.z;
+      origin.rotation.getQuaternion(transform.transform.rotation.x, transform.transform.rotation.y,
+                                    transform.transform.rotation.z, transform.transform.rotation.w);
+      transforms.push_back(transform);
+    }
+    broadcaster.sendTransform(transforms);
+  };
+  // Runs frames for `seconds` while publishing, until `done` holds; returns whether it did.
+  const auto runUntil = [&](bool with_knee, double seconds, const std::function<bool()>& done) {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::WallTime::now() < deadline) {
+      publish(with_knee);
+      frames(2);
+      ros::WallDuration(0.01).sleep();
+      if (done()) return true;
+    }
+    return false;
+  };
+  const QString knee = "Frame l_knee_9";
+  ASSERT_TRUE(runUntil(true, 60.0, [&] { return drawn() && level() == rviz::StatusProperty::Ok; }))
+      << "the second human was never drawn:\n" << unexpectedErrors("");
+  // Without the knee's link, exactly one status: the shank's frame. Bones below it (the foot)
+  // are still found, relative to the shank.
+  ASSERT_TRUE(runUntil(false, 30.0, [&] { return status(knee) && status(knee)->getLevel() == rviz::StatusProperty::Error; }))
+      << "no error status '" << knee.toStdString() << "':\n" << unexpectedErrors("") << allStatuses();
+  runUntil(false, 1.0, [] { return false; });
+  EXPECT_EQ(unexpectedErrors(knee), "") << "errors other than the missing frame";
+  ASSERT_NE(status(knee), nullptr);
+  EXPECT_NE(status(knee)->getValue().toString().toStdString().find("l_knee"), std::string::npos)
+      << status(knee)->getValue().toString().toStdString();
+  // The link returns: the error goes by itself.
+  EXPECT_TRUE(runUntil(true, 30.0, [&] { return status(knee) == nullptr && level() == rviz::StatusProperty::Ok; }))
+      << "still reported after the frame returned:\n" << unexpectedErrors("");
 }
 
 }  // namespace

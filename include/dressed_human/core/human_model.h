@@ -121,6 +121,7 @@ class HumanModel {
   };
   std::map<const Tessellator*, AutomaticLevels> automatic_levels_;
   std::vector<int> uniform_levels_;
+  std::vector<int> wanted_levels_;  // scratch: what the screen error asks for, per patch
   VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;

@@ -100,6 +100,9 @@ int levelForGeometricError(const BezierPatch& patch, double max_error, int max_l
 // net's bounding box, is <= max_error_pixels (max_level if none is, or if the camera is inside).
 int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
                            double max_error_pixels, int max_level);
+// levelForScreenError for every patch, the query checked once (this runs every frame).
+void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
+                          double max_error_pixels, int max_level, std::vector<int>& levels);
 
 class Tessellator {
  public:
