@@ -1,5 +1,7 @@
 #include "relief_material.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include <GL/gl.h>
@@ -86,9 +88,23 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   const std::size_t registers = components > 0 ? static_cast<std::size_t>(components) / 4
                                 : capabilities                  ? capabilities->getVertexProgramConstantFloatCount()
                                                                 : 0;
+  std::size_t registers_offered = registers;
+  // To see this GPU behave like a smaller one (NVIDIA's typical 1024 vectors), or to keep the
+  // Bezier shader off a driver that misreports its limit.
+  if (const char* limit = std::getenv("DRESSED_HUMAN_MAX_VERTEX_UNIFORM_VECTORS")) {
+    char* end = nullptr;
+    const long value = std::strtol(limit, &end, 10);
+    if (end == limit || *end != '\0' || value <= 0) {
+      if (problem.empty()) {
+        problem = "DRESSED_HUMAN_MAX_VERTEX_UNIFORM_VECTORS='" + std::string(limit) + "' is not a positive integer";
+      }
+    } else {
+      registers_offered = std::min(registers, static_cast<std::size_t>(value));
+    }
+  }
   const std::size_t needed = 16 * kMaxPatches + 16;
-  if (problem.empty() && registers < needed) {
-    problem = "the GPU has " + std::to_string(registers) + " vertex shader uniform vectors, the Bezier evaluation needs " +
+  if (problem.empty() && registers_offered < needed) {
+    problem = "the GPU offers " + std::to_string(registers_offered) + " vertex shader uniform vectors, the Bezier evaluation needs " +
               std::to_string(needed);
   }
   if (why) *why = problem;

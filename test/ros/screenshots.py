@@ -18,7 +18,7 @@ DEFAULT_REPLACEMENTS = {"SHOW_SKELETON": "false", "LEGS_THICKNESS": "1.0", "VERT
 class Rviz:
     """rviz on a copy of test/ros/data/<template> with text replacements; stopped on exit."""
 
-    def __init__(self, template, replacements):
+    def __init__(self, template, replacements, environment=None):
         with open(os.path.join(HERE, "data", template)) as f:
             text = f.read()
         for key, value in {**DEFAULT_REPLACEMENTS, **replacements}.items():
@@ -29,11 +29,12 @@ class Rviz:
             f.write(text)
         self.log_path = os.path.join(self.directory, "rviz.log")
         self.process = None
+        self.environment = dict(os.environ, **(environment or {}))
 
     def __enter__(self):
         self.log = open(self.log_path, "w")
         self.process = subprocess.Popen(["rviz", "-d", self.config, "--disable-anti-aliasing"],
-                                        stdout=self.log, stderr=subprocess.STDOUT)
+                                        stdout=self.log, stderr=subprocess.STDOUT, env=self.environment)
         return self
 
     def __exit__(self, *error):
