@@ -207,7 +207,7 @@ BENCHMARK(WrinkleVertexCompressionPrepare)->Arg(4)->Arg(8)->Unit(benchmark::kMic
 
 void WrinklePoseMap(benchmark::State& state) {
   const WrinkleOutfit outfit;
-  for (auto _ : state) benchmark::DoNotOptimize(makePoseWrinkleMap(*outfit.placements[0], outfit.garments[0].patches(), 128));
+  for (auto _ : state) benchmark::DoNotOptimize(makePoseWrinkleMap(*outfit.placements[0], outfit.garments[0].patches(), outfit.pose, 128));
   state.SetLabel("pants, " + std::to_string(outfit.garments[0].patches().size()) + " tiles of 128 px");
 }
 BENCHMARK(WrinklePoseMap)->Unit(benchmark::kMillisecond);

@@ -433,7 +433,8 @@ Eigen::Vector2f PoseWrinkleMap::textureCoordinate(std::uint32_t patch, float u, 
   return Eigen::Vector2f((static_cast<float>(patch) + u) / tiles, v);
 }
 
-PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::vector<BezierPatch>& posed, int tile_pixels) {
+PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::vector<BezierPatch>& posed,
+                                  const SkeletonPose& pose, int tile_pixels) {
   if (tile_pixels < 8) throw std::invalid_argument("makePoseWrinkleMap: tile_pixels must be >= 8, got " + str(tile_pixels));
   const std::vector<BezierPatch>& rest = placement.restPatches();
   if (posed.size() != rest.size()) {
@@ -446,6 +447,24 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
   result.layouts = placement.layouts();
   result.atlas = ReliefMap(tile_pixels * static_cast<int>(rest.size()), tile_pixels);
   result.rows.resize(rest.size());
+  // Rows holding samples of a knee or elbow region take the region's own measure, as the
+  // region's pattern choice does: current versus rest length along the joint's axis, which
+  // keeps falling with flexion where the local measure stalls and even recovers (the surface
+  // behind a sharply bent joint creases, see RegionCompression::alpha_span). Other rows (the
+  // waist, free cloth) take the local measure.
+  constexpr double kNoRegion = 2.0;
+  std::vector<std::vector<double>> span_alpha(rest.size());
+  for (std::size_t p = 0; p < rest.size(); ++p) span_alpha[p].assign(static_cast<std::size_t>(result.layouts[p].rows), kNoRegion);
+  for (const RegionCompression& measured : placement.measureRegions(posed, pose)) {
+    const CompressionRegion& region = placement.region(measured.name);
+    if (region.spans.empty()) continue;
+    for (const SurfacePoint& at : region.samples) {
+      const int rows = result.layouts[at.patch].rows;
+      const auto row = static_cast<std::size_t>(std::clamp(static_cast<int>(at.u * rows), 0, rows - 1));
+      double& alpha = span_alpha[at.patch][row];
+      alpha = std::min(alpha, measured.alpha_span);
+    }
+  }
   constexpr int kSamplesAround = 9;
   constexpr int kSamplesAlong = 3;  // per row of cells
   for (std::size_t p = 0; p < rest.size(); ++p) {
@@ -461,7 +480,9 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
           alphas.push_back(measureStretch(rest, posed, SurfacePoint{static_cast<std::uint32_t>(p), u, v}).alpha);
         }
       }
-      const WrinkleChoice choice = chooseWrinkles(quantile(alphas, options.region_percentile), layout.chain, layout.cell, options);
+      const double region_alpha = span_alpha[p][static_cast<std::size_t>(r)];
+      const double alpha = region_alpha != kNoRegion ? region_alpha : quantile(alphas, options.region_percentile);
+      const WrinkleChoice choice = chooseWrinkles(alpha, layout.chain, layout.cell, options);
       any = any || choice.wrinkled;
       row_alpha.push_back(choice.alpha_effective);
       result.rows[p].push_back(choice);

@@ -89,7 +89,7 @@ int run(const std::string& source, const std::string& directory, int count) {
   constexpr int kTile = 256;
   for (const auto& [name, k] : {std::make_pair("least", least), std::make_pair("middle", middle), std::make_pair("most", most)}) {
     garments[0].pose(poses[k]);
-    const PoseWrinkleMap map = makePoseWrinkleMap(placements[0], garments[0].patches(), kTile);
+    const PoseWrinkleMap map = makePoseWrinkleMap(placements[0], garments[0].patches(), poses[k], kTile);
     ReliefMap tile(kTile, kTile);
     for (int row = 0; row < kTile; ++row) {
       for (int column = 0; column < kTile; ++column) {

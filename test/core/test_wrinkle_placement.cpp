@@ -141,7 +141,7 @@ TEST(WrinklePlacement, RestPoseHasNoCompressionAndNoWrinkles) {
         EXPECT_FALSE(region.wrinkles.wrinkled) << region.name;
         EXPECT_EQ(region.wrinkles.amplitude, 0.0) << region.name;
       }
-      const PoseWrinkleMap map = makePoseWrinkleMap(placement, posed, 16);
+      const PoseWrinkleMap map = makePoseWrinkleMap(placement, posed, pose, 16);
       EXPECT_EQ(map.atlas.maximumHeight(), 0.0f);
       EXPECT_EQ(map.atlas.minimumHeight(), 0.0f);
     }
@@ -348,10 +348,10 @@ TEST(WrinklePlacement, WalkBehindKneeIsMostCompressedWhenTheKneeBendsMost) {
 
 TEST(WrinklePlacement, PoseMapReliefGrowsWithCompression) {
   // The relief behind the knee grows as alpha falls, towards its ceiling: h1 = sqrt(1 -
-  // alpha^2) L_y <= L_y (and <= L_x for Y/X, where clampToDomainEdge stops it). Strictly while
-  // the local alphas of the tile rows still fall (to ~30 degrees here: beyond, the surface
-  // behind the knee creases and the local measure stalls, RegionCompression::alpha_span); from
-  // there it stays near its peak, never above the ceiling.
+  // alpha^2) L_y <= L_y (and <= L_x for Y/X, where clampToDomainEdge stops it). Strictly at
+  // every step until the ceiling: the rows behind the knee take the region's span measure,
+  // which keeps falling where the local one stalls and recovers (40-75 degrees; before the map
+  // used it, the height here only held near its 30-degree value).
   Garment pants = makeGarment("pants");
   const WrinklePlacement placement(pants, skeleton(), body().shape);
   double previous_alpha = 1.0, previous_height = 0.0, peak = 0.0;
@@ -367,7 +367,7 @@ TEST(WrinklePlacement, PoseMapReliefGrowsWithCompression) {
     const SkeletonPose pose = kneeBent(degrees * kPi / 180.0);
     const std::vector<BezierPatch> posed = posedPatches(pants, pose);
     const double alpha = placement.measureRegion(posed, pose, placement.region("l_knee_back")).alpha;
-    const PoseWrinkleMap map = makePoseWrinkleMap(placement, posed, 64);
+    const PoseWrinkleMap map = makePoseWrinkleMap(placement, posed, pose, 64);
     EXPECT_EQ(map.atlas.width, 64 * static_cast<int>(posed.size()));
     double height = 0.0;
     for (std::uint32_t p : patches) {
@@ -383,10 +383,10 @@ TEST(WrinklePlacement, PoseMapReliefGrowsWithCompression) {
       EXPECT_EQ(height, 0.0);
     } else {
       EXPECT_LT(alpha, previous_alpha) << degrees;
-      if (degrees <= 30) {
+      if (previous_height < bound * (1.0 - 1e-6)) {
         EXPECT_GT(height, previous_height) << degrees;
       } else {
-        EXPECT_GT(height, 0.97 * peak) << degrees;
+        EXPECT_GE(height, previous_height * (1.0 - 1e-6)) << degrees;
       }
     }
     EXPECT_LE(height, bound * (1.0 + 1e-6)) << degrees;

@@ -212,10 +212,13 @@ struct PoseWrinkleMap {
   float maximumHeight() const { return atlas.maximumHeight(); }
 };
 
-/// Throws std::invalid_argument for a tile size below 8 or a wrong patch count. Cost: the
-/// placement's samples plus one makeWrinkleMap per wrinkled patch (flat tiles are skipped).
+/// A row's alpha is the region_percentile quantile of the local measure over the row, but where
+/// the row holds samples of a knee or elbow region it is that region's alpha_span (the smallest
+/// if several), as for the region's pattern choice (hence the pose: the joint's axis). Throws std::invalid_argument for a tile size below 8 or a
+/// wrong patch count. Cost: the placement's samples plus one makeWrinkleMap per wrinkled patch
+/// (flat tiles are skipped).
 PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::vector<BezierPatch>& posed,
-                                  int tile_pixels = 128);
+                                  const SkeletonPose& pose, int tile_pixels = 128);
 
 /// Per-vertex compression for a renderer, every frame. prepare() (once per mesh layout) finds
 /// each vertex's patch -- the Tessellator gives a shared vertex to the lowest-index patch that
