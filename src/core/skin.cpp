@@ -159,7 +159,10 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
     }
     segment.stack_count = static_cast<std::uint32_t>(rows - 1);
   }
-  world_ = local_;
+  std::size_t most_rows = 0;
+  for (const SegmentRings& rings : local_) most_rows = std::max(most_rows, rings.rows.size());
+  posed_segment_.rows.resize(most_rows);
+  posed_joint_rings_.resize(segment_count);
 
   // ---- patch numbering: per segment proximal cap, stacks, distal cap
   std::uint32_t patch_count = 0;
@@ -218,7 +221,7 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
     }
   }
 
-  // Placeholder patches, overwritten by assemblePatches (BezierPatch has no empty state).
+  // Placeholder patches, overwritten by pose() (BezierPatch has no empty state).
   BezierPatch::ControlPoints unit;
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) unit[BezierPatch::index(i, j)] = Eigen::Vector3d(i, j, 0.0);
@@ -242,39 +245,42 @@ void Skin::transformRing(const Ring& local, const Eigen::Matrix3d& rotation, con
 }
 
 void Skin::pose(const SkeletonPose& pose) {
-  for (std::size_t s = 0; s < segments_.size(); ++s) {
-    const SkinSegment& segment = segments_[s];
-    const RigidTransform& frame =
-        segment.bone < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(segment.bone)];
-    const Eigen::Matrix3d rotation = frame.rotation.toRotationMatrix();
-    const SegmentRings& local = local_[s];
-    SegmentRings& world = world_[s];
-    // The joint rows (first when joined to a parent, last when a child joins) are set below.
-    const std::size_t first = segment.joined_parent >= 0 ? 1 : 0;
-    const std::size_t end = local.rows.size() - (segment.joined_child >= 0 ? 1 : 0);
-    for (std::size_t r = first; r < end; ++r) transformRing(local.rows[r], rotation, frame.translation, world.rows[r]);
-    if (segment.has_proximal_cap) {
-      for (std::size_t r = 0; r < 3; ++r) transformRing(local.proximal_cap[r], rotation, frame.translation, world.proximal_cap[r]);
-    }
-    if (segment.has_distal_cap) {
-      for (std::size_t r = 0; r < 3; ++r) transformRing(local.distal_cap[r], rotation, frame.translation, world.distal_cap[r]);
-    }
-  }
-  // Joint rings: once, in the half-way frame at the child's joint; then copied to the parent.
+  auto frameOf = [&](int bone) -> const RigidTransform& {
+    return bone < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(bone)];
+  };
+  // Joint rings: once, in the half-way frame at the child's joint; both segments take it.
   for (const SkinJoint& joint : joints_) {
-    const SkinSegment& parent = segments_[static_cast<std::size_t>(joint.parent_segment)];
-    const RigidTransform& parent_frame =
-        parent.bone < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(parent.bone)];
+    const RigidTransform& parent_frame = frameOf(segments_[static_cast<std::size_t>(joint.parent_segment)].bone);
     const RigidTransform& child_frame = pose.bone_in_world[static_cast<std::size_t>(joint.child_bone)];
     const Eigen::Matrix3d rotation = parent_frame.rotation.slerp(0.5, child_frame.rotation).toRotationMatrix();
-    Ring& shared = world_[static_cast<std::size_t>(joint.child_segment)].rows.front();
-    transformRing(local_[static_cast<std::size_t>(joint.child_segment)].rows.front(), rotation, child_frame.translation, shared);
-    world_[static_cast<std::size_t>(joint.parent_segment)].rows.back() = shared;
+    const auto child = static_cast<std::size_t>(joint.child_segment);
+    transformRing(local_[child].rows.front(), rotation, child_frame.translation, posed_joint_rings_[child]);
   }
-  assemblePatches();
+  for (std::size_t s = 0; s < segments_.size(); ++s) {
+    const SkinSegment& segment = segments_[s];
+    const RigidTransform& frame = frameOf(segment.bone);
+    const Eigen::Matrix3d rotation = frame.rotation.toRotationMatrix();
+    const SegmentRings& local = local_[s];
+    SegmentRings& posed = posed_segment_;
+    const std::size_t rows = local.rows.size();
+    const std::size_t first = segment.joined_parent >= 0 ? 1 : 0;
+    const std::size_t end = rows - (segment.joined_child >= 0 ? 1 : 0);
+    for (std::size_t r = first; r < end; ++r) transformRing(local.rows[r], rotation, frame.translation, posed.rows[r]);
+    if (segment.joined_parent >= 0) posed.rows.front() = posed_joint_rings_[s];
+    if (segment.joined_child >= 0) posed.rows[rows - 1] = posed_joint_rings_[static_cast<std::size_t>(segment.joined_child)];
+    if (segment.has_proximal_cap) {
+      for (std::size_t r = 0; r < 3; ++r) transformRing(local.proximal_cap[r], rotation, frame.translation, posed.proximal_cap[r]);
+    }
+    if (segment.has_distal_cap) {
+      for (std::size_t r = 0; r < 3; ++r) transformRing(local.distal_cap[r], rotation, frame.translation, posed.distal_cap[r]);
+    }
+    assembleSegment(s, posed);
+  }
 }
 
-void Skin::assemblePatches() {
+void Skin::assembleSegment(std::size_t s, const SegmentRings& posed) {
+  const SkinSegment& segment = segments_[s];
+  const Ring& last_row = posed.rows[local_[s].rows.size() - 1];
   BezierPatch::ControlPoints points;
   auto emit = [&](std::uint32_t patch, int q, const Ring* rows[4]) {
     for (int j = 0; j < 4; ++j) {
@@ -282,23 +288,19 @@ void Skin::assemblePatches() {
     }
     patches_[patch].setControlPoints(points);
   };
-  for (std::size_t s = 0; s < segments_.size(); ++s) {
-    const SkinSegment& segment = segments_[s];
-    const SegmentRings& world = world_[s];
-    for (int q = 0; q < 4; ++q) {
-      for (std::uint32_t stack = 0; stack < segment.stack_count; ++stack) {
-        const Ring* rows[4] = {&world.rows[3 * stack], &world.rows[3 * stack + 1], &world.rows[3 * stack + 2],
-                               &world.rows[3 * stack + 3]};
-        emit(segment.first_patch + 4 * stack + static_cast<std::uint32_t>(q), q, rows);
-      }
-      if (segment.has_proximal_cap) {
-        const Ring* rows[4] = {&world.proximal_cap[0], &world.proximal_cap[1], &world.proximal_cap[2], &world.rows.front()};
-        emit(segment.proximal_cap_first + static_cast<std::uint32_t>(q), q, rows);
-      }
-      if (segment.has_distal_cap) {
-        const Ring* rows[4] = {&world.rows.back(), &world.distal_cap[0], &world.distal_cap[1], &world.distal_cap[2]};
-        emit(segment.distal_cap_first + static_cast<std::uint32_t>(q), q, rows);
-      }
+  for (int q = 0; q < 4; ++q) {
+    if (segment.has_proximal_cap) {
+      const Ring* rows[4] = {&posed.proximal_cap[0], &posed.proximal_cap[1], &posed.proximal_cap[2], &posed.rows.front()};
+      emit(segment.proximal_cap_first + static_cast<std::uint32_t>(q), q, rows);
+    }
+    for (std::uint32_t stack = 0; stack < segment.stack_count; ++stack) {
+      const Ring* rows[4] = {&posed.rows[3 * stack], &posed.rows[3 * stack + 1], &posed.rows[3 * stack + 2],
+                             &posed.rows[3 * stack + 3]};
+      emit(segment.first_patch + 4 * stack + static_cast<std::uint32_t>(q), q, rows);
+    }
+    if (segment.has_distal_cap) {
+      const Ring* rows[4] = {&last_row, &posed.distal_cap[0], &posed.distal_cap[1], &posed.distal_cap[2]};
+      emit(segment.distal_cap_first + static_cast<std::uint32_t>(q), q, rows);
     }
   }
 }

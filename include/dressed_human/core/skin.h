@@ -134,14 +134,18 @@ class Skin {
 
   void transformRing(const Ring& local, const Eigen::Matrix3d& rotation,
                      const Eigen::Vector3d& translation, Ring& world) const;
-  void assemblePatches();
+  // Writes segment s's patches from its posed rings.
+  void assembleSegment(std::size_t s, const SegmentRings& posed);
 
   Skeleton skeleton_;
   BodyShape shape_;
   std::vector<SkinSegment> segments_;
   std::vector<SkinJoint> joints_;
   std::vector<SegmentRings> local_;
-  std::vector<SegmentRings> world_;   // same sizes as local_, rewritten by pose()
+  // Posing goes segment by segment through one scratch (it stays in cache, where a posed copy
+  // of every ring would not); joint rings, posed first, are indexed by their child segment.
+  SegmentRings posed_segment_;
+  std::vector<Ring> posed_joint_rings_;
   std::vector<BezierPatch> patches_;
   std::vector<int> patch_segment_;
   PatchTopology topology_;
