@@ -126,24 +126,38 @@ void requireLevelLimit(int max_level) {
 
 namespace {
 
-// Index (4 j + i) of point k of an edge, by increasing edge parameter.
-int edgePointIndex(PatchEdge edge, int k) {
+// Point k of an edge, by increasing edge parameter, is control point first + k * step (4 j + i).
+struct EdgeWalk {
+  int first;
+  int step;
+};
+
+EdgeWalk edgeWalk(PatchEdge edge) {
   switch (edge) {
-    case PatchEdge::kV0: return BezierPatch::index(k, 0);
-    case PatchEdge::kU1: return BezierPatch::index(3, k);
-    case PatchEdge::kV1: return BezierPatch::index(k, 3);
-    default: return BezierPatch::index(0, k);
+    case PatchEdge::kV0: return {BezierPatch::index(0, 0), 1};
+    case PatchEdge::kU1: return {BezierPatch::index(3, 0), 4};
+    case PatchEdge::kV1: return {BezierPatch::index(0, 3), 1};
+    default: return {BezierPatch::index(0, 0), 4};
   }
 }
 
-// edgesCoincide on the patches' own points: this runs for every link every frame.
+int edgePointIndex(PatchEdge edge, int k) {
+  const EdgeWalk walk = edgeWalk(edge);
+  return walk.first + k * walk.step;
+}
+
+// edgesCoincide on the patches' own points: this runs for every link every frame, so the edge
+// is decoded once per link and the four points are walked with a stride.
 bool linkedEdgesCoincide(const BezierPatch& a, PatchEdge edge_a, const BezierPatch& b, PatchEdge edge_b, bool reversed,
                          double tolerance) {
   const double tolerance_squared = tolerance * tolerance;
+  const EdgeWalk walk_a = edgeWalk(edge_a);
+  EdgeWalk walk_b = edgeWalk(edge_b);
+  if (reversed) walk_b = {walk_b.first + 3 * walk_b.step, -walk_b.step};
+  const Eigen::Vector3d* points_a = a.controlPoints().data() + walk_a.first;
+  const Eigen::Vector3d* points_b = b.controlPoints().data() + walk_b.first;
   for (int k = 0; k < 4; ++k) {
-    const Eigen::Vector3d& from_a = a.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge_a, k))];
-    const Eigen::Vector3d& from_b = b.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge_b, reversed ? 3 - k : k))];
-    if (!((from_a - from_b).squaredNorm() <= tolerance_squared)) return false;
+    if (!((points_a[k * walk_a.step] - points_b[k * walk_b.step]).squaredNorm() <= tolerance_squared)) return false;
   }
   return true;
 }
@@ -158,10 +172,10 @@ std::array<Eigen::Vector3d, 4> edgeControlPoints(const BezierPatch& patch, Patch
 
 bool isCollapsed(const BezierPatch& patch, PatchEdge edge) {
   const double tolerance = kCollapsedRelative * patch.scale();
-  const Eigen::Vector3d& first = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, 0))];
+  const EdgeWalk walk = edgeWalk(edge);
+  const Eigen::Vector3d* points = patch.controlPoints().data() + walk.first;
   for (int k = 1; k < 4; ++k) {
-    const Eigen::Vector3d& point = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, k))];
-    if (!((point - first).squaredNorm() <= tolerance * tolerance)) return false;
+    if (!((points[k * walk.step] - points[0]).squaredNorm() <= tolerance * tolerance)) return false;
   }
   return true;
 }
