@@ -1,9 +1,12 @@
 // Relief-map generation cost on one core.
-//  * SkinMap/1024 with 3 levels: the production path (bucket grid for level 1, children lists
-//    below); target <= 50 ms.
+//  * SkinMap/1024 with 3 levels: the production path, target <= 50 ms. With roundness 0 (as
+//    here) render() rasterises each cell's boundary polygon sector by sector (s linear per
+//    sector, reference gradients precomputed at construction); SkinMapRounded keeps the per-pixel
+//    path (bucket grid for level 1, children lists below).
 //  * SkinMapBruteForce: the same map with every pixel scanning all seeds (and their 9 periodic
 //    images) of each level -- the reference, run at a smaller size because it is O(pixels x seeds).
-//  * SkinHierarchyBuild: seeds, clipping and wobble, paid once per parameter set.
+//  * SkinHierarchyBuild: seeds, clipping and wobble, paid once per parameter set -- now including
+//    the rasteriser's per-cell boundary polygons and sectors (most of its time).
 //  * SkinMapWithMipsAndNormals, MipChain, NormalMapRgb: the map as uploaded (mips + RGB normals).
 //  * WrinkleMap: one pose's worth of per-cell alphas, exact folds and 8-term Gaussians. Gaussian
 //    fits are cached across maps (wrinkle_map.cpp), so after the first iteration this measures a

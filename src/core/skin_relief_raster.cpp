@@ -1,0 +1,633 @@
+// render() for polygonal contours (roundness 0): each cell is rasterised from its centre as
+// angular sectors, instead of searching the cell of every pixel.
+//
+// Why this gives the reference's heights: with roundness 0 the height parameter at p is
+// s = max over walls of the ray ratio |p - c| / |hit - c|, and the reference decides which wall
+// wins and which of its segments is hit (or that its segment walk keeps the straight line) from
+// the direction of p - c alone. On one straight segment s is linear in p, s = g . (p - c). So
+// s has a constant gradient inside each angular sector between the directions where one of those
+// decisions changes; those sectors are found once, at construction, by sampling the reference's
+// own ray hit (referenceRay) and bisecting, and a pixel only needs its sector -- found
+// incrementally along a row, the row split at the columns where it crosses a sector's ray.
+// Which cell owns a pixel follows the cell's boundary polygon (the wobbled walls, and on child
+// levels the parent's wobbled wall pieces): inside the polygon exactly where the ray ratio to it,
+// linear per sector too, is < 1; a pixel also needs its parent on the level above. Pixels no
+// cell claims -- pockets where a wobbled wall folds back as seen from the centre, slivers at
+// junctions, pixels exactly on a boundary -- go through the per-pixel path (the reference's
+// decisions). The ownership rule differs from the reference's nearest-seed-then-wobble rule at a
+// few pixels along furrows; skin_relief.h states how many, test_skin_relief.cpp checks it.
+#include "dressed_human/core/skin_relief.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <type_traits>
+
+namespace dressed_human {
+
+using skin_detail::Cell;
+using skin_detail::CellLevel;
+using skin_detail::Wall;
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Outward wobble of a wall at parameter u (0 outside (0, 1), as in the reference).
+double outwardWobbleAt(const CellLevel& level, const Wall& wall, double u) {
+  if (wall.wobble < 0 || level.subdivisions == 0 || !(u > 0.0 && u < 1.0)) return 0.0;
+  const int segments = 1 << level.subdivisions;
+  const double position = u * segments;
+  const int segment = std::min(static_cast<int>(position), segments - 1);
+  const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
+  return wall.wobble_sign * (samples[segment] + (position - segment) * (samples[segment + 1] - samples[segment]));
+}
+
+Eigen::Vector2d wallPoint(const CellLevel& level, const Wall& wall, double u) {
+  return wall.start + wall.tangent * (u * wall.length) + wall.normal * outwardWobbleAt(level, wall, u);
+}
+
+double wallParameter(const Wall& wall, const Eigen::Vector2d& point) {
+  return (point - wall.start).dot(wall.tangent) / wall.length;
+}
+
+// Knots of a wall's polyline strictly between u_from and u_to, in that order.
+void appendKnots(const CellLevel& level, const Wall& wall, double u_from, double u_to, std::vector<Eigen::Vector2d>& chain) {
+  if (level.subdivisions == 0 || wall.wobble < 0) return;
+  const int segments = 1 << level.subdivisions;
+  if (u_from < u_to) {
+    for (int k = 1; k < segments; ++k) {
+      const double u = static_cast<double>(k) / segments;
+      if (u > u_from && u < u_to) chain.push_back(wallPoint(level, wall, u));
+    }
+  } else {
+    for (int k = segments - 1; k >= 1; --k) {
+      const double u = static_cast<double>(k) / segments;
+      if (u < u_from && u > u_to) chain.push_back(wallPoint(level, wall, u));
+    }
+  }
+}
+
+// Where a sibling furrow that ends on the parent's straight wall at `junction` meets the parent's
+// wobbled wall. Where the parent's wall bulges outward, the reference hands the bulge to the
+// nearest sibling, so the boundary between siblings continues straight (direction `outward`)
+// until it meets the wobble; where it dents inward the dent is another parent's and the parent
+// mask cuts it off, so the wobbled wall point at the junction is enough.
+Eigen::Vector2d junctionOnParentWall(const CellLevel& level, const Wall& wall, const Eigen::Vector2d& junction,
+                                     const Eigen::Vector2d& outward) {
+  const double u0 = wallParameter(wall, junction);
+  const double h0 = (junction - wall.start).dot(wall.normal);
+  const double rise = outward.dot(wall.normal);  // height gain per unit along `outward`
+  const double drift = outward.dot(wall.tangent) / wall.length;  // u per unit along `outward`
+  const double f0 = h0 - outwardWobbleAt(level, wall, u0);
+  if (!(f0 < 0.0) || !(rise > 0.0) || level.subdivisions == 0) return wallPoint(level, wall, u0);
+  // f(t) = height - wobble along the ray is linear between the wall's knots: walk them.
+  const int segments = 1 << level.subdivisions;
+  const auto f = [&](double t) { return h0 + rise * t - outwardWobbleAt(level, wall, u0 + drift * t); };
+  double t_previous = 0.0, f_previous = f0;
+  int knot = drift > 0.0 ? static_cast<int>(std::floor(u0 * segments)) + 1 : static_cast<int>(std::ceil(u0 * segments)) - 1;
+  for (int step = 0; step <= segments + 1 && drift != 0.0; ++step) {
+    const double u_knot = static_cast<double>(knot) / segments;
+    const double t_knot = (u_knot - u0) / drift;
+    if (t_knot > t_previous) {
+      const double f_knot = f(t_knot);
+      if (f_knot >= 0.0) {
+        const double t = t_previous + (t_knot - t_previous) * (-f_previous) / (f_knot - f_previous);
+        return junction + t * outward;
+      }
+      t_previous = t_knot;
+      f_previous = f_knot;
+    }
+    if (knot <= 0 || knot >= segments) break;  // beyond the wall's ends the wobble is 0
+    knot += drift > 0.0 ? 1 : -1;
+  }
+  // Constant wobble ahead (past an end, or u fixed): f grows at `rise` minus the local wobble slope.
+  const double t_probe = t_previous + 1.0;
+  const double growth = f(t_probe) - f_previous;
+  if (!(growth > 0.0)) return wallPoint(level, wall, u0);
+  return junction + (t_previous - f_previous / growth) * outward;
+}
+
+// The level on which a wall is a furrow between siblings: its own level, or for an inherited
+// wall (a copy of the parent's whole wall) the parent's answer for the same wall.
+int wallOrigin(const std::vector<CellLevel>& levels, std::size_t level_index, const Cell& cell, const Wall& wall) {
+  if (wall.neighbour >= 0 || level_index == 0) return static_cast<int>(level_index);
+  const CellLevel& parents = levels[level_index - 1];
+  const Cell& parent = parents.cells[static_cast<std::size_t>(cell.parent)];
+  for (int k = 0; k < parent.wall_count; ++k) {
+    const Wall& candidate = parents.walls[static_cast<std::size_t>(parent.first_wall + k)];
+    if (candidate.start == wall.start && candidate.tangent == wall.tangent && candidate.length == wall.length)
+      return wallOrigin(levels, level_index - 1, parent, candidate);
+  }
+  return -1;
+}
+
+// The closed boundary of a cell as it owns pixels, counter-clockwise, in the cell's frame: each
+// wall's polyline between the cell's corners. Where a finer furrow ends on a coarser (inherited)
+// one, the boundary follows the finer furrow's straight line on to the coarser one's wobble
+// (junctionOnParentWall) -- the same point on both sides and on every level below.
+std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels, std::size_t level_index, const Cell& cell) {
+  const CellLevel& level = levels[level_index];
+  std::vector<Eigen::Vector2d> chain;
+  const std::size_t count = cell.polygon.size();
+  const auto wallOf = [&](std::size_t edge) -> const Wall& {
+    return level.walls[static_cast<std::size_t>(cell.first_wall) + edge];
+  };
+  std::vector<int> origin(count);
+  for (std::size_t edge = 0; edge < count; ++edge) origin[edge] = wallOrigin(levels, level_index, cell, wallOf(edge));
+  for (std::size_t edge = 0; edge < count; ++edge) {
+    const Eigen::Vector2d& from = cell.polygon[edge];
+    const Eigen::Vector2d& to = cell.polygon[(edge + 1) % count];
+    const Wall& wall = wallOf(edge);
+    chain.push_back(from);
+    const std::size_t before = (edge + count - 1) % count, after = (edge + 1) % count;
+    const bool junction_first = origin[before] > origin[edge] && wall.wobble >= 0 && level.subdivisions > 0;
+    const bool junction_last = origin[after] > origin[edge] && wall.wobble >= 0 && level.subdivisions > 0;
+    Eigen::Vector2d first = from, last = to;
+    if (junction_first) {
+      first = junctionOnParentWall(level, wall, from, (from - cell.polygon[before]).normalized());
+      chain.push_back(first);
+    }
+    if (junction_last) last = junctionOnParentWall(level, wall, to, (to - cell.polygon[(edge + 2) % count]).normalized());
+    const double u_from = wallParameter(wall, from), u_to = wallParameter(wall, to);
+    double u_first = wallParameter(wall, first), u_last = wallParameter(wall, last);
+    // Keep the junction points inside the edge's own u range order.
+    if ((u_to - u_from) * (u_last - u_first) <= 0.0) u_last = u_first;
+    appendKnots(level, wall, u_first, u_last, chain);
+    if (junction_last) chain.push_back(last);
+  }
+  return chain;
+}
+
+// Monotone in the angle of (x, y), in [0, 4): orders directions without atan2.
+double diamondAngle(double x, double y) {
+  const double sum = std::abs(x) + std::abs(y);
+  if (!(sum > 0.0)) return 0.0;
+  const double t = y / sum;
+  return x >= 0.0 ? (t < 0.0 ? 4.0 + t : t) : 2.0 - t;
+}
+
+// Exact comparison (the same wall segment gives the same bits); NaN, from a degenerate wall,
+// counts as equal to itself so the bisection below does not chase it.
+bool sameGradient(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  return same(a.x(), b.x()) && same(a.y(), b.y());
+}
+
+}  // namespace
+
+void SkinRelief::buildRasterLevels() {
+  raster_.assign(levels_.size(), RasterLevel());
+  raster_ready_ = roundness_exponent_ == 0;
+  std::vector<Eigen::Vector2d> relative;
+  std::vector<double> angles;
+  std::vector<int> order;
+  struct ChainSector {
+    Eigen::Vector2d direction;  // start ray
+    Eigen::Vector2d boundary;   // gradient of the ray ratio to the boundary
+  };
+  std::vector<ChainSector> chain_sectors;
+  struct CriticalDirection {
+    double angle;  // diamondAngle, in [0, 4)
+    Eigen::Vector2d direction;  // unit
+  };
+  std::vector<CriticalDirection> critical, pieces;
+  for (std::size_t index = 0; index < levels_.size() && raster_ready_; ++index) {
+    const CellLevel& level = levels_[index];
+    RasterLevel& out = raster_[index];
+    out.depth = level.depth;
+    out.cells.reserve(level.cells.size());
+    for (const Cell& cell : level.cells) {
+      RasterCell raster;
+      raster.centre_x = cell.centre.x();
+      raster.centre_y = cell.centre.y();
+      raster.parent = cell.parent;
+      raster.first_sector = static_cast<int>(out.sectors.size());
+      const std::vector<Eigen::Vector2d> chain = boundaryChain(levels_, index, cell);
+      relative.clear();
+      Eigen::Vector2d low = chain.front(), high = chain.front();
+      for (const Eigen::Vector2d& vertex : chain) {
+        low = low.cwiseMin(vertex);
+        high = high.cwiseMax(vertex);
+        const Eigen::Vector2d r = vertex - cell.centre;
+        if (relative.empty() || (r - relative.back()).squaredNorm() > 1e-30) relative.push_back(r);
+      }
+      while (relative.size() > 1 && (relative.front() - relative.back()).squaredNorm() <= 1e-30) relative.pop_back();
+      raster.low_x = low.x();
+      raster.low_y = low.y();
+      raster.high_x = high.x();
+      raster.high_y = high.y();
+      // A cell wider than the tile would meet its own periodic image in the row loop.
+      if (high.x() - low.x() >= 1.0 || high.y() - low.y() >= 1.0) raster_ready_ = false;
+      const std::size_t n = relative.size();
+      // s = g . q with g . r_k = g . r_k+1 = 1 on the triangle (c, v_k, v_k+1).
+      const auto gradientOf = [&](std::size_t k) {
+        const Eigen::Vector2d& a = relative[k];
+        const Eigen::Vector2d& b = relative[(k + 1) % n];
+        const double determinant = cross(a, b);
+        return Eigen::Vector2d((b.y() - a.y()) / determinant, (a.x() - b.x()) / determinant);
+      };
+      chain_sectors.clear();
+      bool monotone = n >= 3;
+      double turned = 0.0;
+      for (std::size_t k = 0; k < n && monotone; ++k) {
+        const Eigen::Vector2d& a = relative[k];
+        const Eigen::Vector2d& b = relative[(k + 1) % n];
+        if (!(cross(a, b) > 1e-14 * a.norm() * b.norm())) monotone = false;
+        turned += std::atan2(cross(a, b), a.dot(b));
+      }
+      if (monotone && std::abs(turned - kTwoPi) < 1e-6) {
+        // The boundary is star-shaped from the centre: one sector per fan triangle.
+        for (std::size_t k = 0; k < n; ++k) {
+          const Eigen::Vector2d g = gradientOf(k);
+          chain_sectors.push_back({relative[k], g});
+        }
+      } else if (n >= 3) {
+        // Folded somewhere: split the circle at every vertex direction and keep, per piece, the
+        // nearest boundary crossing (largest s); the pockets behind a fold are left to the
+        // per-pixel path (nothing here claims them).
+        angles.resize(n);
+        order.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+          angles[k] = std::atan2(relative[k].y(), relative[k].x());
+          order[k] = static_cast<int>(k);
+        }
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return angles[static_cast<std::size_t>(a)] < angles[static_cast<std::size_t>(b)]; });
+        int previous_winner = -2;
+        for (std::size_t j = 0; j < n; ++j) {
+          const double from = angles[static_cast<std::size_t>(order[j])];
+          double to = angles[static_cast<std::size_t>(order[(j + 1) % n])];
+          if (j + 1 == n) to += kTwoPi;
+          if (!(to - from > 1e-12)) continue;
+          const double middle = 0.5 * (from + to);
+          const Eigen::Vector2d direction(std::cos(middle), std::sin(middle));
+          int winner = -1;
+          double best = 0.0;
+          Eigen::Vector2d best_gradient(0.0, 0.0);
+          for (std::size_t k = 0; k < n; ++k) {
+            const Eigen::Vector2d& a = relative[k];
+            const Eigen::Vector2d& b = relative[(k + 1) % n];
+            const double orientation = cross(a, b);
+            if (orientation == 0.0) continue;
+            const bool inside = orientation > 0.0 ? cross(a, direction) > 0.0 && cross(direction, b) > 0.0
+                                                  : cross(b, direction) > 0.0 && cross(direction, a) > 0.0;
+            if (!inside) continue;
+            const Eigen::Vector2d g = gradientOf(k);
+            const double value = g.dot(direction);
+            if (value > best) {
+              best = value;
+              winner = static_cast<int>(k);
+              best_gradient = g;
+            }
+          }
+          if (winner == previous_winner && winner >= 0) continue;  // same triangle continues
+          previous_winner = winner;
+          // No crossing at all (cannot happen for a closed boundary around the centre): nothing
+          // in this sector is claimed.
+          if (winner < 0) best_gradient = Eigen::Vector2d(INFINITY, INFINITY);
+          const Eigen::Vector2d& start = relative[static_cast<std::size_t>(order[j])];
+          chain_sectors.push_back({start, best_gradient});
+        }
+      }
+      // The reference's s inside each boundary sector: its ray hit is decided by the direction
+      // alone (which wall wins, which segment its walk settles on, or the straight line where
+      // the walk gives up), so its gradient is piecewise constant in the angle and changes only
+      // at the directions collected here -- through a wall's knots, through the points of the
+      // straight wall where the walk starts on another segment, parallel to a segment -- or where
+      // two walls' s cross (continuous there). Sample it just inside both ends of every piece
+      // between those directions and bisect where the two samples differ.
+      critical.clear();
+      const Wall* cell_walls = level.walls.data() + cell.first_wall;
+      // A wall's change of segment only matters where that wall can have the largest s: the
+      // bounds of the reference's own pruning (the wobble keeps each wall's s within them).
+      const auto addCritical = [&](const Eigen::Vector2d& direction, const Wall& wall) {
+        double best_lower = 0.0;
+        for (int j = 0; j < cell.wall_count; ++j) {
+          const double along = direction.dot(cell_walls[j].normal);
+          if (along > 0.0) best_lower = std::max(best_lower, along / (cell_walls[j].centre_distance + cell_walls[j].wobble_extent));
+        }
+        const double along = direction.dot(wall.normal);
+        const double reach = wall.centre_distance - wall.wobble_extent;
+        if (!(along > 0.0) || (reach > 0.0 && along / reach < best_lower * (1.0 - 1e-9))) return;
+        critical.push_back({diamondAngle(direction.x(), direction.y()), direction.normalized()});
+      };
+      if (level.subdivisions > 0) {
+        const int segments = 1 << level.subdivisions;
+        for (int k = 0; k < cell.wall_count; ++k) {
+          const Wall& wall = level.walls[static_cast<std::size_t>(cell.first_wall + k)];
+          if (wall.wobble < 0 || !(wall.wobble_extent > 0.0)) continue;
+          // The walk only runs while the straight hit is within a segment of the wall's ends.
+          const Eigen::Vector2d window_from = wall.start - wall.tangent * (wall.length / segments) - cell.centre;
+          const Eigen::Vector2d window_to = wall.start + wall.tangent * (wall.length * (segments + 1) / segments) - cell.centre;
+          const double window_turn = cross(window_from, window_to);
+          Eigen::Vector2d previous = wallPoint(level, wall, 0.0) - cell.centre;
+          for (int knot = -1; knot <= segments + 1; ++knot) {
+            addCritical(wall.start + wall.tangent * (wall.length * knot / segments) - cell.centre, wall);
+            if (knot < 0 || knot > segments) continue;
+            const Eigen::Vector2d point = wallPoint(level, wall, static_cast<double>(knot) / segments) - cell.centre;
+            addCritical(point, wall);
+            if (knot > 0) {
+              Eigen::Vector2d along = point - previous;
+              if (along.dot(wall.normal) < 0.0) along = -along;
+              if (cross(window_from, along) * window_turn > 0.0 && cross(along, window_to) * window_turn > 0.0) addCritical(along, wall);
+            }
+            previous = point;
+          }
+        }
+      }
+      std::sort(critical.begin(), critical.end(), [](const CriticalDirection& a, const CriticalDirection& b) { return a.angle < b.angle; });
+      critical.erase(std::unique(critical.begin(), critical.end(),
+                                 [](const CriticalDirection& a, const CriticalDirection& b) { return b.angle - a.angle < 1e-13; }),
+                     critical.end());
+      const double scale = 0.25 * level.spacing;
+      const int cell_index = static_cast<int>(out.cells.size());
+      const auto referenceGradient = [&](const Eigen::Vector2d& direction) {
+        double s;
+        Eigen::Vector2d gradient;
+        referenceRay(static_cast<int>(index), cell_index, scale * direction, s, gradient);
+        return gradient;
+      };
+      const auto rotated = [](const Eigen::Vector2d& direction, double angle) {
+        return Eigen::Vector2d(direction.x() - angle * direction.y(), direction.y() + angle * direction.x());
+      };
+      const std::size_t chain_count = chain_sectors.size();
+      for (std::size_t k = 0; k < chain_count && chain_count >= 3; ++k) {
+        const ChainSector& sector = chain_sectors[k];
+        const Eigen::Vector2d from_direction = sector.direction.normalized();
+        const Eigen::Vector2d to_direction = chain_sectors[(k + 1) % chain_count].direction.normalized();
+        // Pseudo-angles (diamondAngle, period 4) order the directions.
+        const double from = diamondAngle(from_direction.x(), from_direction.y());
+        double to = diamondAngle(to_direction.x(), to_direction.y());
+        while (to <= from) to += 4.0;
+        int budget = 256;  // evaluations per sector spent on locating changes; a handful is the rule
+        const auto emit = [&](const Eigen::Vector2d& start, const Eigen::Vector2d& gradient) {
+          out.sectors.push_back({start.x(), start.y(), gradient.x(), gradient.y(), sector.boundary.x(), sector.boundary.y(), 0.0, 0.0});
+        };
+        // Emits a sector start where the gradient changes between two directions (unit vectors,
+        // less than a half turn apart). Where two walls' s cross, the change is at
+        // (g_lo - g_hi) . q = 0, checked by one sample either side; otherwise bisect.
+        std::function<void(const Eigen::Vector2d&, const Eigen::Vector2d&, const Eigen::Vector2d&, const Eigen::Vector2d&)> split =
+            [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& at_lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& at_hi) {
+              if (budget <= 0) return;
+              budget -= 2;
+              Eigen::Vector2d crossing(at_hi.y() - at_lo.y(), at_lo.x() - at_hi.x());
+              if (cross(lo, crossing) < 0.0) crossing = -crossing;
+              if (crossing.squaredNorm() > 0.0 && cross(lo, crossing) > 0.0 && cross(crossing, hi) > 0.0) {
+                crossing.normalize();
+                const double step = std::min(1e-12, 0.25 * std::min(cross(lo, crossing), cross(crossing, hi)));
+                if (sameGradient(referenceGradient(rotated(crossing, -step)), at_lo) &&
+                    sameGradient(referenceGradient(rotated(crossing, step)), at_hi)) {
+                  emit(crossing, at_hi);
+                  return;
+                }
+              }
+              const Eigen::Vector2d half = (lo + hi).normalized();
+              if (cross(lo, hi) < 1e-13) {
+                emit(half, at_hi);
+                return;
+              }
+              const Eigen::Vector2d at_half = referenceGradient(half);
+              if (!sameGradient(at_lo, at_half)) split(lo, at_lo, half, at_half);
+              if (!sameGradient(at_half, at_hi)) split(half, at_half, hi, at_hi);
+            };
+        // Pieces of the sector between the critical directions (which may wrap past 4).
+        pieces.clear();
+        pieces.push_back({from, from_direction});
+        // critical is sorted in [0, 4); from is in [0, 4) and to < from + 4.
+        for (int turn = 0; turn < 2; ++turn) {
+          const double low = from + 1e-13 - turn * 4.0, high = to - 1e-13 - turn * 4.0;
+          auto it = std::upper_bound(critical.begin(), critical.end(), low,
+                                     [](double value, const CriticalDirection& entry) { return value < entry.angle; });
+          for (; it != critical.end() && it->angle < high; ++it) pieces.push_back({it->angle + turn * 4.0, it->direction});
+        }
+        pieces.push_back({to, to_direction});
+        Eigen::Vector2d carried = Eigen::Vector2d::Zero();
+        bool started = false;
+        for (std::size_t piece = 0; piece + 1 < pieces.size(); ++piece) {
+          const Eigen::Vector2d& lo = pieces[piece].direction;
+          const Eigen::Vector2d& hi = pieces[piece + 1].direction;
+          const double width_sine = cross(lo, hi);
+          const double inset = lo.dot(hi) > 0.0 ? std::min(1e-9, 0.25 * width_sine) : 1e-9;
+          if (!(inset > 0.0)) continue;  // coincident directions
+          const Eigen::Vector2d lo_inside = rotated(lo, inset).normalized(), hi_inside = rotated(hi, -inset).normalized();
+          const Eigen::Vector2d first = referenceGradient(lo_inside);
+          if (!started) {
+            emit(sector.direction, first);
+            started = true;
+          } else if (!sameGradient(first, carried)) {
+            emit(lo, first);
+          }
+          carried = referenceGradient(hi_inside);
+          if (!sameGradient(first, carried)) split(lo_inside, first, hi_inside, carried);
+        }
+      }
+      raster.sector_count = static_cast<int>(out.sectors.size()) - raster.first_sector;
+      // The row walk needs every sector narrower than a half turn (the centre strictly inside).
+      for (int k = 0; k < raster.sector_count; ++k) {
+        const RasterSector& a = out.sectors[static_cast<std::size_t>(raster.first_sector + k)];
+        const RasterSector& b = out.sectors[static_cast<std::size_t>(raster.first_sector + (k + 1) % raster.sector_count)];
+        if (!(a.direction_x * b.direction_y - a.direction_y * b.direction_x > 0.0)) raster.sector_count = 0;
+      }
+      if (raster.sector_count < 3) {
+        out.sectors.resize(static_cast<std::size_t>(raster.first_sector));
+        raster.sector_count = 0;  // left to the per-pixel path
+      }
+      for (int k = 0; k < raster.sector_count; ++k) {
+        // Where a pixel row leaves a sector, as qx / dy of the ray it leaves through: the
+        // sector's start ray clockwise (above the centre), the next one's counter-clockwise.
+        RasterSector& sector = out.sectors[static_cast<std::size_t>(raster.first_sector + k)];
+        const RasterSector& next = out.sectors[static_cast<std::size_t>(raster.first_sector + (k + 1) % raster.sector_count)];
+        constexpr double never = std::numeric_limits<double>::quiet_NaN();
+        sector.crossing_above = sector.direction_y > 0.0 ? sector.direction_x / sector.direction_y : never;
+        sector.crossing_below = next.direction_y < 0.0 ? next.direction_x / next.direction_y : never;
+      }
+      if (raster.sector_count > 0) {
+        // Stored twice in a row: a pixel row sweeps less than a full turn, so the row walk below
+        // indexes without wrapping (clockwise from the second copy, counter-clockwise from the first).
+        const auto begin = out.sectors.begin() + raster.first_sector;
+        const std::vector<RasterSector> copy(begin, begin + raster.sector_count);
+        out.sectors.insert(out.sectors.end(), copy.begin(), copy.end());
+      }
+      raster.first_vertex = static_cast<int>(out.vertices.size());
+      raster.vertex_count = raster.sector_count > 0 ? static_cast<int>(relative.size()) : 0;
+      if (raster.sector_count > 0) out.vertices.insert(out.vertices.end(), relative.begin(), relative.end());
+      out.cells.push_back(raster);
+    }
+  }
+  if (!raster_ready_) raster_.clear();
+}
+
+ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const {
+  ReliefMap map(width, height);
+  const int first = only_level >= 0 ? only_level : 0;
+  const int end = only_level >= 0 ? only_level + 1 : levelCount();
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  // Scratch kept per thread between calls: fresh pages for these ~16 bytes per pixel cost more
+  // (page faults, zeroing) than a level's whole rasterisation at 1024^2.
+  thread_local std::vector<double> heights;  // summed in double like the reference, rounded once
+  // One owner per pixel, overwritten level by level: cell + code_base of its level, so a child
+  // claims a pixel exactly when it still holds its parent's code (-1: nobody's yet).
+  thread_local std::vector<int> owner;
+  thread_local std::vector<double> span_low, span_high;
+  heights.assign(pixels, 0.0);
+  owner.assign(pixels, -1);
+  int code_base = 0, parent_code_base = -1;
+  const double inverse_width = 1.0 / width, inverse_height = 1.0 / height;
+  for (int level_index = 0; level_index < end; ++level_index) {
+    const RasterLevel& level = raster_[static_cast<std::size_t>(level_index)];
+    const bool accumulate = level_index >= first;
+    const double depth = level.depth;
+    const bool masked = level_index > 0;
+    float* slope_u = map.slope_u.data();
+    float* slope_v = map.slope_v.data();
+    int* owners = owner.data();
+    double* sums = heights.data();
+    for (std::size_t cell_index = 0; cell_index < level.cells.size(); ++cell_index) {
+      const RasterCell& cell = level.cells[cell_index];
+      const int sector_count = cell.sector_count;
+      if (sector_count == 0) continue;
+      const RasterSector* sectors = level.sectors.data() + cell.first_sector;
+      const int code = static_cast<int>(cell_index) + code_base;
+      const int expected = masked ? cell.parent + parent_code_base : -1;
+      // Rows of pixel centres (row + 0.5) / height inside the boundary's extent, unwrapped (the
+      // cell's frame); per row the columns between the boundary's outermost crossings.
+      const int row_first = static_cast<int>(std::ceil(cell.low_y * height - 0.5));
+      const int row_last = static_cast<int>(std::floor(cell.high_y * height - 0.5));
+      if (row_last < row_first) continue;
+      const std::size_t rows = static_cast<std::size_t>(row_last - row_first + 1);
+      span_low.assign(rows, INFINITY);
+      span_high.assign(rows, -INFINITY);
+      const Eigen::Vector2d* vertices = level.vertices.data() + cell.first_vertex;
+      for (int k = 0; k < cell.vertex_count; ++k) {
+        const Eigen::Vector2d& a = vertices[k];
+        const Eigen::Vector2d& b = vertices[k + 1 == cell.vertex_count ? 0 : k + 1];
+        // Pixel-space rows (y * height - 0.5) crossed by the edge, as in the row loop below.
+        const double ya = (cell.centre_y + a.y()) * height - 0.5, yb = (cell.centre_y + b.y()) * height - 0.5;
+        const double y_low = std::min(ya, yb), y_high = std::max(ya, yb);
+        const int edge_first = std::max(row_first, static_cast<int>(std::ceil(y_low)));
+        const int edge_last = std::min(row_last, static_cast<int>(std::floor(y_high)));
+        if (edge_last < edge_first) continue;
+        const double xa = (cell.centre_x + a.x()) * width - 0.5, xb = (cell.centre_x + b.x()) * width - 0.5;
+        const double slope = (xb - xa) / (yb - ya);
+        for (int row = edge_first; row <= edge_last; ++row) {
+          const double x = xa + (row - ya) * slope;
+          const auto slot = static_cast<std::size_t>(row - row_first);
+          span_low[slot] = std::min(span_low[slot], x);
+          span_high[slot] = std::max(span_high[slot], x);
+        }
+      }
+      int sector = 0;
+      for (int row = row_first; row <= row_last; ++row) {
+        const auto slot = static_cast<std::size_t>(row - row_first);
+        if (!(span_low[slot] <= span_high[slot])) continue;
+        // One pixel of slack either side: the crossings above are rounded differently from the
+        // ownership test, which decides.
+        const int column_first = static_cast<int>(std::ceil(span_low[slot])) - 1;
+        const int column_last = static_cast<int>(std::floor(span_high[slot])) + 1;
+        const int row_wrapped = ((row % height) + height) % height;
+        const std::size_t row_base = static_cast<std::size_t>(row_wrapped) * static_cast<std::size_t>(width);
+        const double dy = (row + 0.5) * inverse_height - cell.centre_y;
+        // Sector of the row's first pixel: walk from the previous row's.
+        const double qx_first = (column_first + 0.5) * inverse_width - cell.centre_x;
+        for (int step = 0; step < 2 * sector_count; ++step) {
+          const RasterSector& a = sectors[sector];
+          const RasterSector& b = sectors[sector + 1];
+          if (a.direction_x * dy - a.direction_y * qx_first < 0.0) {
+            sector = sector == 0 ? sector_count - 1 : sector - 1;
+          } else if (b.direction_x * dy - b.direction_y * qx_first >= 0.0) {
+            sector = sector + 1 == sector_count ? 0 : sector + 1;
+          } else {
+            break;
+          }
+        }
+        // Unwrapped columns map to row_base + column + shift; the shift drops by width where
+        // the row crosses the tile's right edge (rows are narrower than the tile).
+        const int column_wrapped_first = ((column_first % width) + width) % width;
+        const int wrap_column = column_first + (width - column_wrapped_first);
+        const double column_offset = cell.centre_x * width - 0.5;
+        const auto pixelRuns = [&](auto above_tag) {
+          constexpr bool above = decltype(above_tag)::value;
+          // Moving right turns the direction clockwise above the centre (out through the
+          // sector's start ray) and counter-clockwise below it (through the next start ray).
+          int k = above ? sector + sector_count : sector;
+          std::ptrdiff_t shift = column_wrapped_first - column_first;
+          const double dy_columns = dy * width;
+          int column = column_first;
+          const auto pixels = [&](int last, const RasterSector& here) {
+            // Locals, so the stores below cannot make the compiler reload them.
+            const double boundary_x = here.boundary_x, boundary_dy = here.boundary_y * dy;
+            const double gradient_x = here.gradient_x, gradient_y = here.gradient_y, gradient_dy = here.gradient_y * dy;
+            double qx = (column + 0.5) * inverse_width - cell.centre_x;
+            std::size_t at = row_base + static_cast<std::size_t>(column + shift);
+            for (; column <= last; ++column, ++at, qx += inverse_width) {
+              if (!(boundary_x * qx + boundary_dy < 1.0)) continue;  // outside the boundary
+              if (owners[at] != expected) continue;  // taken, or another parent's
+              owners[at] = code;
+              const double s = gradient_x * qx + gradient_dy;
+              if (!accumulate || !(s < 1.0)) continue;  // on or past the furrow line: height 0, flat
+              double profile_height, profile_slope;
+              profile_table_.evaluate(1.0 - s, profile_height, profile_slope);
+              sums[at] += depth * profile_height;
+              const double factor = depth * profile_slope;
+              slope_u[at] -= static_cast<float>(factor * gradient_x);
+              slope_v[at] -= static_cast<float>(factor * gradient_y);
+            }
+          };
+          for (int visited = 0; visited < sector_count; ++visited) {  // k stays inside both copies
+            const RasterSector& here = sectors[k];
+            // Column where the row leaves the sector (NaN: it never does).
+            const double edge = dy_columns * (above ? here.crossing_above : here.crossing_below) + column_offset;
+            int last = column_last;
+            if (edge < column_last) {
+              const int truncated = static_cast<int>(std::max(edge, column - 1.0));
+              last = truncated - (edge < truncated ? 1 : 0);
+            }
+            if (column <= wrap_column && last >= wrap_column) {
+              pixels(wrap_column - 1, here);
+              shift -= width;
+            }
+            pixels(last, here);
+            if (column > column_last) break;
+            k += above ? -1 : 1;
+          }
+        };
+        if (dy >= 0.0) {
+          pixelRuns(std::true_type());
+        } else {
+          pixelRuns(std::false_type());
+        }
+      }
+    }
+    // What no cell claimed goes through the per-pixel path (same model as the reference).
+    int cells_out[3] = {-1, -1, -1};
+    for (std::size_t at = 0; at < pixels; ++at) {
+      // Blocks of 16 owners with a vectorisable minimum: nearly all are claimed.
+      if ((at & 15) == 0 && at + 16 <= pixels) {
+        int smallest = owners[at];
+        for (std::size_t j = 1; j < 16; ++j) smallest = std::min(smallest, owners[at + j]);
+        if (smallest >= code_base) {
+          at += 15;
+          continue;
+        }
+      }
+      if (owners[at] >= code_base) continue;
+      const int row = static_cast<int>(at / static_cast<std::size_t>(width));
+      const int column = static_cast<int>(at - static_cast<std::size_t>(row) * static_cast<std::size_t>(width));
+      const ReliefSample sample = evaluateFast((column + 0.5) * inverse_width, (row + 0.5) * inverse_height,
+                                               accumulate ? level_index : level_index + 1, level_index + 1, nullptr, cells_out);
+      owners[at] = cells_out[level_index] + code_base;
+      sums[at] += sample.height;
+      slope_u[at] += static_cast<float>(sample.slope.x());
+      slope_v[at] += static_cast<float>(sample.slope.y());
+    }
+    parent_code_base = code_base;
+    code_base += static_cast<int>(level.cells.size());
+  }
+  for (std::size_t at = 0; at < pixels; ++at) map.heights[at] = static_cast<float>(heights[at]);
+  return map;
+}
+
+}  // namespace dressed_human
