@@ -334,6 +334,14 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
     Cell child;
     child.centre = pushedAwayFromWalls(parents, parents.cells[static_cast<std::size_t>(parent)], seed + offset.cast<double>(),
                                        0.15 * level.spacing);
+    // Two seeds of a parent too small to push them clear both land on its centre. Coincident
+    // seeds have no bisector: both would get the whole polygon and each its own (different)
+    // wobbled walls to the same neighbours, and the nearest-seed tie would leave the second one
+    // only the pixels that the neighbours' furrows flip to it. Keep one.
+    const std::vector<int>& siblings = parents.cells[static_cast<std::size_t>(parent)].children;
+    if (std::any_of(siblings.begin(), siblings.end(),
+                    [&](int sibling) { return level.cells[static_cast<std::size_t>(sibling)].centre == child.centre; }))
+      continue;
     child.parent = parent;
     parents.cells[static_cast<std::size_t>(parent)].children.push_back(static_cast<int>(level.cells.size()));
     level.cells.push_back(child);

@@ -320,34 +320,8 @@ void SkinRelief::accumulate(int level_index, const Hit& hit, const Eigen::Vector
   sum.slope -= (level.depth * slope) * gradient;
 }
 
-void SkinRelief::referenceRay(int level_index, int cell_index, const Eigen::Vector2d& q, double& s, Eigen::Vector2d& gradient) const {
-  // The roundness-0 branch of accumulate(), without the profile: s and its gradient at
-  // centre + q, with the reference's own ray hit (including where its segment walk keeps the
-  // straight hit).
-  const CellLevel& level = levels_[static_cast<std::size_t>(level_index)];
-  const Cell& cell = level.cells[static_cast<std::size_t>(cell_index)];
-  const Wall* walls = level.walls.data() + cell.first_wall;
-  s = 0.0;
-  gradient.setZero();
-  double best_lower = 0.0;
-  for (int k = 0; k < cell.wall_count; ++k) {
-    const double along_normal = q.dot(walls[k].normal);
-    if (along_normal > 0.0) best_lower = std::max(best_lower, along_normal / (walls[k].centre_distance + walls[k].wobble_extent));
-  }
-  for (int k = 0; k < cell.wall_count; ++k) {
-    const Wall& wall = walls[k];
-    const double along_normal = q.dot(wall.normal);
-    if (along_normal <= 0.0) continue;
-    const double reach = wall.centre_distance - wall.wobble_extent;
-    if (reach > 0.0 && along_normal / reach < best_lower) continue;
-    double wall_s;
-    Eigen::Vector2d wall_gradient;
-    rayHit(level, wall, q, along_normal, wall_s, wall_gradient);
-    if (wall_s > s) {
-      s = wall_s;
-      gradient = wall_gradient;
-    }
-  }
+void SkinRelief::wallRayHit(const CellLevel& level, const Wall& wall, const Eigen::Vector2d& q, double& s, Eigen::Vector2d& gradient) {
+  rayHit(level, wall, q, q.dot(wall.normal), s, gradient);
 }
 
 bool SkinRelief::insideStraightCell(int level_index, const Hit& hit, const Eigen::Vector2d& point) const {

@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <type_traits>
 
@@ -170,6 +169,15 @@ double diamondAngle(double x, double y) {
   return x >= 0.0 ? (t < 0.0 ? 4.0 + t : t) : 2.0 - t;
 }
 
+// Inverse of diamondAngle: a direction (not unit) of pseudo-angle a, any real a.
+Eigen::Vector2d diamondDirection(double a) {
+  a -= 4.0 * std::floor(a / 4.0);
+  if (a < 1.0) return Eigen::Vector2d(1.0 - a, a).normalized();
+  if (a < 2.0) return Eigen::Vector2d(1.0 - a, 2.0 - a).normalized();
+  if (a < 3.0) return Eigen::Vector2d(a - 3.0, 2.0 - a).normalized();
+  return Eigen::Vector2d(a - 3.0, a - 4.0).normalized();
+}
+
 // Exact comparison (the same wall segment gives the same bits); NaN, from a degenerate wall,
 // counts as equal to itself so the bisection below does not chase it.
 bool sameGradient(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -185,6 +193,10 @@ void SkinRelief::buildRasterLevels() {
   std::vector<Eigen::Vector2d> relative;
   std::vector<double> angles;
   std::vector<int> order;
+  std::vector<std::size_t> rank;
+  std::vector<Eigen::Vector2d> piece_direction, piece_gradient;
+  std::vector<double> piece_best;
+  std::vector<int> piece_winner;
   struct ChainSector {
     Eigen::Vector2d direction;  // start ray
     Eigen::Vector2d boundary;   // gradient of the ray ratio to the boundary
@@ -195,6 +207,7 @@ void SkinRelief::buildRasterLevels() {
     Eigen::Vector2d direction;  // unit
   };
   std::vector<CriticalDirection> critical, pieces;
+  std::vector<Eigen::Vector2d> candidate_gradients;
   for (std::size_t index = 0; index < levels_.size() && raster_ready_; ++index) {
     const CellLevel& level = levels_[index];
     RasterLevel& out = raster_[index];
@@ -256,33 +269,51 @@ void SkinRelief::buildRasterLevels() {
           order[k] = static_cast<int>(k);
         }
         std::sort(order.begin(), order.end(), [&](int a, int b) { return angles[static_cast<std::size_t>(a)] < angles[static_cast<std::size_t>(b)]; });
+        // Piece j lies between the sorted vertex directions j and j + 1. An edge can only cross
+        // the pieces between its two ends' ranks, so each edge visits those (usually one) instead
+        // of every piece testing every edge; edges in index order keep the first of equal values.
+        rank.resize(n);
+        for (std::size_t j = 0; j < n; ++j) rank[static_cast<std::size_t>(order[j])] = j;
+        piece_direction.resize(n);
+        piece_best.assign(n, 0.0);
+        piece_winner.assign(n, -1);
+        piece_gradient.resize(n);
+        for (std::size_t j = 0; j < n; ++j) {
+          const double from = angles[static_cast<std::size_t>(order[j])];
+          double to = angles[static_cast<std::size_t>(order[(j + 1) % n])];
+          if (j + 1 == n) to += kTwoPi;
+          const double middle = 0.5 * (from + to);
+          piece_direction[j] = Eigen::Vector2d(std::cos(middle), std::sin(middle));
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+          const Eigen::Vector2d& a = relative[k];
+          const Eigen::Vector2d& b = relative[(k + 1) % n];
+          const double orientation = cross(a, b);
+          if (orientation == 0.0) continue;
+          const std::size_t first_piece = orientation > 0.0 ? rank[k] : rank[(k + 1) % n];
+          const std::size_t end_piece = orientation > 0.0 ? rank[(k + 1) % n] : rank[k];
+          const Eigen::Vector2d g = gradientOf(k);
+          for (std::size_t j = first_piece; j != end_piece; j = j + 1 == n ? 0 : j + 1) {
+            const Eigen::Vector2d& direction = piece_direction[j];
+            const bool inside = orientation > 0.0 ? cross(a, direction) > 0.0 && cross(direction, b) > 0.0
+                                                  : cross(b, direction) > 0.0 && cross(direction, a) > 0.0;
+            if (!inside) continue;
+            const double value = g.dot(direction);
+            if (value > piece_best[j]) {
+              piece_best[j] = value;
+              piece_winner[j] = static_cast<int>(k);
+              piece_gradient[j] = g;
+            }
+          }
+        }
         int previous_winner = -2;
         for (std::size_t j = 0; j < n; ++j) {
           const double from = angles[static_cast<std::size_t>(order[j])];
           double to = angles[static_cast<std::size_t>(order[(j + 1) % n])];
           if (j + 1 == n) to += kTwoPi;
           if (!(to - from > 1e-12)) continue;
-          const double middle = 0.5 * (from + to);
-          const Eigen::Vector2d direction(std::cos(middle), std::sin(middle));
-          int winner = -1;
-          double best = 0.0;
-          Eigen::Vector2d best_gradient(0.0, 0.0);
-          for (std::size_t k = 0; k < n; ++k) {
-            const Eigen::Vector2d& a = relative[k];
-            const Eigen::Vector2d& b = relative[(k + 1) % n];
-            const double orientation = cross(a, b);
-            if (orientation == 0.0) continue;
-            const bool inside = orientation > 0.0 ? cross(a, direction) > 0.0 && cross(direction, b) > 0.0
-                                                  : cross(b, direction) > 0.0 && cross(direction, a) > 0.0;
-            if (!inside) continue;
-            const Eigen::Vector2d g = gradientOf(k);
-            const double value = g.dot(direction);
-            if (value > best) {
-              best = value;
-              winner = static_cast<int>(k);
-              best_gradient = g;
-            }
-          }
+          const int winner = piece_winner[j];
+          Eigen::Vector2d best_gradient = winner >= 0 ? piece_gradient[j] : Eigen::Vector2d(0.0, 0.0);
           if (winner == previous_winner && winner >= 0) continue;  // same triangle continues
           previous_winner = winner;
           // No crossing at all (cannot happen for a closed boundary around the centre): nothing
@@ -303,15 +334,14 @@ void SkinRelief::buildRasterLevels() {
       const Wall* cell_walls = level.walls.data() + cell.first_wall;
       // A wall's change of segment only matters where that wall can have the largest s: the
       // bounds of the reference's own pruning (the wobble keeps each wall's s within them).
-      const auto addCritical = [&](const Eigen::Vector2d& direction, const Wall& wall) {
+      // 1 / (d + e) and 1 / (d - e) per wall (the latter +inf where d <= e: never pruned).
+      const PackedWall* packed_walls = packed_[index].walls.data() + cell.first_wall;
+      const auto addCritical = [&](const Eigen::Vector2d& direction, int wall_index) {
         double best_lower = 0.0;
-        for (int j = 0; j < cell.wall_count; ++j) {
-          const double along = direction.dot(cell_walls[j].normal);
-          if (along > 0.0) best_lower = std::max(best_lower, along / (cell_walls[j].centre_distance + cell_walls[j].wobble_extent));
-        }
-        const double along = direction.dot(wall.normal);
-        const double reach = wall.centre_distance - wall.wobble_extent;
-        if (!(along > 0.0) || (reach > 0.0 && along / reach < best_lower * (1.0 - 1e-9))) return;
+        for (int j = 0; j < cell.wall_count; ++j)
+          best_lower = std::max(best_lower, direction.dot(cell_walls[j].normal) * packed_walls[j].inverse_outer);
+        const double along = direction.dot(cell_walls[wall_index].normal);
+        if (!(along > 0.0) || along * packed_walls[wall_index].inverse_inner < best_lower * (1.0 - 1e-9)) return;
         critical.push_back({diamondAngle(direction.x(), direction.y()), direction.normalized()});
       };
       if (level.subdivisions > 0) {
@@ -325,14 +355,14 @@ void SkinRelief::buildRasterLevels() {
           const double window_turn = cross(window_from, window_to);
           Eigen::Vector2d previous = wallPoint(level, wall, 0.0) - cell.centre;
           for (int knot = -1; knot <= segments + 1; ++knot) {
-            addCritical(wall.start + wall.tangent * (wall.length * knot / segments) - cell.centre, wall);
+            addCritical(wall.start + wall.tangent * (wall.length * knot / segments) - cell.centre, k);
             if (knot < 0 || knot > segments) continue;
             const Eigen::Vector2d point = wallPoint(level, wall, static_cast<double>(knot) / segments) - cell.centre;
-            addCritical(point, wall);
+            addCritical(point, k);
             if (knot > 0) {
               Eigen::Vector2d along = point - previous;
               if (along.dot(wall.normal) < 0.0) along = -along;
-              if (cross(window_from, along) * window_turn > 0.0 && cross(along, window_to) * window_turn > 0.0) addCritical(along, wall);
+              if (cross(window_from, along) * window_turn > 0.0 && cross(along, window_to) * window_turn > 0.0) addCritical(along, k);
             }
             previous = point;
           }
@@ -342,16 +372,82 @@ void SkinRelief::buildRasterLevels() {
       critical.erase(std::unique(critical.begin(), critical.end(),
                                  [](const CriticalDirection& a, const CriticalDirection& b) { return b.angle - a.angle < 1e-13; }),
                      critical.end());
+      // Between consecutive critical directions every wall's decision (straight hit, or which
+      // segment its walk settles on) is fixed, so each wall's s is g_k . q with one g_k, taken
+      // from the wall's own ray hit at the piece's middle direction. The max over walls of those
+      // linear functions changes winner only where two of them tie, g_a . d = g_b . d, i.e. d
+      // perpendicular to g_a - g_b: walk the upper envelope from the piece's start, each time to
+      // the first direction where another wall overtakes the current winner. (Walls are not
+      // pruned here: the reference's pruning only drops walls that cannot win.)
       const double scale = 0.25 * level.spacing;
-      const int cell_index = static_cast<int>(out.cells.size());
-      const auto referenceGradient = [&](const Eigen::Vector2d& direction) {
-        double s;
-        Eigen::Vector2d gradient;
-        referenceRay(static_cast<int>(index), cell_index, scale * direction, s, gradient);
-        return gradient;
+      // Walls that can win somewhere in the piece [lo, hi] (less than a half turn): a wall's s
+      // lies within q . n / (d + e) and q . n / (d - e) (the wobble moves it by at most e), and
+      // over the arc q . n is smallest at an end and largest at an end or at n itself.
+      const auto gradientsAt = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) {
+        candidate_gradients.clear();
+        double best_lower = 0.0;
+        for (int k = 0; k < cell.wall_count; ++k) {
+          const Wall& wall = cell_walls[k];
+          best_lower = std::max(best_lower, std::min(lo.dot(wall.normal), hi.dot(wall.normal)) * packed_walls[k].inverse_outer);
+        }
+        const Eigen::Vector2d q = scale * direction;
+        for (int k = 0; k < cell.wall_count; ++k) {
+          const Wall& wall = cell_walls[k];
+          if (!(q.dot(wall.normal) > 0.0)) continue;
+          // (normals are unit vectors)
+          const double highest = cross(lo, wall.normal) > 0.0 && cross(wall.normal, hi) > 0.0 ? 1.0
+                                                                                               : std::max(lo.dot(wall.normal), hi.dot(wall.normal));
+          if (highest * packed_walls[k].inverse_inner < best_lower * (1.0 - 1e-9)) continue;
+          double s;
+          Eigen::Vector2d gradient;
+          wallRayHit(level, wall, q, s, gradient);
+          if (std::isnan(s) || !gradient.allFinite()) continue;  // the reference's "s > best" never takes NaN
+          candidate_gradients.push_back(gradient);
+        }
       };
-      const auto rotated = [](const Eigen::Vector2d& direction, double angle) {
-        return Eigen::Vector2d(direction.x() - angle * direction.y(), direction.y() + angle * direction.x());
+      // Calls emit_at(start, gradient) for every sector of the envelope over [lo, hi] (unit
+      // directions, counter-clockwise, less than a half turn apart), the first at lo.
+      const auto envelope = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, auto&& emit_at) {
+        gradientsAt(lo, hi, (lo + hi).normalized());
+        const std::size_t count = candidate_gradients.size();
+        if (count == 0) {
+          emit_at(lo, Eigen::Vector2d(0.0, 0.0));  // no wall ahead: s = 0, as in the reference
+          return;
+        }
+        // The winner just after a direction: the largest value a hair further counter-clockwise
+        // (exact ties at polygon corners would otherwise be decided by rounding).
+        constexpr double kNudge = 1e-12;  // radians; at a cell's radius far below a pixel
+        const auto winnerAfter = [&](const Eigen::Vector2d& direction) {
+          const Eigen::Vector2d probe(direction.x() - kNudge * direction.y(), direction.y() + kNudge * direction.x());
+          std::size_t winner = 0;
+          for (std::size_t j = 1; j < count; ++j)
+            if (candidate_gradients[j].dot(probe) > candidate_gradients[winner].dot(probe)) winner = j;
+          return winner;
+        };
+        std::size_t winner = winnerAfter(lo);
+        emit_at(lo, candidate_gradients[winner]);
+        Eigen::Vector2d current = lo;
+        for (std::size_t guard = 0; guard < 4 * count + 4; ++guard) {
+          std::size_t next = count;
+          Eigen::Vector2d best_tie(0.0, 0.0);
+          for (std::size_t j = 0; j < count; ++j) {
+            if (j == winner) continue;
+            const Eigen::Vector2d difference = candidate_gradients[j] - candidate_gradients[winner];
+            // The direction where j overtakes: difference . tie = 0, growing counter-clockwise.
+            const Eigen::Vector2d tie = Eigen::Vector2d(difference.y(), -difference.x());
+            const double length = tie.norm();
+            if (!(length > 0.0)) continue;
+            if (!(cross(current, tie) > 2.0 * kNudge * length && cross(tie, hi) > 2.0 * kNudge * length)) continue;
+            if (next == count || cross(tie, best_tie) > 0.0) {
+              next = j;
+              best_tie = tie;
+            }
+          }
+          if (next == count) break;
+          current = best_tie.normalized();
+          winner = winnerAfter(current);
+          emit_at(current, candidate_gradients[winner]);
+        }
       };
       const std::size_t chain_count = chain_sectors.size();
       for (std::size_t k = 0; k < chain_count && chain_count >= 3; ++k) {
@@ -362,66 +458,44 @@ void SkinRelief::buildRasterLevels() {
         const double from = diamondAngle(from_direction.x(), from_direction.y());
         double to = diamondAngle(to_direction.x(), to_direction.y());
         while (to <= from) to += 4.0;
-        int budget = 256;  // evaluations per sector spent on locating changes; a handful is the rule
-        const auto emit = [&](const Eigen::Vector2d& start, const Eigen::Vector2d& gradient) {
-          out.sectors.push_back({start.x(), start.y(), gradient.x(), gradient.y(), sector.boundary.x(), sector.boundary.y(), 0.0, 0.0});
-        };
-        // Emits a sector start where the gradient changes between two directions (unit vectors,
-        // less than a half turn apart). Where two walls' s cross, the change is at
-        // (g_lo - g_hi) . q = 0, checked by one sample either side; otherwise bisect.
-        std::function<void(const Eigen::Vector2d&, const Eigen::Vector2d&, const Eigen::Vector2d&, const Eigen::Vector2d&)> split =
-            [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& at_lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& at_hi) {
-              if (budget <= 0) return;
-              budget -= 2;
-              Eigen::Vector2d crossing(at_hi.y() - at_lo.y(), at_lo.x() - at_hi.x());
-              if (cross(lo, crossing) < 0.0) crossing = -crossing;
-              if (crossing.squaredNorm() > 0.0 && cross(lo, crossing) > 0.0 && cross(crossing, hi) > 0.0) {
-                crossing.normalize();
-                const double step = std::min(1e-12, 0.25 * std::min(cross(lo, crossing), cross(crossing, hi)));
-                if (sameGradient(referenceGradient(rotated(crossing, -step)), at_lo) &&
-                    sameGradient(referenceGradient(rotated(crossing, step)), at_hi)) {
-                  emit(crossing, at_hi);
-                  return;
-                }
-              }
-              const Eigen::Vector2d half = (lo + hi).normalized();
-              if (cross(lo, hi) < 1e-13) {
-                emit(half, at_hi);
-                return;
-              }
-              const Eigen::Vector2d at_half = referenceGradient(half);
-              if (!sameGradient(at_lo, at_half)) split(lo, at_lo, half, at_half);
-              if (!sameGradient(at_half, at_hi)) split(half, at_half, hi, at_hi);
-            };
-        // Pieces of the sector between the critical directions (which may wrap past 4).
+        // Pieces of the sector between the critical directions (which may wrap past 4), none
+        // wider than a quarter of the pseudo-angle period's half (so less than a half turn).
         pieces.clear();
         pieces.push_back({from, from_direction});
+        const auto pushUpTo = [&](double angle, const Eigen::Vector2d& direction) {
+          const double previous = pieces.back().angle;
+          const int extra = static_cast<int>(std::ceil((angle - previous) / 0.5)) - 1;
+          for (int e = 1; e <= extra; ++e) {
+            const double a = previous + (angle - previous) * e / (extra + 1);
+            pieces.push_back({a, diamondDirection(a)});
+          }
+          pieces.push_back({angle, direction});
+        };
         // critical is sorted in [0, 4); from is in [0, 4) and to < from + 4.
         for (int turn = 0; turn < 2; ++turn) {
           const double low = from + 1e-13 - turn * 4.0, high = to - 1e-13 - turn * 4.0;
           auto it = std::upper_bound(critical.begin(), critical.end(), low,
                                      [](double value, const CriticalDirection& entry) { return value < entry.angle; });
-          for (; it != critical.end() && it->angle < high; ++it) pieces.push_back({it->angle + turn * 4.0, it->direction});
+          for (; it != critical.end() && it->angle < high; ++it) pushUpTo(it->angle + turn * 4.0, it->direction);
         }
-        pieces.push_back({to, to_direction});
-        Eigen::Vector2d carried = Eigen::Vector2d::Zero();
+        pushUpTo(to, to_direction);
+        Eigen::Vector2d carried(0.0, 0.0);
         bool started = false;
+        const auto emit_at = [&](const Eigen::Vector2d& start, const Eigen::Vector2d& gradient) {
+          if (!started) {
+            out.sectors.push_back({sector.direction.x(), sector.direction.y(), gradient.x(), gradient.y(), sector.boundary.x(),
+                                   sector.boundary.y(), 0.0, 0.0});
+            started = true;
+          } else if (!sameGradient(gradient, carried)) {
+            out.sectors.push_back({start.x(), start.y(), gradient.x(), gradient.y(), sector.boundary.x(), sector.boundary.y(), 0.0, 0.0});
+          }
+          carried = gradient;
+        };
         for (std::size_t piece = 0; piece + 1 < pieces.size(); ++piece) {
           const Eigen::Vector2d& lo = pieces[piece].direction;
           const Eigen::Vector2d& hi = pieces[piece + 1].direction;
-          const double width_sine = cross(lo, hi);
-          const double inset = lo.dot(hi) > 0.0 ? std::min(1e-9, 0.25 * width_sine) : 1e-9;
-          if (!(inset > 0.0)) continue;  // coincident directions
-          const Eigen::Vector2d lo_inside = rotated(lo, inset).normalized(), hi_inside = rotated(hi, -inset).normalized();
-          const Eigen::Vector2d first = referenceGradient(lo_inside);
-          if (!started) {
-            emit(sector.direction, first);
-            started = true;
-          } else if (!sameGradient(first, carried)) {
-            emit(lo, first);
-          }
-          carried = referenceGradient(hi_inside);
-          if (!sameGradient(first, carried)) split(lo_inside, first, hi_inside, carried);
+          if (!(cross(lo, hi) > 0.0)) continue;  // coincident directions
+          envelope(lo, hi, emit_at);
         }
       }
       raster.sector_count = static_cast<int>(out.sectors.size()) - raster.first_sector;

@@ -158,7 +158,9 @@ class SkinRelief {
     std::vector<Eigen::Vector2d> vertices;
     double depth = 0.0;
   };
-  void referenceRay(int level, int cell, const Eigen::Vector2d& q, double& s, Eigen::Vector2d& gradient) const;
+  // One wall's ray hit as the reference computes it (s and its gradient at centre + q, q . n > 0).
+  static void wallRayHit(const skin_detail::CellLevel& level, const skin_detail::Wall& wall, const Eigen::Vector2d& q, double& s,
+                         Eigen::Vector2d& gradient);
   void buildRasterLevels();
   ReliefMap renderRaster(int width, int height, int only_level) const;
 
