@@ -94,6 +94,9 @@ SkinRelief::SkinRelief(const SkinReliefParameters& parameters)
   roundness_exponent_ = parameters.roundness > 0.0 ? std::max(2, static_cast<int>(std::lround(2.0 / parameters.roundness))) : 0;
   buildPackedLevels();
   buildRasterLevels();
+  const std::vector<double>& heights = profile_table_.heights();
+  const std::vector<double>& slopes = profile_table_.slopes();
+  for (std::size_t k = 0; k < heights.size(); ++k) profile_pairs_.insert(profile_pairs_.end(), {heights[k], slopes[k]});
 }
 
 void SkinRelief::buildPackedLevels() {

@@ -6,16 +6,24 @@
 // wins and which of its segments is hit (or that its segment walk keeps the straight line) from
 // the direction of p - c alone. On one straight segment s is linear in p, s = g . (p - c). So
 // s has a constant gradient inside each angular sector between the directions where one of those
-// decisions changes; those sectors are found once, at construction, by sampling the reference's
-// own ray hit (referenceRay) and bisecting, and a pixel only needs its sector -- found
-// incrementally along a row, the row split at the columns where it crosses a sector's ray.
+// decisions changes. The sectors are built at construction without sampling: one wall's decision
+// can only change at directions through its polyline knots, through the points of its straight
+// line where the segment walk starts on another segment (and one segment past either end), and
+// parallel to a segment; between consecutive such directions every wall's g is fixed (one ray hit
+// per wall at the piece's middle), and the max over walls of those linear functions changes only
+// where two tie, d perpendicular to g_a - g_b (buildRasterLevels walks that upper envelope).
+// A pixel only needs its sector -- found incrementally along a row, the row split at the columns
+// where it crosses a sector's ray.
 // Which cell owns a pixel follows the cell's boundary polygon (the wobbled walls, and on child
 // levels the parent's wobbled wall pieces): inside the polygon exactly where the ray ratio to it,
 // linear per sector too, is < 1; a pixel also needs its parent on the level above. Pixels no
 // cell claims -- pockets where a wobbled wall folds back as seen from the centre, slivers at
 // junctions, pixels exactly on a boundary -- go through the per-pixel path (the reference's
 // decisions). The ownership rule differs from the reference's nearest-seed-then-wobble rule at a
-// few pixels along furrows; skin_relief.h states how many, test_skin_relief.cpp checks it.
+// few pixels along furrows (near corners, where two walls' wobbled polylines cross and the
+// reference flips a pixel at most once, the boundary polygons of two cells can overlap and the
+// first cell in index order takes the pixel); skin_relief.h states how many,
+// test_skin_relief.cpp checks it.
 #include "dressed_human/core/skin_relief.h"
 
 #include <algorithm>
@@ -207,6 +215,11 @@ void SkinRelief::buildRasterLevels() {
     Eigen::Vector2d direction;  // unit
   };
   std::vector<CriticalDirection> critical, pieces;
+  struct PrunedDirection {
+    double angle;  // diamondAngle, in [0, 4)
+    int wall;
+  };
+  std::vector<PrunedDirection> pruned, splits;
   std::vector<Eigen::Vector2d> candidate_gradients;
   for (std::size_t index = 0; index < levels_.size() && raster_ready_; ++index) {
     const CellLevel& level = levels_[index];
@@ -341,9 +354,21 @@ void SkinRelief::buildRasterLevels() {
         for (int j = 0; j < cell.wall_count; ++j)
           best_lower = std::max(best_lower, direction.dot(cell_walls[j].normal) * packed_walls[j].inverse_outer);
         const double along = direction.dot(cell_walls[wall_index].normal);
-        if (!(along > 0.0) || along * packed_walls[wall_index].inverse_inner < best_lower * (1.0 - 1e-9)) return;
+        if (!(along > 0.0)) return;  // the wall is behind: nothing of it can win here
+        if (along * packed_walls[wall_index].inverse_inner < best_lower * (1.0 - 1e-9)) {
+          // Cannot win here; kept aside in case a piece where the wall can win contains it.
+          pruned.push_back({diamondAngle(direction.x(), direction.y()), wall_index});
+          return;
+        }
         critical.push_back({diamondAngle(direction.x(), direction.y()), direction.normalized()});
       };
+      pruned.clear();
+      for (int k = 0; k < cell.wall_count; ++k) {
+        // Where q . n changes sign the reference starts or stops casting to the wall at all.
+        const Eigen::Vector2d& n = cell_walls[k].normal;
+        pruned.push_back({diamondAngle(-n.y(), n.x()), k});
+        pruned.push_back({diamondAngle(n.y(), -n.x()), k});
+      }
       if (level.subdivisions > 0) {
         const int segments = 1 << level.subdivisions;
         for (int k = 0; k < cell.wall_count; ++k) {
@@ -369,6 +394,7 @@ void SkinRelief::buildRasterLevels() {
         }
       }
       std::sort(critical.begin(), critical.end(), [](const CriticalDirection& a, const CriticalDirection& b) { return a.angle < b.angle; });
+      std::sort(pruned.begin(), pruned.end(), [](const PrunedDirection& a, const PrunedDirection& b) { return a.angle < b.angle; });
       critical.erase(std::unique(critical.begin(), critical.end(),
                                  [](const CriticalDirection& a, const CriticalDirection& b) { return b.angle - a.angle < 1e-13; }),
                      critical.end());
@@ -383,21 +409,29 @@ void SkinRelief::buildRasterLevels() {
       // Walls that can win somewhere in the piece [lo, hi] (less than a half turn): a wall's s
       // lies within q . n / (d + e) and q . n / (d - e) (the wobble moves it by at most e), and
       // over the arc q . n is smallest at an end and largest at an end or at n itself.
-      const auto gradientsAt = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) {
-        candidate_gradients.clear();
+      const auto candidatesIn = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) {
         double best_lower = 0.0;
         for (int k = 0; k < cell.wall_count; ++k) {
           const Wall& wall = cell_walls[k];
           best_lower = std::max(best_lower, std::min(lo.dot(wall.normal), hi.dot(wall.normal)) * packed_walls[k].inverse_outer);
         }
-        const Eigen::Vector2d q = scale * direction;
+        std::uint64_t mask = 0;
         for (int k = 0; k < cell.wall_count; ++k) {
           const Wall& wall = cell_walls[k];
-          if (!(q.dot(wall.normal) > 0.0)) continue;
+          if (!(direction.dot(wall.normal) > 0.0)) continue;
           // (normals are unit vectors)
           const double highest = cross(lo, wall.normal) > 0.0 && cross(wall.normal, hi) > 0.0 ? 1.0
                                                                                                : std::max(lo.dot(wall.normal), hi.dot(wall.normal));
           if (highest * packed_walls[k].inverse_inner < best_lower * (1.0 - 1e-9)) continue;
+          mask |= std::uint64_t{1} << k;
+        }
+        return mask;
+      };
+      const auto gradientsAt = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) {
+        candidate_gradients.clear();
+        const Eigen::Vector2d q = scale * direction;
+        for (std::uint64_t mask = candidatesIn(lo, hi, direction); mask != 0; mask &= mask - 1) {
+          const Wall& wall = cell_walls[__builtin_ctzll(mask)];
           double s;
           Eigen::Vector2d gradient;
           wallRayHit(level, wall, q, s, gradient);
@@ -482,12 +516,16 @@ void SkinRelief::buildRasterLevels() {
         Eigen::Vector2d carried(0.0, 0.0);
         bool started = false;
         const auto emit_at = [&](const Eigen::Vector2d& start, const Eigen::Vector2d& gradient) {
+          // Where the winning wall segment is the boundary's own edge the two gradients are the
+          // same up to rounding (the ray hit's formula and the fan triangle's 2x2 solve): store
+          // the ray hit's for both, so render's test "inside the boundary" is its "s < 1".
+          const Eigen::Vector2d boundary =
+              (sector.boundary - gradient).squaredNorm() <= 1e-24 * gradient.squaredNorm() ? gradient : sector.boundary;
           if (!started) {
-            out.sectors.push_back({sector.direction.x(), sector.direction.y(), gradient.x(), gradient.y(), sector.boundary.x(),
-                                   sector.boundary.y(), 0.0, 0.0});
+            out.sectors.push_back({sector.direction.x(), sector.direction.y(), gradient.x(), gradient.y(), boundary.x(), boundary.y(), 0.0, 0.0});
             started = true;
           } else if (!sameGradient(gradient, carried)) {
-            out.sectors.push_back({start.x(), start.y(), gradient.x(), gradient.y(), sector.boundary.x(), sector.boundary.y(), 0.0, 0.0});
+            out.sectors.push_back({start.x(), start.y(), gradient.x(), gradient.y(), boundary.x(), boundary.y(), 0.0, 0.0});
           }
           carried = gradient;
         };
@@ -495,7 +533,26 @@ void SkinRelief::buildRasterLevels() {
           const Eigen::Vector2d& lo = pieces[piece].direction;
           const Eigen::Vector2d& hi = pieces[piece + 1].direction;
           if (!(cross(lo, hi) > 0.0)) continue;  // coincident directions
-          envelope(lo, hi, emit_at);
+          // A wall that can win somewhere in the piece must keep one decision over all of it:
+          // split at its directions set aside above (where it could not win) inside the piece.
+          splits.clear();
+          const double a0 = pieces[piece].angle, a1 = pieces[piece + 1].angle;
+          for (int turn = 0; turn < 2; ++turn) {
+            auto it = std::upper_bound(pruned.begin(), pruned.end(), a0 - turn * 4.0,
+                                       [](double value, const PrunedDirection& entry) { return value < entry.angle; });
+            for (; it != pruned.end() && it->angle < a1 - turn * 4.0; ++it) splits.push_back({it->angle + turn * 4.0, it->wall});
+          }
+          std::uint64_t mask = 0;
+          if (!splits.empty()) mask = candidatesIn(lo, hi, (lo + hi).normalized());
+          Eigen::Vector2d from_direction_piece = lo;
+          for (const PrunedDirection& split : splits) {
+            if (!(mask >> split.wall & 1)) continue;
+            const Eigen::Vector2d at = diamondDirection(split.angle);
+            if (!(cross(from_direction_piece, at) > 0.0 && cross(at, hi) > 0.0)) continue;
+            envelope(from_direction_piece, at, emit_at);
+            from_direction_piece = at;
+          }
+          envelope(from_direction_piece, hi, emit_at);
         }
       }
       raster.sector_count = static_cast<int>(out.sectors.size()) - raster.first_sector;
@@ -550,6 +607,9 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   owner.assign(pixels, -1);
   int code_base = 0, parent_code_base = -1;
   const double inverse_width = 1.0 / width, inverse_height = 1.0 / height;
+  const double profile_last = profile_table_.last();
+  const int profile_entries = static_cast<int>(profile_last) - 1;  // last entry index with a step
+  const double* profile_pairs = profile_pairs_.data();
   for (int level_index = 0; level_index < end; ++level_index) {
     const RasterLevel& level = raster_[static_cast<std::size_t>(level_index)];
     const bool accumulate = level_index >= first;
@@ -597,10 +657,10 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       for (int row = row_first; row <= row_last; ++row) {
         const auto slot = static_cast<std::size_t>(row - row_first);
         if (!(span_low[slot] <= span_high[slot])) continue;
-        // One pixel of slack either side: the crossings above are rounded differently from the
-        // ownership test, which decides.
-        const int column_first = static_cast<int>(std::ceil(span_low[slot])) - 1;
-        const int column_last = static_cast<int>(std::floor(span_high[slot])) + 1;
+        // Pixel centres within the row's outermost boundary crossings. One rounded the other
+        // way from the ownership test is claimed by no cell here and so takes the per-pixel path.
+        const int column_first = static_cast<int>(std::ceil(span_low[slot]));
+        const int column_last = static_cast<int>(std::floor(span_high[slot]));
         const int row_wrapped = ((row % height) + height) % height;
         const std::size_t row_base = static_cast<std::size_t>(row_wrapped) * static_cast<std::size_t>(width);
         const double dy = (row + 0.5) * inverse_height - cell.centre_y;
@@ -631,23 +691,45 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
           const double dy_columns = dy * width;
           int column = column_first;
           const auto pixels = [&](int last, const RasterSector& here) {
+            if (last < column) return;
+            const int count = last - column + 1;
             // Locals, so the stores below cannot make the compiler reload them.
-            const double boundary_x = here.boundary_x, boundary_dy = here.boundary_y * dy;
             const double gradient_x = here.gradient_x, gradient_y = here.gradient_y, gradient_dy = here.gradient_y * dy;
             double qx = (column + 0.5) * inverse_width - cell.centre_x;
-            std::size_t at = row_base + static_cast<std::size_t>(column + shift);
-            for (; column <= last; ++column, ++at, qx += inverse_width) {
-              if (!(boundary_x * qx + boundary_dy < 1.0)) continue;  // outside the boundary
-              if (owners[at] != expected) continue;  // taken, or another parent's
-              owners[at] = code;
-              const double s = gradient_x * qx + gradient_dy;
-              if (!accumulate || !(s < 1.0)) continue;  // on or past the furrow line: height 0, flat
-              double profile_height, profile_slope;
-              profile_table_.evaluate(1.0 - s, profile_height, profile_slope);
-              sums[at] += depth * profile_height;
-              const double factor = depth * profile_slope;
-              slope_u[at] -= static_cast<float>(factor * gradient_x);
-              slope_v[at] -= static_cast<float>(factor * gradient_y);
+            const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(row_base) + column + shift;
+            int* const own = owners + offset;
+            double* const sum = sums + offset;
+            float* const su = slope_u + offset;
+            float* const sv = slope_v + offset;
+            column = last + 1;
+            const auto shade = [&](int i, double s) {
+              // profile_table_.evaluate(1 - s) with s < 1 (so x > 0), the same operations.
+              const double position = std::min(1.0 - s, 1.0) * profile_last;
+              const int entry = std::min(static_cast<int>(position), profile_entries);
+              const double fraction = position - entry;
+              const double* pair = profile_pairs + 2 * entry;
+              sum[i] += depth * (pair[0] + fraction * (pair[2] - pair[0]));
+              const double factor = depth * (pair[1] + fraction * (pair[3] - pair[1]));
+              su[i] -= static_cast<float>(factor * gradient_x);
+              sv[i] -= static_cast<float>(factor * gradient_y);
+            };
+            if (here.boundary_x == gradient_x && here.boundary_y == gradient_y) {
+              // The usual sector: the boundary is the winning wall's own segment, so b . q = s
+              // (same operations) and "inside the boundary" is "s < 1".
+              for (int i = 0; i < count; ++i, qx += inverse_width) {
+                const double s = gradient_x * qx + gradient_dy;
+                if (!(s < 1.0) || own[i] != expected) continue;  // outside, taken, or another parent's
+                own[i] = code;
+                if (accumulate) shade(i, s);
+              }
+            } else {
+              const double boundary_x = here.boundary_x, boundary_dy = here.boundary_y * dy;
+              for (int i = 0; i < count; ++i, qx += inverse_width) {
+                if (!(boundary_x * qx + boundary_dy < 1.0) || own[i] != expected) continue;  // outside, taken, another parent's
+                own[i] = code;
+                const double s = gradient_x * qx + gradient_dy;
+                if (accumulate && s < 1.0) shade(i, s);  // on or past the furrow line: height 0, flat
+              }
             }
           };
           for (int visited = 0; visited < sector_count; ++visited) {  // k stays inside both copies
@@ -677,16 +759,13 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
     }
     // What no cell claimed goes through the per-pixel path (same model as the reference).
     int cells_out[3] = {-1, -1, -1};
-    for (std::size_t at = 0; at < pixels; ++at) {
-      // Blocks of 16 owners with a vectorisable minimum: nearly all are claimed.
-      if ((at & 15) == 0 && at + 16 <= pixels) {
-        int smallest = owners[at];
-        for (std::size_t j = 1; j < 16; ++j) smallest = std::min(smallest, owners[at + j]);
-        if (smallest >= code_base) {
-          at += 15;
-          continue;
-        }
-      }
+    for (std::size_t block = 0; block < pixels; block += 64) {
+      // Blocks of 64 owners, tested with a vectorisable "any below": nearly all are claimed.
+      const std::size_t block_end = std::min(block + 64, pixels);
+      int unclaimed = 0;
+      for (std::size_t at = block; at < block_end; ++at) unclaimed |= static_cast<int>(owners[at] < code_base);
+      if (unclaimed == 0) continue;
+      for (std::size_t at = block; at < block_end; ++at) {
       if (owners[at] >= code_base) continue;
       const int row = static_cast<int>(at / static_cast<std::size_t>(width));
       const int column = static_cast<int>(at - static_cast<std::size_t>(row) * static_cast<std::size_t>(width));
@@ -696,6 +775,7 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       sums[at] += sample.height;
       slope_u[at] += static_cast<float>(sample.slope.x());
       slope_v[at] += static_cast<float>(sample.slope.y());
+      }
     }
     parent_code_base = code_base;
     code_base += static_cast<int>(level.cells.size());

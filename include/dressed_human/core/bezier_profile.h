@@ -37,6 +37,11 @@ class BezierProfileTable {
     slope = slopes_[at] + fraction * (slopes_[at + 1] - slopes_[at]);
   }
 
+  /// The table itself: entries last() + 1 at x = k / last(), evaluate() interpolates them.
+  double last() const { return last_; }
+  const std::vector<double>& heights() const { return heights_; }
+  const std::vector<double>& slopes() const { return slopes_; }
+
   /// Exact evaluation by solving x(t) = x (for tests and table construction).
   static void evaluateExact(const BezierProfile& profile, double x, double& height, double& slope);
 

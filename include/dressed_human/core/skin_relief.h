@@ -25,10 +25,11 @@
 //  * per cell (render() with roundness 0, skin_relief_raster.cpp): with max over walls, s is
 //    the ray ratio to one wall segment and so linear inside each angular sector seen from the
 //    centre. At construction every cell gets its boundary polygon (wobbled walls; on child levels
-//    the parent's wobbled wall pieces) and its sectors with the reference's gradient of s; render
-//    fills each cell's pixels row by row, stepping through the sectors, masked by the parent
-//    level's owners. Pixels no cell claims go through the per-pixel path. It differs from the
-//    reference only in which cell owns a few pixels along furrows (kReference* below).
+//    the parent's wobbled wall pieces) and its sectors with the reference's gradient of s (from
+//    the directions where a wall's ray-hit decision can change and the ties between walls, no
+//    sampling); render fills each cell's pixels row by row, stepping through the sectors, masked
+//    by the parent level's owners. Pixels no cell claims go through the per-pixel path. It differs
+//    from the reference only in which cell owns a few pixels along furrows (kReference* below).
 #pragma once
 
 #include "dressed_human/core/bezier_profile.h"
@@ -89,21 +90,23 @@ class SkinRelief {
   /// kReferenceSlopeTolerance.
   /// render() with roundness 0 rasterises cells (skin_relief_raster.cpp). Its s is the
   /// reference's own (same wall, same segment, same gradient per angular sector), but which cell
-  /// owns a pixel follows the cell's boundary polygon, and on child levels that polygon meets the
-  /// parent's wobbled furrow slightly differently from the reference's nearest-child-then-wobble
-  /// rule (and the reference's single wobble flip near corners). So a few pixels next to a cell
-  /// border -- measured: 0.06% at the benchmark's parameters, 0.3% stretched, 0.6% with the
-  /// strongest wobble (0.3, 16 segments, roughness 0.8), none with straight walls -- take the
-  /// neighbouring cell's height, up to a third of the deepest level's depth (measured 0.05, 0.06,
-  /// 0.33 of it). The bounds below leave about 1.5x margin over the worst measured case; a map
-  /// shifted by one pixel or with another seed's cells on one level differs at > 90% of pixels.
-  /// Slopes of the pixels whose height agrees are within kReferenceSlopeTolerance (measured 4e-6).
+  /// owns a pixel follows the cell's boundary polygon, and near corners, where two walls' wobbled
+  /// polylines cross, that differs from the reference's nearest-seed-then-one-wobble-flip rule
+  /// (two cells' polygons overlap, or leave a sliver the per-pixel path fills). So a few pixels
+  /// next to a cell border take the neighbouring cell's height. Measured at 256^2 (after
+  /// coincident child seeds were merged, skin_cell_hierarchy.cpp): 0.0092 % of pixels at the
+  /// benchmark's parameters, 0.0122 % stretched (2.2), 0.0854 % with the strongest wobble (0.3,
+  /// 16 segments, roughness 0.8), none with straight walls; largest height difference 0.035,
+  /// 0.017 and 0.334 of the deepest level's depth. The bounds below are those worst cases
+  /// rounded up (0.1 %, 0.35); a map shifted by one pixel or with another seed's cells on one
+  /// level differs at > 90 % of pixels. Slopes of the pixels whose height agrees are within
+  /// kReferenceSlopeTolerance (measured 3.8e-6).
   static constexpr double kReferenceHeightTolerance = 1e-9;
   static constexpr double kReferenceSlopeTolerance = 1e-5;
-  static constexpr double kReferenceDifferingFraction = 0.01;  ///< raster render(): pixels beyond 1e-9
+  static constexpr double kReferenceDifferingFraction = 0.001;  ///< raster render(): pixels beyond 1e-9
   /// raster render(): largest |height difference|, as a fraction of the deepest level's depth
   /// (level_depth[l] * level spacing).
-  static constexpr double kReferenceLargestHeightDifference = 0.5;
+  static constexpr double kReferenceLargestHeightDifference = 0.35;
 
   /// Render the tile at pixel centres ((column + 0.5) / width, (row + 0.5) / height).
   /// only_level >= 0 renders that level alone (the levels above still decide ownership).
@@ -228,6 +231,9 @@ class SkinRelief {
   BezierProfileTable profile_table_;
   int roundness_exponent_ = 0;  // 0 = max (polygonal)
   std::vector<RasterLevel> raster_;
+  // profile_table_ repacked for the rasteriser's inner loop: height and slope of each entry side
+  // by side (half the cache lines of the two tables per lookup; the same interpolation).
+  std::vector<double> profile_pairs_;
   bool raster_ready_ = false;  // render() rasterises (roundness 0, every cell narrower than the tile)
 };
 
