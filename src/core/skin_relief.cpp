@@ -112,6 +112,7 @@ void SkinRelief::buildPackedLevels() {
       max_wall_count_ = std::max(max_wall_count_, cell.wall_count);
     }
     packed.walls.reserve(level.walls.size());
+    packed.segments.reserve(level.walls.size() * static_cast<std::size_t>(packed.segment_count));
     for (const Wall& wall : level.walls) {
       PackedWall out;
       out.normal_x = wall.normal.x();

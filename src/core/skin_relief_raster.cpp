@@ -39,8 +39,6 @@ using skin_detail::Wall;
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Outward wobble of a wall at parameter u (0 outside (0, 1), as in the reference).
@@ -197,7 +195,7 @@ bool sameGradient(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 void SkinRelief::buildRasterLevels() {
   raster_.assign(levels_.size(), RasterLevel());
-  raster_ready_ = roundness_exponent_ == 0;
+  raster_ready_ = roundness_exponent_ == 0 && max_wall_count_ <= 64;  // walls as bits of a 64-bit mask
   std::vector<Eigen::Vector2d> relative;
   std::vector<double> angles;
   std::vector<int> order;
@@ -213,6 +211,7 @@ void SkinRelief::buildRasterLevels() {
   struct CriticalDirection {
     double angle;  // diamondAngle, in [0, 4)
     Eigen::Vector2d direction;  // unit
+    int wall;  // whose decision can change here (-1: none, a piece boundary only)
   };
   std::vector<CriticalDirection> critical, pieces;
   struct PrunedDirection {
@@ -221,11 +220,20 @@ void SkinRelief::buildRasterLevels() {
   };
   std::vector<PrunedDirection> pruned, splits;
   std::vector<Eigen::Vector2d> candidate_gradients;
+  // Per wall of the current cell, its gradient at the last piece evaluated, valid until the walk
+  // passes one of that wall's critical directions (the wall's decision is fixed in between).
+  std::vector<Eigen::Vector2d> cached_gradient;
+  std::vector<char> cached_usable;
+  std::uint64_t cached = 0;
   for (std::size_t index = 0; index < levels_.size() && raster_ready_; ++index) {
     const CellLevel& level = levels_[index];
     RasterLevel& out = raster_[index];
     out.depth = level.depth;
     out.cells.reserve(level.cells.size());
+    // Sectors (stored twice per cell) and boundary vertices grow by the tens per cell: reserve
+    // about what the benchmark's maps use, so growth does not copy megabytes time and again.
+    out.sectors.reserve(level.cells.size() * 80);
+    out.vertices.reserve(level.cells.size() * 40);
     for (const Cell& cell : level.cells) {
       RasterCell raster;
       raster.centre_x = cell.centre.x();
@@ -263,9 +271,12 @@ void SkinRelief::buildRasterLevels() {
         const Eigen::Vector2d& a = relative[k];
         const Eigen::Vector2d& b = relative[(k + 1) % n];
         if (!(cross(a, b) > 1e-14 * a.norm() * b.norm())) monotone = false;
-        turned += std::atan2(cross(a, b), a.dot(b));
+        // Turn in pseudo-angle units (a half turn is 2; each step here is less than that).
+        double step = diamondAngle(b.x(), b.y()) - diamondAngle(a.x(), a.y());
+        if (step < 0.0) step += 4.0;
+        turned += step;
       }
-      if (monotone && std::abs(turned - kTwoPi) < 1e-6) {
+      if (monotone && std::abs(turned - 4.0) < 1e-6) {
         // The boundary is star-shaped from the centre: one sector per fan triangle.
         for (std::size_t k = 0; k < n; ++k) {
           const Eigen::Vector2d g = gradientOf(k);
@@ -278,7 +289,7 @@ void SkinRelief::buildRasterLevels() {
         angles.resize(n);
         order.resize(n);
         for (std::size_t k = 0; k < n; ++k) {
-          angles[k] = std::atan2(relative[k].y(), relative[k].x());
+          angles[k] = diamondAngle(relative[k].x(), relative[k].y());
           order[k] = static_cast<int>(k);
         }
         std::sort(order.begin(), order.end(), [&](int a, int b) { return angles[static_cast<std::size_t>(a)] < angles[static_cast<std::size_t>(b)]; });
@@ -294,9 +305,8 @@ void SkinRelief::buildRasterLevels() {
         for (std::size_t j = 0; j < n; ++j) {
           const double from = angles[static_cast<std::size_t>(order[j])];
           double to = angles[static_cast<std::size_t>(order[(j + 1) % n])];
-          if (j + 1 == n) to += kTwoPi;
-          const double middle = 0.5 * (from + to);
-          piece_direction[j] = Eigen::Vector2d(std::cos(middle), std::sin(middle));
+          if (j + 1 == n) to += 4.0;
+          piece_direction[j] = diamondDirection(0.5 * (from + to));
         }
         for (std::size_t k = 0; k < n; ++k) {
           const Eigen::Vector2d& a = relative[k];
@@ -323,7 +333,7 @@ void SkinRelief::buildRasterLevels() {
         for (std::size_t j = 0; j < n; ++j) {
           const double from = angles[static_cast<std::size_t>(order[j])];
           double to = angles[static_cast<std::size_t>(order[(j + 1) % n])];
-          if (j + 1 == n) to += kTwoPi;
+          if (j + 1 == n) to += 4.0;
           if (!(to - from > 1e-12)) continue;
           const int winner = piece_winner[j];
           Eigen::Vector2d best_gradient = winner >= 0 ? piece_gradient[j] : Eigen::Vector2d(0.0, 0.0);
@@ -360,7 +370,7 @@ void SkinRelief::buildRasterLevels() {
           pruned.push_back({diamondAngle(direction.x(), direction.y()), wall_index});
           return;
         }
-        critical.push_back({diamondAngle(direction.x(), direction.y()), direction.normalized()});
+        critical.push_back({diamondAngle(direction.x(), direction.y()), direction.normalized(), wall_index});
       };
       pruned.clear();
       for (int k = 0; k < cell.wall_count; ++k) {
@@ -395,9 +405,10 @@ void SkinRelief::buildRasterLevels() {
       }
       std::sort(critical.begin(), critical.end(), [](const CriticalDirection& a, const CriticalDirection& b) { return a.angle < b.angle; });
       std::sort(pruned.begin(), pruned.end(), [](const PrunedDirection& a, const PrunedDirection& b) { return a.angle < b.angle; });
-      critical.erase(std::unique(critical.begin(), critical.end(),
-                                 [](const CriticalDirection& a, const CriticalDirection& b) { return b.angle - a.angle < 1e-13; }),
-                     critical.end());
+      // (Coincident directions stay: each names its wall; they make empty pieces, skipped.)
+      cached = 0;
+      cached_gradient.resize(static_cast<std::size_t>(cell.wall_count));
+      cached_usable.resize(static_cast<std::size_t>(cell.wall_count));
       // Between consecutive critical directions every wall's decision (straight hit, or which
       // segment its walk settles on) is fixed, so each wall's s is g_k . q with one g_k, taken
       // from the wall's own ray hit at the piece's middle direction. The max over walls of those
@@ -430,13 +441,25 @@ void SkinRelief::buildRasterLevels() {
       const auto gradientsAt = [&](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) {
         candidate_gradients.clear();
         const Eigen::Vector2d q = scale * direction;
+        // A sliver between two nearly equal critical directions has its middle within rounding
+        // of one of them, where the decision may fall either way: evaluated afresh, not kept.
+        const bool sliver = !(cross(lo, hi) > 1e-10);
         for (std::uint64_t mask = candidatesIn(lo, hi, direction); mask != 0; mask &= mask - 1) {
-          const Wall& wall = cell_walls[__builtin_ctzll(mask)];
+          const int k = __builtin_ctzll(mask);
+          if ((cached >> k & 1) && !sliver) {
+            if (cached_usable[static_cast<std::size_t>(k)]) candidate_gradients.push_back(cached_gradient[static_cast<std::size_t>(k)]);
+            continue;
+          }
+          const Wall& wall = cell_walls[k];
           double s;
           Eigen::Vector2d gradient;
           wallRayHit(level, wall, q, s, gradient);
-          if (std::isnan(s) || !gradient.allFinite()) continue;  // the reference's "s > best" never takes NaN
-          candidate_gradients.push_back(gradient);
+          // The reference's "s > best" never takes NaN.
+          const bool usable = !std::isnan(s) && gradient.allFinite();
+          if (!sliver) cached |= std::uint64_t{1} << k;
+          cached_gradient[static_cast<std::size_t>(k)] = gradient;
+          cached_usable[static_cast<std::size_t>(k)] = usable;
+          if (usable) candidate_gradients.push_back(gradient);
         }
       };
       // Calls emit_at(start, gradient) for every sector of the envelope over [lo, hi] (unit
@@ -495,24 +518,32 @@ void SkinRelief::buildRasterLevels() {
         // Pieces of the sector between the critical directions (which may wrap past 4), none
         // wider than a quarter of the pseudo-angle period's half (so less than a half turn).
         pieces.clear();
-        pieces.push_back({from, from_direction});
-        const auto pushUpTo = [&](double angle, const Eigen::Vector2d& direction) {
+        pieces.push_back({from, from_direction, -1});
+        const auto pushUpTo = [&](double angle, const Eigen::Vector2d& direction, int wall) {
           const double previous = pieces.back().angle;
           const int extra = static_cast<int>(std::ceil((angle - previous) / 0.5)) - 1;
           for (int e = 1; e <= extra; ++e) {
             const double a = previous + (angle - previous) * e / (extra + 1);
-            pieces.push_back({a, diamondDirection(a)});
+            pieces.push_back({a, diamondDirection(a), -1});
           }
-          pieces.push_back({angle, direction});
+          pieces.push_back({angle, direction, wall});
         };
-        // critical is sorted in [0, 4); from is in [0, 4) and to < from + 4.
+        // critical is sorted in [0, 4); from is in [0, 4) and to < from + 4. Those within 1e-12
+        // of the sector's start make no piece but still end their wall's cached gradient (the
+        // previous sector stopped 1e-13 short of them).
         for (int turn = 0; turn < 2; ++turn) {
-          const double low = from + 1e-13 - turn * 4.0, high = to - 1e-13 - turn * 4.0;
+          const double low = from - 1e-12 - turn * 4.0, high = to - 1e-13 - turn * 4.0;
           auto it = std::upper_bound(critical.begin(), critical.end(), low,
                                      [](double value, const CriticalDirection& entry) { return value < entry.angle; });
-          for (; it != critical.end() && it->angle < high; ++it) pushUpTo(it->angle + turn * 4.0, it->direction);
+          for (; it != critical.end() && it->angle < high; ++it) {
+            if (it->angle + turn * 4.0 <= from + 1e-13) {
+              cached &= ~(std::uint64_t{1} << it->wall);
+            } else {
+              pushUpTo(it->angle + turn * 4.0, it->direction, it->wall);
+            }
+          }
         }
-        pushUpTo(to, to_direction);
+        pushUpTo(to, to_direction, -1);
         Eigen::Vector2d carried(0.0, 0.0);
         bool started = false;
         const auto emit_at = [&](const Eigen::Vector2d& start, const Eigen::Vector2d& gradient) {
@@ -532,25 +563,33 @@ void SkinRelief::buildRasterLevels() {
         for (std::size_t piece = 0; piece + 1 < pieces.size(); ++piece) {
           const Eigen::Vector2d& lo = pieces[piece].direction;
           const Eigen::Vector2d& hi = pieces[piece + 1].direction;
+          if (pieces[piece].wall >= 0) cached &= ~(std::uint64_t{1} << pieces[piece].wall);
           if (!(cross(lo, hi) > 0.0)) continue;  // coincident directions
           // A wall that can win somewhere in the piece must keep one decision over all of it:
           // split at its directions set aside above (where it could not win) inside the piece.
           splits.clear();
           const double a0 = pieces[piece].angle, a1 = pieces[piece + 1].angle;
           for (int turn = 0; turn < 2; ++turn) {
-            auto it = std::upper_bound(pruned.begin(), pruned.end(), a0 - turn * 4.0,
-                                       [](double value, const PrunedDirection& entry) { return value < entry.angle; });
+            // [a0, a1): one exactly on a piece boundary only ends its wall's cached gradient.
+            auto it = std::lower_bound(pruned.begin(), pruned.end(), a0 - turn * 4.0,
+                                       [](const PrunedDirection& entry, double value) { return entry.angle < value; });
             for (; it != pruned.end() && it->angle < a1 - turn * 4.0; ++it) splits.push_back({it->angle + turn * 4.0, it->wall});
           }
           std::uint64_t mask = 0;
           if (!splits.empty()) mask = candidatesIn(lo, hi, (lo + hi).normalized());
+          // Walls that cannot win in this piece are not evaluated in it: their changes here
+          // apply from its start.
+          for (const PrunedDirection& split : splits)
+            if (!(mask >> split.wall & 1)) cached &= ~(std::uint64_t{1} << split.wall);
           Eigen::Vector2d from_direction_piece = lo;
           for (const PrunedDirection& split : splits) {
             if (!(mask >> split.wall & 1)) continue;
             const Eigen::Vector2d at = diamondDirection(split.angle);
-            if (!(cross(from_direction_piece, at) > 0.0 && cross(at, hi) > 0.0)) continue;
-            envelope(from_direction_piece, at, emit_at);
-            from_direction_piece = at;
+            if (cross(from_direction_piece, at) > 0.0 && cross(at, hi) > 0.0) {
+              envelope(from_direction_piece, at, emit_at);
+              from_direction_piece = at;
+            }
+            cached &= ~(std::uint64_t{1} << split.wall);
           }
           envelope(from_direction_piece, hi, emit_at);
         }
