@@ -507,6 +507,16 @@ void SkinRelief::buildRasterLevels() {
         }
       };
       const std::size_t chain_count = chain_sectors.size();
+      // The walk goes round once counter-clockwise from the first sector's start; pseudo-angles
+      // along it are unwrapped (+4 per turn) to compare with the set-aside directions.
+      double unwrap = 0.0, previous_from = -1.0, pruned_cycle = 0.0;
+      std::size_t pruned_index = 0;
+      const auto advancePruned = [&]() {
+        if (++pruned_index == pruned.size()) {
+          pruned_index = 0;
+          pruned_cycle += 4.0;
+        }
+      };
       for (std::size_t k = 0; k < chain_count && chain_count >= 3; ++k) {
         const ChainSector& sector = chain_sectors[k];
         const Eigen::Vector2d from_direction = sector.direction.normalized();
@@ -515,6 +525,18 @@ void SkinRelief::buildRasterLevels() {
         const double from = diamondAngle(from_direction.x(), from_direction.y());
         double to = diamondAngle(to_direction.x(), to_direction.y());
         while (to <= from) to += 4.0;
+        if (k == 0) {
+          pruned_index = static_cast<std::size_t>(
+              std::lower_bound(pruned.begin(), pruned.end(), from, [](const PrunedDirection& entry, double value) { return entry.angle < value; }) -
+              pruned.begin());
+          if (pruned_index == pruned.size()) {
+            pruned_index = 0;
+            pruned_cycle = 4.0;
+          }
+        } else if (from < previous_from) {
+          unwrap += 4.0;
+        }
+        previous_from = from;
         // Pieces of the sector between the critical directions (which may wrap past 4), none
         // wider than a quarter of the pseudo-angle period's half (so less than a half turn).
         pieces.clear();
@@ -568,12 +590,15 @@ void SkinRelief::buildRasterLevels() {
           // A wall that can win somewhere in the piece must keep one decision over all of it:
           // split at its directions set aside above (where it could not win) inside the piece.
           splits.clear();
-          const double a0 = pieces[piece].angle, a1 = pieces[piece + 1].angle;
-          for (int turn = 0; turn < 2; ++turn) {
-            // [a0, a1): one exactly on a piece boundary only ends its wall's cached gradient.
-            auto it = std::lower_bound(pruned.begin(), pruned.end(), a0 - turn * 4.0,
-                                       [](const PrunedDirection& entry, double value) { return entry.angle < value; });
-            for (; it != pruned.end() && it->angle < a1 - turn * 4.0; ++it) splits.push_back({it->angle + turn * 4.0, it->wall});
+          // Those in [a0, a1) (one exactly on a piece boundary only ends its wall's cached
+          // gradient), by a pointer that goes round the sorted list once with the walk.
+          const double a0 = pieces[piece].angle + unwrap, a1 = pieces[piece + 1].angle + unwrap;
+          if (!pruned.empty()) {
+            while (pruned[pruned_index].angle + pruned_cycle < a0) advancePruned();
+            for (int guard = 0; guard < static_cast<int>(pruned.size()) && pruned[pruned_index].angle + pruned_cycle < a1; ++guard) {
+              splits.push_back({pruned[pruned_index].angle + pruned_cycle - unwrap, pruned[pruned_index].wall});
+              advancePruned();
+            }
           }
           std::uint64_t mask = 0;
           if (!splits.empty()) mask = candidatesIn(lo, hi, (lo + hi).normalized());
