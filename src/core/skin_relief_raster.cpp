@@ -659,42 +659,58 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   ReliefMap map(width, height);
   const int first = only_level >= 0 ? only_level : 0;
   const int end = only_level >= 0 ? only_level + 1 : levelCount();
-  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  // Scratch kept per thread between calls: fresh pages for these ~16 bytes per pixel cost more
-  // (page faults, zeroing) than a level's whole rasterisation at 1024^2.
-  thread_local std::vector<double> heights;  // summed in double like the reference, rounded once
-  // One owner per pixel, overwritten level by level: cell + code_base of its level, so a child
-  // claims a pixel exactly when it still holds its parent's code (-1: nobody's yet).
+  // The map is rendered in bands of rows, every level of a band before the next band. Level by
+  // level over the whole map, each level met its ~20 bytes per pixel of scratch and output long
+  // evicted from L2 by the level before, a few pixels per row per cell: at 1024^2 that cache
+  // traffic, not the arithmetic, was most of the time. A band's scratch and output stay in L2.
+  // Each pixel still sees the same cells in the same order (levels in turn, cells in index
+  // order), so the map is the same. (A cell across the tile's top edge now walks its rows from
+  // the wrapped part on; the row walk ends in the one sector holding the row's first pixel
+  // whichever sector it starts from.)
+  constexpr int kBandRows = 16;
+  const int band_count = (height + kBandRows - 1) / kBandRows;
+  const std::size_t band_capacity = static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
+  // Scratch kept per thread between calls (fresh pages cost page faults and zeroing).
+  thread_local std::vector<double> heights;  // the band's, summed in double like the reference, rounded once
+  // One owner per pixel of the band, overwritten level by level: cell + code_base of its level,
+  // so a child claims a pixel exactly when it still holds its parent's code (-1: nobody's yet).
   thread_local std::vector<int> owner;
   thread_local std::vector<double> span_low, span_high;
-  heights.assign(pixels, 0.0);
-  owner.assign(pixels, -1);
-  int code_base = 0, parent_code_base = -1;
-  const double inverse_width = 1.0 / width, inverse_height = 1.0 / height;
-  const double profile_last = profile_table_.last();
-  const int profile_entries = static_cast<int>(profile_last) - 1;  // last entry index with a step
-  const double* profile_pairs = profile_pairs_.data();
+  // Per level and cell: its rows (unwrapped) and where their column ranges start in `spans`;
+  // `sector` carries the row walk's sector from one band to the next.
+  struct CellRows {
+    int row_first = 0, row_last = -1;
+    std::size_t first_span = 0;
+    int sector = 0;
+  };
+  struct LevelRows {
+    std::vector<CellRows> cells;
+    std::vector<int> spans;  // first and last column per row; first > last: no pixel centre
+    std::vector<int> band_start;  // band b's cells: band_cells[band_start[b] .. band_start[b + 1])
+    std::vector<int> band_cells;  // in index order within each band
+  };
+  thread_local std::vector<LevelRows> level_rows;
+  thread_local std::vector<int> cell_bands, band_fill;
+  if (level_rows.size() < static_cast<std::size_t>(end)) level_rows.resize(static_cast<std::size_t>(end));
   for (int level_index = 0; level_index < end; ++level_index) {
     const RasterLevel& level = raster_[static_cast<std::size_t>(level_index)];
-    const bool accumulate = level_index >= first;
-    const double depth = level.depth;
-    const bool masked = level_index > 0;
-    float* slope_u = map.slope_u.data();
-    float* slope_v = map.slope_v.data();
-    int* owners = owner.data();
-    double* sums = heights.data();
+    LevelRows& rows_out = level_rows[static_cast<std::size_t>(level_index)];
+    rows_out.cells.assign(level.cells.size(), CellRows());
+    rows_out.spans.clear();
+    rows_out.band_start.assign(static_cast<std::size_t>(band_count) + 1, 0);
+    cell_bands.clear();  // (band, cell) pairs in cell order
     for (std::size_t cell_index = 0; cell_index < level.cells.size(); ++cell_index) {
       const RasterCell& cell = level.cells[cell_index];
-      const int sector_count = cell.sector_count;
-      if (sector_count == 0) continue;
-      const RasterSector* sectors = level.sectors.data() + cell.first_sector;
-      const int code = static_cast<int>(cell_index) + code_base;
-      const int expected = masked ? cell.parent + parent_code_base : -1;
+      if (cell.sector_count == 0) continue;
       // Rows of pixel centres (row + 0.5) / height inside the boundary's extent, unwrapped (the
       // cell's frame); per row the columns between the boundary's outermost crossings.
       const int row_first = static_cast<int>(std::ceil(cell.low_y * height - 0.5));
       const int row_last = static_cast<int>(std::floor(cell.high_y * height - 0.5));
       if (row_last < row_first) continue;
+      CellRows& cell_rows = rows_out.cells[cell_index];
+      cell_rows.row_first = row_first;
+      cell_rows.row_last = row_last;
+      cell_rows.first_span = rows_out.spans.size();
       const std::size_t rows = static_cast<std::size_t>(row_last - row_first + 1);
       span_low.assign(rows, INFINITY);
       span_high.assign(rows, -INFINITY);
@@ -717,134 +733,206 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
           span_high[slot] = std::max(span_high[slot], x);
         }
       }
-      int sector = 0;
-      for (int row = row_first; row <= row_last; ++row) {
-        const auto slot = static_cast<std::size_t>(row - row_first);
-        if (!(span_low[slot] <= span_high[slot])) continue;
+      for (std::size_t slot = 0; slot < rows; ++slot) {
+        if (!(span_low[slot] <= span_high[slot])) {
+          // No boundary crossing, so no pixel of this cell: the row loop skips it.
+          rows_out.spans.insert(rows_out.spans.end(), {std::numeric_limits<int>::max(), std::numeric_limits<int>::min()});
+          continue;
+        }
         // Pixel centres within the row's outermost boundary crossings. One rounded the other
         // way from the ownership test is claimed by no cell here and so takes the per-pixel path.
-        const int column_first = static_cast<int>(std::ceil(span_low[slot]));
-        const int column_last = static_cast<int>(std::floor(span_high[slot]));
-        const int row_wrapped = ((row % height) + height) % height;
-        const std::size_t row_base = static_cast<std::size_t>(row_wrapped) * static_cast<std::size_t>(width);
-        const double dy = (row + 0.5) * inverse_height - cell.centre_y;
-        // Sector of the row's first pixel: walk from the previous row's.
-        const double qx_first = (column_first + 0.5) * inverse_width - cell.centre_x;
-        for (int step = 0; step < 2 * sector_count; ++step) {
-          const RasterSector& a = sectors[sector];
-          const RasterSector& b = sectors[sector + 1];
-          if (a.direction_x * dy - a.direction_y * qx_first < 0.0) {
-            sector = sector == 0 ? sector_count - 1 : sector - 1;
-          } else if (b.direction_x * dy - b.direction_y * qx_first >= 0.0) {
-            sector = sector + 1 == sector_count ? 0 : sector + 1;
-          } else {
-            break;
-          }
-        }
-        // Unwrapped columns map to row_base + column + shift; the shift drops by width where
-        // the row crosses the tile's right edge (rows are narrower than the tile).
-        const int column_wrapped_first = ((column_first % width) + width) % width;
-        const int wrap_column = column_first + (width - column_wrapped_first);
-        const double column_offset = cell.centre_x * width - 0.5;
-        const auto pixelRuns = [&](auto above_tag) {
-          constexpr bool above = decltype(above_tag)::value;
-          // Moving right turns the direction clockwise above the centre (out through the
-          // sector's start ray) and counter-clockwise below it (through the next start ray).
-          int k = above ? sector + sector_count : sector;
-          std::ptrdiff_t shift = column_wrapped_first - column_first;
-          const double dy_columns = dy * width;
-          int column = column_first;
-          const auto pixels = [&](int last, const RasterSector& here) {
-            if (last < column) return;
-            const int count = last - column + 1;
-            // Locals, so the stores below cannot make the compiler reload them.
-            const double gradient_x = here.gradient_x, gradient_y = here.gradient_y, gradient_dy = here.gradient_y * dy;
-            double qx = (column + 0.5) * inverse_width - cell.centre_x;
-            const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(row_base) + column + shift;
-            int* const own = owners + offset;
-            double* const sum = sums + offset;
-            float* const su = slope_u + offset;
-            float* const sv = slope_v + offset;
-            column = last + 1;
-            const auto shade = [&](int i, double s) {
-              // profile_table_.evaluate(1 - s) with s < 1 (so x > 0), the same operations.
-              const double position = std::min(1.0 - s, 1.0) * profile_last;
-              const int entry = std::min(static_cast<int>(position), profile_entries);
-              const double fraction = position - entry;
-              const double* pair = profile_pairs + 2 * entry;
-              sum[i] += depth * (pair[0] + fraction * (pair[2] - pair[0]));
-              const double factor = depth * (pair[1] + fraction * (pair[3] - pair[1]));
-              su[i] -= static_cast<float>(factor * gradient_x);
-              sv[i] -= static_cast<float>(factor * gradient_y);
-            };
-            if (here.boundary_x == gradient_x && here.boundary_y == gradient_y) {
-              // The usual sector: the boundary is the winning wall's own segment, so b . q = s
-              // (same operations) and "inside the boundary" is "s < 1".
-              for (int i = 0; i < count; ++i, qx += inverse_width) {
-                const double s = gradient_x * qx + gradient_dy;
-                if (!(s < 1.0) || own[i] != expected) continue;  // outside, taken, or another parent's
-                own[i] = code;
-                if (accumulate) shade(i, s);
-              }
-            } else {
-              const double boundary_x = here.boundary_x, boundary_dy = here.boundary_y * dy;
-              for (int i = 0; i < count; ++i, qx += inverse_width) {
-                if (!(boundary_x * qx + boundary_dy < 1.0) || own[i] != expected) continue;  // outside, taken, another parent's
-                own[i] = code;
-                const double s = gradient_x * qx + gradient_dy;
-                if (accumulate && s < 1.0) shade(i, s);  // on or past the furrow line: height 0, flat
-              }
-            }
-          };
-          for (int visited = 0; visited < sector_count; ++visited) {  // k stays inside both copies
-            const RasterSector& here = sectors[k];
-            // Column where the row leaves the sector (NaN: it never does).
-            const double edge = dy_columns * (above ? here.crossing_above : here.crossing_below) + column_offset;
-            int last = column_last;
-            if (edge < column_last) {
-              const int truncated = static_cast<int>(std::max(edge, column - 1.0));
-              last = truncated - (edge < truncated ? 1 : 0);
-            }
-            if (column <= wrap_column && last >= wrap_column) {
-              pixels(wrap_column - 1, here);
-              shift -= width;
-            }
-            pixels(last, here);
-            if (column > column_last) break;
-            k += above ? -1 : 1;
-          }
-        };
-        if (dy >= 0.0) {
-          pixelRuns(std::true_type());
-        } else {
-          pixelRuns(std::false_type());
+        rows_out.spans.insert(rows_out.spans.end(),
+                              {static_cast<int>(std::ceil(span_low[slot])), static_cast<int>(std::floor(span_high[slot]))});
+      }
+      // The bands the cell's rows fall in, wrapped into the tile (rows are fewer than the
+      // tile's, so each wrapped row comes from one unwrapped row).
+      const std::size_t pairs_before = cell_bands.size();
+      for (int wrap = -1; wrap <= 1; ++wrap) {
+        const int low = std::max(row_first, wrap * height), high = std::min(row_last, wrap * height + height - 1);
+        if (low > high) continue;
+        for (int band = (low - wrap * height) / kBandRows; band <= (high - wrap * height) / kBandRows; ++band) {
+          bool seen = false;
+          for (std::size_t at = pairs_before; at < cell_bands.size(); at += 2) seen = seen || cell_bands[at] == band;
+          if (seen) continue;
+          cell_bands.push_back(band);
+          cell_bands.push_back(static_cast<int>(cell_index));
+          ++rows_out.band_start[static_cast<std::size_t>(band) + 1];
         }
       }
     }
-    // What no cell claimed goes through the per-pixel path (same model as the reference).
-    int cells_out[3] = {-1, -1, -1};
-    for (std::size_t block = 0; block < pixels; block += 64) {
-      // Blocks of 64 owners, tested with a vectorisable "any below": nearly all are claimed.
-      const std::size_t block_end = std::min(block + 64, pixels);
-      int unclaimed = 0;
-      for (std::size_t at = block; at < block_end; ++at) unclaimed |= static_cast<int>(owners[at] < code_base);
-      if (unclaimed == 0) continue;
-      for (std::size_t at = block; at < block_end; ++at) {
-      if (owners[at] >= code_base) continue;
-      const int row = static_cast<int>(at / static_cast<std::size_t>(width));
-      const int column = static_cast<int>(at - static_cast<std::size_t>(row) * static_cast<std::size_t>(width));
-      const ReliefSample sample = evaluateFast((column + 0.5) * inverse_width, (row + 0.5) * inverse_height,
-                                               accumulate ? level_index : level_index + 1, level_index + 1, nullptr, cells_out);
-      owners[at] = cells_out[level_index] + code_base;
-      sums[at] += sample.height;
-      slope_u[at] += static_cast<float>(sample.slope.x());
-      slope_v[at] += static_cast<float>(sample.slope.y());
-      }
-    }
-    parent_code_base = code_base;
-    code_base += static_cast<int>(level.cells.size());
+    for (int band = 0; band < band_count; ++band)
+      rows_out.band_start[static_cast<std::size_t>(band) + 1] += rows_out.band_start[static_cast<std::size_t>(band)];
+    rows_out.band_cells.resize(cell_bands.size() / 2);
+    band_fill.assign(rows_out.band_start.begin(), rows_out.band_start.end() - 1);
+    for (std::size_t at = 0; at < cell_bands.size(); at += 2)
+      rows_out.band_cells[static_cast<std::size_t>(band_fill[static_cast<std::size_t>(cell_bands[at])]++)] = cell_bands[at + 1];
   }
-  for (std::size_t at = 0; at < pixels; ++at) map.heights[at] = static_cast<float>(heights[at]);
+  if (heights.size() < band_capacity) heights.resize(band_capacity);
+  if (owner.size() < band_capacity) owner.resize(band_capacity);
+  const double inverse_width = 1.0 / width, inverse_height = 1.0 / height;
+  const double profile_last = profile_table_.last();
+  const int profile_entries = static_cast<int>(profile_last) - 1;  // last entry index with a step
+  const double* profile_pairs = profile_pairs_.data();
+  for (int band = 0; band < band_count; ++band) {
+    const int band_first = band * kBandRows, band_last = std::min(height, band_first + kBandRows) - 1;
+    const std::size_t band_base = static_cast<std::size_t>(band_first) * static_cast<std::size_t>(width);
+    const std::size_t band_pixels = static_cast<std::size_t>(band_last - band_first + 1) * static_cast<std::size_t>(width);
+    std::fill(heights.begin(), heights.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);
+    std::fill(owner.begin(), owner.begin() + static_cast<std::ptrdiff_t>(band_pixels), -1);
+    int code_base = 0, parent_code_base = -1;
+    for (int level_index = 0; level_index < end; ++level_index) {
+      const RasterLevel& level = raster_[static_cast<std::size_t>(level_index)];
+      LevelRows& rows_in = level_rows[static_cast<std::size_t>(level_index)];
+      const bool accumulate = level_index >= first;
+      const double depth = level.depth;
+      const bool masked = level_index > 0;
+      // Band-relative: owner and heights hold the band only, the slopes are the map's.
+      float* slope_u = map.slope_u.data() + band_base;
+      float* slope_v = map.slope_v.data() + band_base;
+      int* owners = owner.data();
+      double* sums = heights.data();
+      const int* band_cells = rows_in.band_cells.data();
+      for (int listed = rows_in.band_start[static_cast<std::size_t>(band)]; listed < rows_in.band_start[static_cast<std::size_t>(band) + 1];
+           ++listed) {
+        const auto cell_index = static_cast<std::size_t>(band_cells[listed]);
+        const RasterCell& cell = level.cells[cell_index];
+        CellRows& cell_rows = rows_in.cells[cell_index];
+        const int sector_count = cell.sector_count;
+        const RasterSector* sectors = level.sectors.data() + cell.first_sector;
+        const int code = static_cast<int>(cell_index) + code_base;
+        const int expected = masked ? cell.parent + parent_code_base : -1;
+        int sector = cell_rows.sector;
+        for (int wrap = -1; wrap <= 1; ++wrap) {
+          const int row_low = std::max(cell_rows.row_first, band_first + wrap * height);
+          const int row_high = std::min(cell_rows.row_last, band_last + wrap * height);
+          for (int row = row_low; row <= row_high; ++row) {
+            const int* span = rows_in.spans.data() + cell_rows.first_span + 2 * static_cast<std::size_t>(row - cell_rows.row_first);
+            if (span[0] == std::numeric_limits<int>::max()) continue;
+            const int column_first = span[0];
+            const int column_last = span[1];
+            const std::size_t row_base = static_cast<std::size_t>(row - wrap * height - band_first) * static_cast<std::size_t>(width);
+            const double dy = (row + 0.5) * inverse_height - cell.centre_y;
+            // Sector of the row's first pixel: walk from the previous row's.
+            const double qx_first = (column_first + 0.5) * inverse_width - cell.centre_x;
+            for (int step = 0; step < 2 * sector_count; ++step) {
+              const RasterSector& a = sectors[sector];
+              const RasterSector& b = sectors[sector + 1];
+              if (a.direction_x * dy - a.direction_y * qx_first < 0.0) {
+                sector = sector == 0 ? sector_count - 1 : sector - 1;
+              } else if (b.direction_x * dy - b.direction_y * qx_first >= 0.0) {
+                sector = sector + 1 == sector_count ? 0 : sector + 1;
+              } else {
+                break;
+              }
+            }
+            // Unwrapped columns map to row_base + column + shift; the shift drops by width where
+            // the row crosses the tile's right edge (rows are narrower than the tile).
+            const int column_wrapped_first = ((column_first % width) + width) % width;
+            const int wrap_column = column_first + (width - column_wrapped_first);
+            const double column_offset = cell.centre_x * width - 0.5;
+            const auto pixelRuns = [&](auto above_tag) {
+              constexpr bool above = decltype(above_tag)::value;
+              // Moving right turns the direction clockwise above the centre (out through the
+              // sector's start ray) and counter-clockwise below it (through the next start ray).
+              int k = above ? sector + sector_count : sector;
+              std::ptrdiff_t shift = column_wrapped_first - column_first;
+              const double dy_columns = dy * width;
+              int column = column_first;
+              const auto pixels = [&](int last, const RasterSector& here) {
+                if (last < column) return;
+                const int count = last - column + 1;
+                // Locals, so the stores below cannot make the compiler reload them.
+                const double gradient_x = here.gradient_x, gradient_y = here.gradient_y, gradient_dy = here.gradient_y * dy;
+                double qx = (column + 0.5) * inverse_width - cell.centre_x;
+                const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(row_base) + column + shift;
+                int* const own = owners + offset;
+                double* const sum = sums + offset;
+                float* const su = slope_u + offset;
+                float* const sv = slope_v + offset;
+                column = last + 1;
+                const auto shade = [&](int i, double s) {
+                  // profile_table_.evaluate(1 - s) with s < 1 (so x > 0), the same operations.
+                  const double position = std::min(1.0 - s, 1.0) * profile_last;
+                  const int entry = std::min(static_cast<int>(position), profile_entries);
+                  const double fraction = position - entry;
+                  const double* pair = profile_pairs + 2 * entry;
+                  sum[i] += depth * (pair[0] + fraction * (pair[2] - pair[0]));
+                  const double factor = depth * (pair[1] + fraction * (pair[3] - pair[1]));
+                  su[i] -= static_cast<float>(factor * gradient_x);
+                  sv[i] -= static_cast<float>(factor * gradient_y);
+                };
+                if (here.boundary_x == gradient_x && here.boundary_y == gradient_y) {
+                  // The usual sector: the boundary is the winning wall's own segment, so b . q = s
+                  // (same operations) and "inside the boundary" is "s < 1".
+                  for (int i = 0; i < count; ++i, qx += inverse_width) {
+                    const double s = gradient_x * qx + gradient_dy;
+                    if (!(s < 1.0) || own[i] != expected) continue;  // outside, taken, or another parent's
+                    own[i] = code;
+                    if (accumulate) shade(i, s);
+                  }
+                } else {
+                  const double boundary_x = here.boundary_x, boundary_dy = here.boundary_y * dy;
+                  for (int i = 0; i < count; ++i, qx += inverse_width) {
+                    if (!(boundary_x * qx + boundary_dy < 1.0) || own[i] != expected) continue;  // outside, taken, another parent's
+                    own[i] = code;
+                    const double s = gradient_x * qx + gradient_dy;
+                    if (accumulate && s < 1.0) shade(i, s);  // on or past the furrow line: height 0, flat
+                  }
+                }
+              };
+              for (int visited = 0; visited < sector_count; ++visited) {  // k stays inside both copies
+                const RasterSector& here = sectors[k];
+                // Column where the row leaves the sector (NaN: it never does).
+                const double edge = dy_columns * (above ? here.crossing_above : here.crossing_below) + column_offset;
+                int last = column_last;
+                if (edge < column_last) {
+                  const int truncated = static_cast<int>(std::max(edge, column - 1.0));
+                  last = truncated - (edge < truncated ? 1 : 0);
+                }
+                if (column <= wrap_column && last >= wrap_column) {
+                  pixels(wrap_column - 1, here);
+                  shift -= width;
+                }
+                pixels(last, here);
+                if (column > column_last) break;
+                k += above ? -1 : 1;
+              }
+            };
+            if (dy >= 0.0) {
+              pixelRuns(std::true_type());
+            } else {
+              pixelRuns(std::false_type());
+            }
+          }
+        }
+        cell_rows.sector = sector;
+      }
+      // What no cell claimed goes through the per-pixel path (same model as the reference).
+      int cells_out[3] = {-1, -1, -1};
+      for (std::size_t block = 0; block < band_pixels; block += 64) {
+        // Blocks of 64 owners, tested with a vectorisable "any below": nearly all are claimed.
+        const std::size_t block_end = std::min(block + 64, band_pixels);
+        int unclaimed = 0;
+        for (std::size_t at = block; at < block_end; ++at) unclaimed |= static_cast<int>(owners[at] < code_base);
+        if (unclaimed == 0) continue;
+        for (std::size_t at = block; at < block_end; ++at) {
+          if (owners[at] >= code_base) continue;
+          const std::size_t pixel = band_base + at;
+          const int row = static_cast<int>(pixel / static_cast<std::size_t>(width));
+          const int column = static_cast<int>(pixel - static_cast<std::size_t>(row) * static_cast<std::size_t>(width));
+          const ReliefSample sample = evaluateFast((column + 0.5) * inverse_width, (row + 0.5) * inverse_height,
+                                                   accumulate ? level_index : level_index + 1, level_index + 1, nullptr, cells_out);
+          owners[at] = cells_out[level_index] + code_base;
+          sums[at] += sample.height;
+          slope_u[at] += static_cast<float>(sample.slope.x());
+          slope_v[at] += static_cast<float>(sample.slope.y());
+        }
+      }
+      parent_code_base = code_base;
+      code_base += static_cast<int>(level.cells.size());
+    }
+    for (std::size_t at = 0; at < band_pixels; ++at) map.heights[band_base + at] = static_cast<float>(heights[at]);
+  }
   return map;
 }
 
