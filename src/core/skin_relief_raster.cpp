@@ -733,16 +733,19 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
           span_high[slot] = std::max(span_high[slot], x);
         }
       }
-      for (std::size_t slot = 0; slot < rows; ++slot) {
+      rows_out.spans.resize(cell_rows.first_span + 2 * rows);
+      int* span = rows_out.spans.data() + cell_rows.first_span;
+      for (std::size_t slot = 0; slot < rows; ++slot, span += 2) {
         if (!(span_low[slot] <= span_high[slot])) {
           // No boundary crossing, so no pixel of this cell: the row loop skips it.
-          rows_out.spans.insert(rows_out.spans.end(), {std::numeric_limits<int>::max(), std::numeric_limits<int>::min()});
+          span[0] = std::numeric_limits<int>::max();
+          span[1] = std::numeric_limits<int>::min();
           continue;
         }
         // Pixel centres within the row's outermost boundary crossings. One rounded the other
         // way from the ownership test is claimed by no cell here and so takes the per-pixel path.
-        rows_out.spans.insert(rows_out.spans.end(),
-                              {static_cast<int>(std::ceil(span_low[slot])), static_cast<int>(std::floor(span_high[slot]))});
+        span[0] = static_cast<int>(std::ceil(span_low[slot]));
+        span[1] = static_cast<int>(std::floor(span_high[slot]));
       }
       // The bands the cell's rows fall in, wrapped into the tile (rows are fewer than the
       // tile's, so each wrapped row comes from one unwrapped row).
@@ -826,8 +829,12 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
               }
             }
             // Unwrapped columns map to row_base + column + shift; the shift drops by width where
-            // the row crosses the tile's right edge (rows are narrower than the tile).
-            const int column_wrapped_first = ((column_first % width) + width) % width;
+            // the row crosses the tile's right edge (rows are narrower than the tile). Cells lie
+            // within a tile's width of the tile, so mostly no integer division is needed.
+            int column_wrapped_first = column_first;
+            if (column_wrapped_first < 0) column_wrapped_first += width;
+            if (column_wrapped_first >= width) column_wrapped_first -= width;
+            if (column_wrapped_first < 0 || column_wrapped_first >= width) column_wrapped_first = ((column_first % width) + width) % width;
             const int wrap_column = column_first + (width - column_wrapped_first);
             const double column_offset = cell.centre_x * width - 0.5;
             const auto pixelRuns = [&](auto above_tag) {
