@@ -284,7 +284,7 @@ void DressedHumanDisplay::onDisable() {
 void DressedHumanDisplay::reset() {
   rviz::Display::reset();  // clears the statuses; TF problems report themselves again
   logged_errors_.clear();
-  surfaces_status_.clear();
+  surfaces_reported_ = {kNotReported, kNotReported};
   stale_reported_ = false;
   loadRobotDescription();
 }
@@ -608,12 +608,14 @@ void DressedHumanDisplay::updateSurfaces() {
     model_->update(root_, bones_, lod);
     visual_->update(model_->parts());
     if (show_skeleton_property_->getBool()) drawSkeleton();
-    std::string surfaces = std::to_string(model_->parts().size()) + " parts, " +
-                           std::to_string(model_->triangleCount()) + " triangles";
-    if (surfaces != surfaces_status_) setStatusStd(rviz::StatusProperty::Ok, "Surfaces", surfaces);
-    surfaces_status_ = std::move(surfaces);
+    const std::array<std::size_t, 2> surfaces{model_->parts().size(), model_->triangleCount()};
+    if (surfaces != surfaces_reported_) {
+      setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
+                   std::to_string(surfaces[0]) + " parts, " + std::to_string(surfaces[1]) + " triangles");
+      surfaces_reported_ = surfaces;
+    }
   } catch (const std::exception& error) {
-    surfaces_status_.clear();
+    surfaces_reported_ = {kNotReported, kNotReported};
     reportError("Surfaces", error.what());
   }
 }

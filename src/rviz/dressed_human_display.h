@@ -107,7 +107,9 @@ class DressedHumanDisplay : public rviz::Display {
   std::vector<std::string> bone_status_names_;
   std::string root_status_name_;
   bool stale_reported_ = false;
-  std::string surfaces_status_;  // what the "Surfaces" status says (set only when it changes)
+  // (parts, triangles) the "Surfaces" status says: the text is rebuilt only when they change.
+  static constexpr std::size_t kNotReported = static_cast<std::size_t>(-1);
+  std::array<std::size_t, 2> surfaces_reported_{kNotReported, kNotReported};
   std::unique_ptr<BodyDescription> body_;   // as the body file says
   BodyShape shape_;                         // the file's shape times the Body Shape properties
   std::unique_ptr<HumanModel> model_;
