@@ -675,7 +675,7 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   // One owner per pixel of the band, overwritten level by level: cell + code_base of its level,
   // so a child claims a pixel exactly when it still holds its parent's code (-1: nobody's yet).
   thread_local std::vector<int> owner;
-  thread_local std::vector<double> span_low, span_high;
+  thread_local std::vector<double> span_low, span_high, vertex_rows;
   // Per level and cell: its rows (unwrapped) and where their column ranges start in `spans`;
   // `sector` carries the row walk's sector from one band to the next.
   struct CellRows {
@@ -715,14 +715,22 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       span_low.assign(rows, INFINITY);
       span_high.assign(rows, -INFINITY);
       const Eigen::Vector2d* vertices = level.vertices.data() + cell.first_vertex;
+      // Each vertex's pixel-space row coordinate once, not once per edge it ends.
+      vertex_rows.resize(static_cast<std::size_t>(cell.vertex_count));
+      for (int k = 0; k < cell.vertex_count; ++k) vertex_rows[static_cast<std::size_t>(k)] = (cell.centre_y + vertices[k].y()) * height - 0.5;
       for (int k = 0; k < cell.vertex_count; ++k) {
+        const int k_next = k + 1 == cell.vertex_count ? 0 : k + 1;
         const Eigen::Vector2d& a = vertices[k];
-        const Eigen::Vector2d& b = vertices[k + 1 == cell.vertex_count ? 0 : k + 1];
+        const Eigen::Vector2d& b = vertices[k_next];
         // Pixel-space rows (y * height - 0.5) crossed by the edge, as in the row loop below.
-        const double ya = (cell.centre_y + a.y()) * height - 0.5, yb = (cell.centre_y + b.y()) * height - 0.5;
+        const double ya = vertex_rows[static_cast<std::size_t>(k)], yb = vertex_rows[static_cast<std::size_t>(k_next)];
         const double y_low = std::min(ya, yb), y_high = std::max(ya, yb);
-        const int edge_first = std::max(row_first, static_cast<int>(std::ceil(y_low)));
-        const int edge_last = std::min(row_last, static_cast<int>(std::floor(y_high)));
+        // Most edges cross no row, so this runs for nearly every edge of every cell: the same
+        // integers as std::ceil / std::floor (finite values within a few tiles' rows) without
+        // the rounding sequences those compile to on baseline x86-64 (SSE2 has no roundsd).
+        const int truncated_low = static_cast<int>(y_low), truncated_high = static_cast<int>(y_high);
+        const int edge_first = std::max(row_first, truncated_low + (truncated_low < y_low ? 1 : 0));
+        const int edge_last = std::min(row_last, truncated_high - (truncated_high > y_high ? 1 : 0));
         if (edge_last < edge_first) continue;
         const double xa = (cell.centre_x + a.x()) * width - 0.5, xb = (cell.centre_x + b.x()) * width - 0.5;
         const double slope = (xb - xa) / (yb - ya);
@@ -744,8 +752,10 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
         }
         // Pixel centres within the row's outermost boundary crossings. One rounded the other
         // way from the ownership test is claimed by no cell here and so takes the per-pixel path.
-        span[0] = static_cast<int>(std::ceil(span_low[slot]));
-        span[1] = static_cast<int>(std::floor(span_high[slot]));
+        // (Integer ceil / floor as above.)
+        const int truncated_low = static_cast<int>(span_low[slot]), truncated_high = static_cast<int>(span_high[slot]);
+        span[0] = truncated_low + (truncated_low < span_low[slot] ? 1 : 0);
+        span[1] = truncated_high - (truncated_high > span_high[slot] ? 1 : 0);
       }
       // The bands the cell's rows fall in, wrapped into the tile (rows are fewer than the
       // tile's, so each wrapped row comes from one unwrapped row).
