@@ -10,6 +10,7 @@ namespace dressed_human {
 using skin_detail::Cell;
 using skin_detail::CellLevel;
 using skin_detail::Wall;
+using skin_detail::outwardWobble;
 
 namespace {
 
@@ -25,17 +26,6 @@ double integerPower(double base, int exponent) {
 
 double metricDistanceSquared(const Eigen::Matrix2d& metric, const Eigen::Vector2d& difference) {
   return difference.dot(metric * difference);
-}
-
-// Wobble displacement of a wall at parameter u along it, outward from the owning cell.
-double outwardWobble(const CellLevel& level, const Wall& wall, double u) {
-  if (wall.wobble < 0 || level.subdivisions == 0 || !(u > 0.0 && u < 1.0)) return 0.0;
-  const int segments = 1 << level.subdivisions;
-  const double position = u * segments;
-  const int segment = std::min(static_cast<int>(position), segments - 1);
-  const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
-  const double fraction = position - segment;
-  return wall.wobble_sign * (samples[segment] + fraction * (samples[segment + 1] - samples[segment]));
 }
 
 // Where the ray centre -> centre + q meets the wall: s = 1 / (ray parameter at the hit), and its

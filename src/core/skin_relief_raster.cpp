@@ -36,23 +36,15 @@ namespace dressed_human {
 using skin_detail::Cell;
 using skin_detail::CellLevel;
 using skin_detail::Wall;
+using skin_detail::outwardWobble;
 
 namespace {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// Outward wobble of a wall at parameter u (0 outside (0, 1), as in the reference).
-double outwardWobbleAt(const CellLevel& level, const Wall& wall, double u) {
-  if (wall.wobble < 0 || level.subdivisions == 0 || !(u > 0.0 && u < 1.0)) return 0.0;
-  const int segments = 1 << level.subdivisions;
-  const double position = u * segments;
-  const int segment = std::min(static_cast<int>(position), segments - 1);
-  const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
-  return wall.wobble_sign * (samples[segment] + (position - segment) * (samples[segment + 1] - samples[segment]));
-}
 
 Eigen::Vector2d wallPoint(const CellLevel& level, const Wall& wall, double u) {
-  return wall.start + wall.tangent * (u * wall.length) + wall.normal * outwardWobbleAt(level, wall, u);
+  return wall.start + wall.tangent * (u * wall.length) + wall.normal * outwardWobble(level, wall, u);
 }
 
 double wallParameter(const Wall& wall, const Eigen::Vector2d& point) {
@@ -87,11 +79,11 @@ Eigen::Vector2d junctionOnParentWall(const CellLevel& level, const Wall& wall, c
   const double h0 = (junction - wall.start).dot(wall.normal);
   const double rise = outward.dot(wall.normal);  // height gain per unit along `outward`
   const double drift = outward.dot(wall.tangent) / wall.length;  // u per unit along `outward`
-  const double f0 = h0 - outwardWobbleAt(level, wall, u0);
+  const double f0 = h0 - outwardWobble(level, wall, u0);
   if (!(f0 < 0.0) || !(rise > 0.0) || level.subdivisions == 0) return wallPoint(level, wall, u0);
   // f(t) = height - wobble along the ray is linear between the wall's knots: walk them.
   const int segments = 1 << level.subdivisions;
-  const auto f = [&](double t) { return h0 + rise * t - outwardWobbleAt(level, wall, u0 + drift * t); };
+  const auto f = [&](double t) { return h0 + rise * t - outwardWobble(level, wall, u0 + drift * t); };
   double t_previous = 0.0, f_previous = f0;
   int knot = drift > 0.0 ? static_cast<int>(std::floor(u0 * segments)) + 1 : static_cast<int>(std::ceil(u0 * segments)) - 1;
   for (int step = 0; step <= segments + 1 && drift != 0.0; ++step) {

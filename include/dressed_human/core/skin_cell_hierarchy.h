@@ -11,7 +11,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -68,6 +70,19 @@ std::vector<CellLevel> buildCellHierarchy(const SkinReliefParameters& parameters
 
 /// Validates parameters, throwing std::invalid_argument naming the first bad field.
 void validateParameters(const SkinReliefParameters& parameters);
+
+/// Wobble displacement of a wall at parameter u along it, outward from the owning cell (0
+/// outside (0, 1)): the per-pixel path and the rasteriser's boundary polygons share it. Inline:
+/// the per-pixel path calls it for every wall of every pixel.
+inline double outwardWobble(const CellLevel& level, const Wall& wall, double u) {
+  if (wall.wobble < 0 || level.subdivisions == 0 || !(u > 0.0 && u < 1.0)) return 0.0;
+  const int segments = 1 << level.subdivisions;
+  const double position = u * segments;
+  const int segment = std::min(static_cast<int>(position), segments - 1);
+  const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
+  const double fraction = position - segment;
+  return wall.wobble_sign * (samples[segment] + fraction * (samples[segment + 1] - samples[segment]));
+}
 
 }  // namespace skin_detail
 }  // namespace dressed_human
