@@ -7,16 +7,23 @@
 
 namespace dressed_human {
 
-ReliefMap::ReliefMap(int width_pixels, int height_pixels) : width(width_pixels), height(height_pixels) {
+ReliefMap::ReliefMap(int width_pixels, int height_pixels) : ReliefMap(width_pixels, height_pixels, Appended()) {
+  const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  heights.assign(count, 0.0f);
+  slope_u.assign(count, 0.0f);
+  slope_v.assign(count, 0.0f);
+}
+
+ReliefMap::ReliefMap(int width_pixels, int height_pixels, Appended) : width(width_pixels), height(height_pixels) {
   if (width_pixels <= 0 || height_pixels <= 0) {
     std::ostringstream message;
     message << "ReliefMap: width and height must be > 0, got " << width_pixels << " x " << height_pixels;
     throw std::invalid_argument(message.str());
   }
   const std::size_t count = static_cast<std::size_t>(width_pixels) * static_cast<std::size_t>(height_pixels);
-  heights.assign(count, 0.0f);
-  slope_u.assign(count, 0.0f);
-  slope_v.assign(count, 0.0f);
+  heights.reserve(count);
+  slope_u.reserve(count);
+  slope_v.reserve(count);
 }
 
 Eigen::Vector3f ReliefMap::normalAt(int column, int row) const {

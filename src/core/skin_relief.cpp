@@ -84,9 +84,20 @@ SkinRelief::SkinRelief(const SkinReliefParameters& parameters)
   roundness_exponent_ = parameters.roundness > 0.0 ? std::max(2, static_cast<int>(std::lround(2.0 / parameters.roundness))) : 0;
   buildPackedLevels();
   buildRasterLevels();
+  // Each table interval as a line in the table position x * last(): value = offset + position *
+  // step, height and slope side by side, and one more entry at the end for position == last()
+  // (the profile's centre value, step 0), so the rasteriser's lookup needs neither the fraction
+  // nor a clamp. Differs from profile_table_.evaluate() by rounding only.
   const std::vector<double>& heights = profile_table_.heights();
   const std::vector<double>& slopes = profile_table_.slopes();
-  for (std::size_t k = 0; k < heights.size(); ++k) profile_pairs_.insert(profile_pairs_.end(), {heights[k], slopes[k]});
+  const std::size_t intervals = heights.size() - 1;
+  profile_lines_.reserve(4 * (intervals + 1));
+  for (std::size_t k = 0; k < intervals; ++k) {
+    const double height_step = heights[k + 1] - heights[k], slope_step = slopes[k + 1] - slopes[k];
+    const double at = static_cast<double>(k);
+    profile_lines_.insert(profile_lines_.end(), {heights[k] - at * height_step, height_step, slopes[k] - at * slope_step, slope_step});
+  }
+  profile_lines_.insert(profile_lines_.end(), {heights[intervals], 0.0, slopes[intervals], 0.0});
 }
 
 void SkinRelief::buildPackedLevels() {

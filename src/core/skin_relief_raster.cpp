@@ -222,9 +222,9 @@ void SkinRelief::buildRasterLevels() {
     RasterLevel& out = raster_[index];
     out.depth = level.depth;
     out.cells.reserve(level.cells.size());
-    // Sectors (stored twice per cell) and boundary vertices grow by the tens per cell: reserve
-    // about what the benchmark's maps use, so growth does not copy megabytes time and again.
-    out.sectors.reserve(level.cells.size() * 80);
+    // Sectors and boundary vertices grow by the tens per cell: reserve about what the
+    // benchmark's maps use, so growth does not copy megabytes time and again.
+    out.sectors.reserve(level.cells.size() * 40);
     out.vertices.reserve(level.cells.size() * 40);
     for (const Cell& cell : level.cells) {
       RasterCell raster;
@@ -631,13 +631,6 @@ void SkinRelief::buildRasterLevels() {
         sector.crossing_above = sector.direction_y > 0.0 ? sector.direction_x / sector.direction_y : never;
         sector.crossing_below = next.direction_y < 0.0 ? next.direction_x / next.direction_y : never;
       }
-      if (raster.sector_count > 0) {
-        // Stored twice in a row: a pixel row sweeps less than a full turn, so the row walk below
-        // indexes without wrapping (clockwise from the second copy, counter-clockwise from the first).
-        const auto begin = out.sectors.begin() + raster.first_sector;
-        const std::vector<RasterSector> copy(begin, begin + raster.sector_count);
-        out.sectors.insert(out.sectors.end(), copy.begin(), copy.end());
-      }
       raster.first_vertex = static_cast<int>(out.vertices.size());
       raster.vertex_count = raster.sector_count > 0 ? static_cast<int>(relative.size()) : 0;
       if (raster.sector_count > 0) out.vertices.insert(out.vertices.end(), relative.begin(), relative.end());
@@ -648,7 +641,8 @@ void SkinRelief::buildRasterLevels() {
 }
 
 ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const {
-  ReliefMap map(width, height);
+  // Filled band by band, top to bottom (the end of the band loop).
+  ReliefMap map(width, height, ReliefMap::Appended());
   const int first = only_level >= 0 ? only_level : 0;
   const int end = only_level >= 0 ? only_level + 1 : levelCount();
   // The map is rendered in bands of rows, every level of a band before the next band. Level by
@@ -663,7 +657,10 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   const int band_count = (height + kBandRows - 1) / kBandRows;
   const std::size_t band_capacity = static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
   // Scratch kept per thread between calls (fresh pages cost page faults and zeroing).
-  thread_local std::vector<double> heights;  // the band's, summed in double like the reference, rounded once
+  // The band's height and slopes, summed in double like the reference and rounded once into the
+  // map at the band's end (summed in the map's floats, each band's slopes came back from L3 --
+  // the map is 12 MB at 1024^2 -- and were rounded at every level).
+  thread_local std::vector<double> heights, slopes_u, slopes_v;
   // One owner per pixel of the band, overwritten level by level: cell + code_base of its level,
   // so a child claims a pixel exactly when it still holds its parent's code (-1: nobody's yet).
   thread_local std::vector<int> owner;
@@ -773,16 +770,20 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       rows_out.band_cells[static_cast<std::size_t>(band_fill[static_cast<std::size_t>(cell_bands[at])]++)] = cell_bands[at + 1];
   }
   if (heights.size() < band_capacity) heights.resize(band_capacity);
+  if (slopes_u.size() < band_capacity) slopes_u.resize(band_capacity);
+  if (slopes_v.size() < band_capacity) slopes_v.resize(band_capacity);
   if (owner.size() < band_capacity) owner.resize(band_capacity);
   const double inverse_width = 1.0 / width, inverse_height = 1.0 / height;
+  FastCache unclaimed_cache;
   const double profile_last = profile_table_.last();
-  const int profile_entries = static_cast<int>(profile_last) - 1;  // last entry index with a step
-  const double* profile_pairs = profile_pairs_.data();
+  const double* profile_lines = profile_lines_.data();
   for (int band = 0; band < band_count; ++band) {
     const int band_first = band * kBandRows, band_last = std::min(height, band_first + kBandRows) - 1;
     const std::size_t band_base = static_cast<std::size_t>(band_first) * static_cast<std::size_t>(width);
     const std::size_t band_pixels = static_cast<std::size_t>(band_last - band_first + 1) * static_cast<std::size_t>(width);
     std::fill(heights.begin(), heights.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);
+    std::fill(slopes_u.begin(), slopes_u.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);
+    std::fill(slopes_v.begin(), slopes_v.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);
     std::fill(owner.begin(), owner.begin() + static_cast<std::ptrdiff_t>(band_pixels), -1);
     int code_base = 0, parent_code_base = -1;
     for (int level_index = 0; level_index < end; ++level_index) {
@@ -791,9 +792,8 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       const bool accumulate = level_index >= first;
       const double depth = level.depth;
       const bool masked = level_index > 0;
-      // Band-relative: owner and heights hold the band only, the slopes are the map's.
-      float* slope_u = map.slope_u.data() + band_base;
-      float* slope_v = map.slope_v.data() + band_base;
+      double* slope_u = slopes_u.data();
+      double* slope_v = slopes_v.data();
       int* owners = owner.data();
       double* sums = heights.data();
       const int* band_cells = rows_in.band_cells.data();
@@ -821,7 +821,7 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
             const double qx_first = (column_first + 0.5) * inverse_width - cell.centre_x;
             for (int step = 0; step < 2 * sector_count; ++step) {
               const RasterSector& a = sectors[sector];
-              const RasterSector& b = sectors[sector + 1];
+              const RasterSector& b = sectors[sector + 1 == sector_count ? 0 : sector + 1];
               if (a.direction_x * dy - a.direction_y * qx_first < 0.0) {
                 sector = sector == 0 ? sector_count - 1 : sector - 1;
               } else if (b.direction_x * dy - b.direction_y * qx_first >= 0.0) {
@@ -843,7 +843,7 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
               constexpr bool above = decltype(above_tag)::value;
               // Moving right turns the direction clockwise above the centre (out through the
               // sector's start ray) and counter-clockwise below it (through the next start ray).
-              int k = above ? sector + sector_count : sector;
+              int k = sector;
               std::ptrdiff_t shift = column_wrapped_first - column_first;
               const double dy_columns = dy * width;
               int column = column_first;
@@ -856,19 +856,17 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
                 const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(row_base) + column + shift;
                 int* const own = owners + offset;
                 double* const sum = sums + offset;
-                float* const su = slope_u + offset;
-                float* const sv = slope_v + offset;
+                double* const su = slope_u + offset;
+                double* const sv = slope_v + offset;
                 column = last + 1;
                 const auto shade = [&](int i, double s) {
-                  // profile_table_.evaluate(1 - s) with s < 1 (so x > 0), the same operations.
+                  // profile_table_.evaluate(1 - s) with s < 1 (so the position is in (0, last]).
                   const double position = std::min(1.0 - s, 1.0) * profile_last;
-                  const int entry = std::min(static_cast<int>(position), profile_entries);
-                  const double fraction = position - entry;
-                  const double* pair = profile_pairs + 2 * entry;
-                  sum[i] += depth * (pair[0] + fraction * (pair[2] - pair[0]));
-                  const double factor = depth * (pair[1] + fraction * (pair[3] - pair[1]));
-                  su[i] -= static_cast<float>(factor * gradient_x);
-                  sv[i] -= static_cast<float>(factor * gradient_y);
+                  const double* line = profile_lines + 4 * static_cast<int>(position);
+                  sum[i] += depth * (line[0] + position * line[1]);
+                  const double factor = depth * (line[2] + position * line[3]);
+                  su[i] -= factor * gradient_x;
+                  sv[i] -= factor * gradient_y;
                 };
                 if (here.boundary_x == gradient_x && here.boundary_y == gradient_y) {
                   // The usual sector: the boundary is the winning wall's own segment, so b . q = s
@@ -889,7 +887,7 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
                   }
                 }
               };
-              for (int visited = 0; visited < sector_count; ++visited) {  // k stays inside both copies
+              for (int visited = 0; visited < sector_count; ++visited) {
                 const RasterSector& here = sectors[k];
                 // Column where the row leaves the sector (NaN: it never does).
                 const double edge = dy_columns * (above ? here.crossing_above : here.crossing_below) + column_offset;
@@ -904,7 +902,11 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
                 }
                 pixels(last, here);
                 if (column > column_last) break;
-                k += above ? -1 : 1;
+                if (above) {
+                  k = (k == 0 ? sector_count : k) - 1;
+                } else {
+                  k = k + 1 == sector_count ? 0 : k + 1;
+                }
               }
             };
             if (dy >= 0.0) {
@@ -918,6 +920,9 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       }
       // What no cell claimed goes through the per-pixel path (same model as the reference).
       int cells_out[3] = {-1, -1, -1};
+      // Unclaimed pixels come in short runs (slivers along a junction, a fold's pocket): the
+      // per-pixel path's cache of the last straight cells finds most of them without a search
+      // (its answers do not depend on it).
       for (std::size_t block = 0; block < band_pixels; block += 64) {
         // Blocks of 64 owners, tested with a vectorisable "any below": nearly all are claimed.
         const std::size_t block_end = std::min(block + 64, band_pixels);
@@ -930,17 +935,20 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
           const int row = static_cast<int>(pixel / static_cast<std::size_t>(width));
           const int column = static_cast<int>(pixel - static_cast<std::size_t>(row) * static_cast<std::size_t>(width));
           const ReliefSample sample = evaluateFast((column + 0.5) * inverse_width, (row + 0.5) * inverse_height,
-                                                   accumulate ? level_index : level_index + 1, level_index + 1, nullptr, cells_out);
+                                                   accumulate ? level_index : level_index + 1, level_index + 1, &unclaimed_cache, cells_out);
           owners[at] = cells_out[level_index] + code_base;
           sums[at] += sample.height;
-          slope_u[at] += static_cast<float>(sample.slope.x());
-          slope_v[at] += static_cast<float>(sample.slope.y());
+          slope_u[at] += sample.slope.x();
+          slope_v[at] += sample.slope.y();
         }
       }
       parent_code_base = code_base;
       code_base += static_cast<int>(level.cells.size());
     }
-    for (std::size_t at = 0; at < band_pixels; ++at) map.heights[band_base + at] = static_cast<float>(heights[at]);
+    const auto band_end = static_cast<std::ptrdiff_t>(band_pixels);
+    map.heights.insert(map.heights.end(), heights.begin(), heights.begin() + band_end);
+    map.slope_u.insert(map.slope_u.end(), slopes_u.begin(), slopes_u.begin() + band_end);
+    map.slope_v.insert(map.slope_v.end(), slopes_v.begin(), slopes_v.begin() + band_end);
   }
   return map;
 }

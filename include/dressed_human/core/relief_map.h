@@ -22,8 +22,13 @@ struct ReliefMap {
   std::vector<float> slope_v;  ///< dh/dv
 
   ReliefMap() = default;
-  /// Throws std::invalid_argument for a non-positive size.
+  /// Zero heights and slopes. Throws std::invalid_argument for a non-positive size.
   ReliefMap(int width_pixels, int height_pixels);
+  /// For a writer that appends every pixel in row-major order: the size checked (as above) and
+  /// the storage reserved, but the vectors left empty -- no pass of zeros over memory about to
+  /// be overwritten (12 MB at 1024^2).
+  struct Appended {};
+  ReliefMap(int width_pixels, int height_pixels, Appended);
 
   std::size_t index(int column, int row) const {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column);

@@ -151,7 +151,7 @@ class SkinRelief {
   struct RasterCell {
     double centre_x = 0.0, centre_y = 0.0;
     double low_x = 0.0, low_y = 0.0, high_x = 0.0, high_y = 0.0;  // boundary's bounding box
-    int first_sector = 0, sector_count = 0;  // stored twice in a row; 0: left to the per-pixel path
+    int first_sector = 0, sector_count = 0;  // 0: left to the per-pixel path
     int first_vertex = 0, vertex_count = 0;  // boundary polygon, relative to the centre
     int parent = -1;
   };
@@ -231,9 +231,9 @@ class SkinRelief {
   BezierProfileTable profile_table_;
   int roundness_exponent_ = 0;  // 0 = max (polygonal)
   std::vector<RasterLevel> raster_;
-  // profile_table_ repacked for the rasteriser's inner loop: height and slope of each entry side
-  // by side (half the cache lines of the two tables per lookup; the same interpolation).
-  std::vector<double> profile_pairs_;
+  // profile_table_ repacked for the rasteriser's inner loop (skin_relief.cpp): per interval the
+  // height and slope lines {height offset, height step, slope offset, slope step}.
+  std::vector<double> profile_lines_;
   bool raster_ready_ = false;  // render() rasterises (roundness 0, every cell narrower than the tile)
 };
 
