@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace dressed_human {
 
@@ -665,6 +664,14 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   // so a child claims a pixel exactly when it still holds its parent's code (-1: nobody's yet).
   thread_local std::vector<int> owner;
   thread_local std::vector<double> span_low, span_high, vertex_rows;
+  // One row of one cell (the band loop): its pixels' sectors as runs, and 1 at each column
+  // (from the row's first) where a run ends.
+  struct RowRun {
+    double gradient_x, gradient_y, gradient_dy;  // s = gradient_x * qx + gradient_dy
+    double boundary_x, boundary_dy;              // inside the boundary: boundary_x * qx + boundary_dy < 1
+  };
+  thread_local std::vector<RowRun> run_buffer;
+  thread_local std::vector<int> run_end_buffer;
   // Per level and cell: its rows (unwrapped) and where their column ranges start in `spans`;
   // `sector` carries the row walk's sector from one band to the next.
   struct CellRows {
@@ -773,6 +780,15 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   if (slopes_u.size() < band_capacity) slopes_u.resize(band_capacity);
   if (slopes_v.size() < band_capacity) slopes_v.resize(band_capacity);
   if (owner.size() < band_capacity) owner.resize(band_capacity);
+  std::size_t most_sectors = 0;
+  for (int level_index = 0; level_index < end; ++level_index)
+    for (const RasterCell& cell : raster_[static_cast<std::size_t>(level_index)].cells)
+      most_sectors = std::max(most_sectors, static_cast<std::size_t>(cell.sector_count));
+  if (run_buffer.size() < most_sectors + 1) run_buffer.resize(most_sectors + 1);
+  // Rows are narrower than the tile; zero between rows (each row clears what it marked).
+  run_end_buffer.assign(static_cast<std::size_t>(width) + 2, 0);
+  RowRun* const runs = run_buffer.data();
+  int* const run_ends = run_end_buffer.data();
   const double inverse_width = 1.0 / width, inverse_height = 1.0 / height;
   FastCache unclaimed_cache;
   const double profile_last = profile_table_.last();
@@ -830,90 +846,79 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
                 break;
               }
             }
-            // Unwrapped columns map to row_base + column + shift; the shift drops by width where
-            // the row crosses the tile's right edge (rows are narrower than the tile). Cells lie
-            // within a tile's width of the tile, so mostly no integer division is needed.
+            // Unwrapped columns map to row_base + column + shift; the shift drops by width from
+            // wrap_column on, where the row crosses the tile's right edge (rows are narrower than
+            // the tile). Cells lie within a tile's width of the tile, so mostly no integer
+            // division is needed.
             int column_wrapped_first = column_first;
             if (column_wrapped_first < 0) column_wrapped_first += width;
             if (column_wrapped_first >= width) column_wrapped_first -= width;
             if (column_wrapped_first < 0 || column_wrapped_first >= width) column_wrapped_first = ((column_first % width) + width) % width;
             const int wrap_column = column_first + (width - column_wrapped_first);
             const double column_offset = cell.centre_x * width - 0.5;
-            const auto pixelRuns = [&](auto above_tag) {
-              constexpr bool above = decltype(above_tag)::value;
+            // Two passes over the row, so that no branch depends on how many of its pixels a
+            // sector holds (at 1024^2 a third of the finest level's sectors hold none of a row's
+            // and most of the rest one or two; loops per sector mispredicted about once a sector).
+            // 1. Walk the sectors the row crosses, in order (it leaves each through one ray),
+            //    keeping one run per sector that holds a pixel -- written unconditionally, the
+            //    count advanced by a comparison -- and marking the column after each run's last.
+            //    The column where the row leaves a sector is clamped and floored without looking
+            //    at the previous sector's, so from one sector to the next only an integer max
+            //    depends on the last (not a chain of double <-> int conversions).
+            const bool above = dy >= 0.0;
+            const double dy_columns = dy * width;
+            const double before_row = column_first - 1.0;
+            int k = sector, column = column_first, run_count = 0;
+            for (int visited = 0; visited < sector_count; ++visited) {
+              const RasterSector& here = sectors[k];
+              // Column where the row leaves the sector (NaN: it never does).
+              const double edge = dy_columns * (above ? here.crossing_above : here.crossing_below) + column_offset;
+              const double bounded = std::max(edge < column_last ? edge : static_cast<double>(column_last), before_row);
+              const int truncated = static_cast<int>(bounded);
+              const int last = std::max(truncated - (bounded < truncated ? 1 : 0), column - 1);
+              RowRun& run = runs[run_count];
+              run.gradient_x = here.gradient_x;
+              run.gradient_y = here.gradient_y;
+              run.gradient_dy = here.gradient_y * dy;
+              run.boundary_x = here.boundary_x;
+              run.boundary_dy = here.boundary_y * dy;
+              run_count += last >= column ? 1 : 0;
+              run_ends[last + 1 - column_first] = 1;
+              column = last + 1;
+              if (column > column_last) break;
               // Moving right turns the direction clockwise above the centre (out through the
               // sector's start ray) and counter-clockwise below it (through the next start ray).
-              int k = sector;
-              std::ptrdiff_t shift = column_wrapped_first - column_first;
-              const double dy_columns = dy * width;
-              int column = column_first;
-              const auto pixels = [&](int last, const RasterSector& here) {
-                if (last < column) return;
-                const int count = last - column + 1;
-                // Locals, so the stores below cannot make the compiler reload them.
-                const double gradient_x = here.gradient_x, gradient_y = here.gradient_y, gradient_dy = here.gradient_y * dy;
-                double qx = (column + 0.5) * inverse_width - cell.centre_x;
-                const std::ptrdiff_t offset = static_cast<std::ptrdiff_t>(row_base) + column + shift;
-                int* const own = owners + offset;
-                double* const sum = sums + offset;
-                double* const su = slope_u + offset;
-                double* const sv = slope_v + offset;
-                column = last + 1;
-                const auto shade = [&](int i, double s) {
-                  // profile_table_.evaluate(1 - s) with s < 1 (so the position is in (0, last]).
-                  const double position = std::min(1.0 - s, 1.0) * profile_last;
-                  const double* line = profile_lines + 4 * static_cast<int>(position);
-                  sum[i] += depth * (line[0] + position * line[1]);
-                  const double factor = depth * (line[2] + position * line[3]);
-                  su[i] -= factor * gradient_x;
-                  sv[i] -= factor * gradient_y;
-                };
-                if (here.boundary_x == gradient_x && here.boundary_y == gradient_y) {
-                  // The usual sector: the boundary is the winning wall's own segment, so b . q = s
-                  // (same operations) and "inside the boundary" is "s < 1".
-                  for (int i = 0; i < count; ++i, qx += inverse_width) {
-                    const double s = gradient_x * qx + gradient_dy;
-                    if (!(s < 1.0) || own[i] != expected) continue;  // outside, taken, or another parent's
-                    own[i] = code;
-                    if (accumulate) shade(i, s);
-                  }
-                } else {
-                  const double boundary_x = here.boundary_x, boundary_dy = here.boundary_y * dy;
-                  for (int i = 0; i < count; ++i, qx += inverse_width) {
-                    if (!(boundary_x * qx + boundary_dy < 1.0) || own[i] != expected) continue;  // outside, taken, another parent's
-                    own[i] = code;
-                    const double s = gradient_x * qx + gradient_dy;
-                    if (accumulate && s < 1.0) shade(i, s);  // on or past the furrow line: height 0, flat
-                  }
-                }
-              };
-              for (int visited = 0; visited < sector_count; ++visited) {
-                const RasterSector& here = sectors[k];
-                // Column where the row leaves the sector (NaN: it never does).
-                const double edge = dy_columns * (above ? here.crossing_above : here.crossing_below) + column_offset;
-                int last = column_last;
-                if (edge < column_last) {
-                  const int truncated = static_cast<int>(std::max(edge, column - 1.0));
-                  last = truncated - (edge < truncated ? 1 : 0);
-                }
-                if (column <= wrap_column && last >= wrap_column) {
-                  pixels(wrap_column - 1, here);
-                  shift -= width;
-                }
-                pixels(last, here);
-                if (column > column_last) break;
-                if (above) {
-                  k = (k == 0 ? sector_count : k) - 1;
-                } else {
-                  k = k + 1 == sector_count ? 0 : k + 1;
-                }
-              }
-            };
-            if (dy >= 0.0) {
-              pixelRuns(std::true_type());
-            } else {
-              pixelRuns(std::false_type());
+              k = above ? (k == 0 ? sector_count : k) - 1 : (k + 1 == sector_count ? 0 : k + 1);
             }
+            // Pixels past the last sector visited (a row the walk could not finish): nobody's.
+            runs[run_count] = {0.0, 0.0, 0.0, 0.0, INFINITY};
+            // 2. The pixels, each in the run the marks before it count to.
+            const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(row_base) + (column_wrapped_first - column_first);
+            const int span_width = column_last - column_first + 1;
+            run_ends[0] = 0;  // an empty first sector's mark
+            int run_index = 0;
+            for (int at_column = 0; at_column < span_width; ++at_column) {
+              run_index += run_ends[at_column];
+              run_ends[at_column] = 0;
+              const RowRun& run = runs[run_index];
+              const int pixel_column = column_first + at_column;
+              const double qx = (pixel_column + 0.5) * inverse_width - cell.centre_x;
+              const std::ptrdiff_t at = shift + pixel_column - (pixel_column >= wrap_column ? width : 0);
+              // The usual sector has the winning wall's own segment as its boundary: then
+              // boundary == gradient and this is s, with the same operations.
+              if (!(run.boundary_x * qx + run.boundary_dy < 1.0) || owners[at] != expected) continue;  // outside, taken, another parent's
+              owners[at] = code;
+              const double s = run.gradient_x * qx + run.gradient_dy;
+              if (!accumulate || !(s < 1.0)) continue;  // on or past the furrow line: height 0, flat
+              // profile_table_.evaluate(1 - s) with s < 1 (so the position is in (0, last]).
+              const double position = std::min(1.0 - s, 1.0) * profile_last;
+              const double* line = profile_lines + 4 * static_cast<int>(position);
+              sums[at] += depth * (line[0] + position * line[1]);
+              const double factor = depth * (line[2] + position * line[3]);
+              slope_u[at] -= factor * run.gradient_x;
+              slope_v[at] -= factor * run.gradient_y;
+            }
+            run_ends[span_width] = 0;
           }
         }
         cell_rows.sector = sector;
