@@ -4,26 +4,20 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace dressed_human {
 
-ReliefMap::ReliefMap(int width_pixels, int height_pixels) : ReliefMap(width_pixels, height_pixels, Appended()) {
-  const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  heights.assign(count, 0.0f);
-  slope_u.assign(count, 0.0f);
-  slope_v.assign(count, 0.0f);
-}
-
-ReliefMap::ReliefMap(int width_pixels, int height_pixels, Appended) : width(width_pixels), height(height_pixels) {
+ReliefMap::ReliefMap(int width_pixels, int height_pixels) : width(width_pixels), height(height_pixels) {
   if (width_pixels <= 0 || height_pixels <= 0) {
     std::ostringstream message;
     message << "ReliefMap: width and height must be > 0, got " << width_pixels << " x " << height_pixels;
     throw std::invalid_argument(message.str());
   }
   const std::size_t count = static_cast<std::size_t>(width_pixels) * static_cast<std::size_t>(height_pixels);
-  heights.reserve(count);
-  slope_u.reserve(count);
-  slope_v.reserve(count);
+  heights.assign(count, 0.0f);
+  slope_u.assign(count, 0.0f);
+  slope_v.assign(count, 0.0f);
 }
 
 Eigen::Vector3f ReliefMap::normalAt(int column, int row) const {
@@ -39,13 +33,14 @@ float ReliefMap::maximumHeight() const {
   return heights.empty() ? 0.0f : *std::max_element(heights.begin(), heights.end());
 }
 
-std::vector<ReliefMap> buildMipChain(const ReliefMap& base, int max_levels) {
+std::vector<ReliefMap> buildMipChain(ReliefMap base, int max_levels) {
   if (max_levels < 0) {
     std::ostringstream message;
     message << "buildMipChain: max_levels must be >= 0 (0 = no limit), got " << max_levels;
     throw std::invalid_argument(message.str());
   }
-  std::vector<ReliefMap> chain{base};
+  std::vector<ReliefMap> chain;
+  chain.push_back(std::move(base));
   while ((max_levels == 0 || static_cast<int>(chain.size()) < max_levels)) {
     const ReliefMap& fine = chain.back();
     if (fine.width < 2 || fine.height < 2 || fine.width % 2 != 0 || fine.height % 2 != 0) break;

@@ -640,8 +640,7 @@ void SkinRelief::buildRasterLevels() {
 }
 
 ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const {
-  // Filled band by band, top to bottom (the end of the band loop).
-  ReliefMap map(width, height, ReliefMap::Appended());
+  ReliefMap map(width, height);  // first: it names a bad size
   const int first = only_level >= 0 ? only_level : 0;
   const int end = only_level >= 0 ? only_level + 1 : levelCount();
   // The map is rendered in bands of rows, every level of a band before the next band. Level by
@@ -950,10 +949,11 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
       parent_code_base = code_base;
       code_base += static_cast<int>(level.cells.size());
     }
-    const auto band_end = static_cast<std::ptrdiff_t>(band_pixels);
-    map.heights.insert(map.heights.end(), heights.begin(), heights.begin() + band_end);
-    map.slope_u.insert(map.slope_u.end(), slopes_u.begin(), slopes_u.begin() + band_end);
-    map.slope_v.insert(map.slope_v.end(), slopes_v.begin(), slopes_v.begin() + band_end);
+    for (std::size_t at = 0; at < band_pixels; ++at) {
+      map.heights[band_base + at] = static_cast<float>(heights[at]);
+      map.slope_u[band_base + at] = static_cast<float>(slopes_u[at]);
+      map.slope_v[band_base + at] = static_cast<float>(slopes_v[at]);
+    }
   }
   return map;
 }

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <utility>
 
 namespace dressed_human {
 namespace {
@@ -357,6 +359,18 @@ TEST(BezierProfileTable, TableMatchesExactCurve) {
   BezierProfileTable::evaluateExact(profile, 0.0, height, slope);
   EXPECT_NEAR(slope, 4.0, 1e-2);
   EXPECT_NEAR(height, 0.0, 1e-15);
+}
+
+TEST(SkinRelief, RejectsBadMapSizeByName) {
+  const SkinRelief relief(SkinReliefParameters{});
+  for (const auto& size : {std::pair<int, int>{0, 16}, std::pair<int, int>{16, -3}}) {
+    try {
+      relief.render(size.first, size.second);
+      FAIL() << size.first << " x " << size.second;
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("width and height must be > 0"), std::string::npos) << error.what();
+    }
+  }
 }
 
 }  // namespace

@@ -22,13 +22,8 @@ struct ReliefMap {
   std::vector<float> slope_v;  ///< dh/dv
 
   ReliefMap() = default;
-  /// Zero heights and slopes. Throws std::invalid_argument for a non-positive size.
+  /// Throws std::invalid_argument for a non-positive size.
   ReliefMap(int width_pixels, int height_pixels);
-  /// For a writer that appends every pixel in row-major order: the size checked (as above) and
-  /// the storage reserved, but the vectors left empty -- no pass of zeros over memory about to
-  /// be overwritten (12 MB at 1024^2).
-  struct Appended {};
-  ReliefMap(int width_pixels, int height_pixels, Appended);
 
   std::size_t index(int column, int row) const {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column);
@@ -41,7 +36,9 @@ struct ReliefMap {
 /// Mip chain: level 0 is `base`, each next level averages 2x2 blocks of height and gradient (the
 /// gradient of the box-filtered height, so normals stay consistent with heights). Stops at 1x1,
 /// at an odd dimension, or after max_levels levels (0 = no limit).
-std::vector<ReliefMap> buildMipChain(const ReliefMap& base, int max_levels = 0);
+/// `base` by value: a map passed as a temporary (buildMipChain(relief.render(...))) is moved into
+/// the chain, not copied (12 MB at 1024^2).
+std::vector<ReliefMap> buildMipChain(ReliefMap base, int max_levels = 0);
 
 /// 8-bit RGB tangent-space normal map, (n + 1) / 2 * 255 per channel, row-major RGBRGB...
 std::vector<std::uint8_t> encodeNormalMapRgb(const ReliefMap& map);
