@@ -100,7 +100,7 @@ class SkinRelief {
   /// 0.017 and 0.334 of the deepest level's depth. The bounds below are those worst cases
   /// rounded up (0.1 %, 0.35); a map shifted by one pixel or with another seed's cells on one
   /// level differs at > 90 % of pixels. Slopes of the pixels whose height agrees are within
-  /// kReferenceSlopeTolerance (measured 3.8e-6).
+  /// kReferenceSlopeTolerance (measured: equal -- both sum the levels in double, round once).
   static constexpr double kReferenceHeightTolerance = 1e-9;
   static constexpr double kReferenceSlopeTolerance = 1e-5;
   static constexpr double kReferenceDifferingFraction = 0.001;  ///< raster render(): pixels beyond 1e-9
