@@ -633,6 +633,7 @@ void SkinRelief::buildRasterLevels() {
       raster.first_vertex = static_cast<int>(out.vertices.size());
       raster.vertex_count = raster.sector_count > 0 ? static_cast<int>(relative.size()) : 0;
       if (raster.sector_count > 0) out.vertices.insert(out.vertices.end(), relative.begin(), relative.end());
+      out.most_sectors = std::max(out.most_sectors, raster.sector_count);
       out.cells.push_back(raster);
     }
   }
@@ -781,8 +782,7 @@ ReliefMap SkinRelief::renderRaster(int width, int height, int only_level) const 
   if (owner.size() < band_capacity) owner.resize(band_capacity);
   std::size_t most_sectors = 0;
   for (int level_index = 0; level_index < end; ++level_index)
-    for (const RasterCell& cell : raster_[static_cast<std::size_t>(level_index)].cells)
-      most_sectors = std::max(most_sectors, static_cast<std::size_t>(cell.sector_count));
+    most_sectors = std::max(most_sectors, static_cast<std::size_t>(raster_[static_cast<std::size_t>(level_index)].most_sectors));
   if (run_buffer.size() < most_sectors + 1) run_buffer.resize(most_sectors + 1);
   // Rows are narrower than the tile; zero between rows (each row clears what it marked).
   run_end_buffer.assign(static_cast<std::size_t>(width) + 2, 0);

@@ -160,6 +160,7 @@ class SkinRelief {
     std::vector<RasterSector> sectors;
     std::vector<Eigen::Vector2d> vertices;
     double depth = 0.0;
+    int most_sectors = 0;  // largest sector_count of its cells (sizes render's per-row runs)
   };
   // One wall's ray hit as the reference computes it (s and its gradient at centre + q, q . n > 0).
   static void wallRayHit(const skin_detail::CellLevel& level, const skin_detail::Wall& wall, const Eigen::Vector2d& q, double& s,
