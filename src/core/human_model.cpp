@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "dressed_human/core/garment_file.h"
@@ -27,6 +29,34 @@ SurfacePart surfacePart(const std::string& name, ReliefKind relief, const Eigen:
   part.colour = colour;
   part.mesh = nullptr;
   return part;
+}
+
+// In double, rounded outwards to float: the float vertices evaluated from these control points
+// stay inside.
+Eigen::AlignedBox3f outwardToFloat(const Eigen::AlignedBox3d& box) {
+  if (box.isEmpty()) return Eigen::AlignedBox3f();
+  const float lowest = -std::numeric_limits<float>::infinity(), highest = std::numeric_limits<float>::infinity();
+  Eigen::Vector3f min, max;
+  for (int k = 0; k < 3; ++k) {
+    min[k] = std::nextafter(static_cast<float>(box.min()[k]), lowest);
+    max[k] = std::nextafter(static_cast<float>(box.max()[k]), highest);
+  }
+  return Eigen::AlignedBox3f(min, max);
+}
+
+Eigen::AlignedBox3f controlPointBounds(const std::vector<BezierPatch>& patches) {
+  Eigen::AlignedBox3d box;
+  for (const BezierPatch& patch : patches) {
+    box.extend(patch.boundingBoxMin());
+    box.extend(patch.boundingBoxMax());
+  }
+  return outwardToFloat(box);
+}
+
+Eigen::AlignedBox3f vertexBounds(const std::vector<Eigen::Vector3f>& positions) {
+  Eigen::AlignedBox3f box;
+  for (const Eigen::Vector3f& position : positions) box.extend(position);
+  return box;
 }
 
 }  // namespace
@@ -173,6 +203,9 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
       settings.weights = part.relief_weight;
       displaceMesh(*part.mesh, settings, displaced_meshes_[p]);
       part.mesh = &displaced_meshes_[p];
+      part.bounds = vertexBounds(part.mesh->positions);
+    } else {
+      part.bounds = controlPointBounds(patches);
     }
   }
 }

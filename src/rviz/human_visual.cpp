@@ -48,14 +48,12 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.colour_set = true;
     }
     if (source.evaluated) {
-      part.mesh->update(*source.mesh, source.relief_weight);
+      part.mesh->update(*source.mesh, source.relief_weight, source.bounds);
       continue;
     }
-    const Eigen::AlignedBox3f bounds = part.material->setPatches(*source.patches);
+    part.material->setPatches(*source.patches);
     part.material->setWrinkleStrength(source.inverse_rest_metric ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, source.inverse_rest_metric, source.layout_id,
-                            Ogre::AxisAlignedBox(bounds.min().x(), bounds.min().y(), bounds.min().z(), bounds.max().x(),
-                                                 bounds.max().y(), bounds.max().z()));
+    part.mesh->updateLayout(*source.mesh, source.inverse_rest_metric, source.layout_id, source.bounds);
   }
 }
 

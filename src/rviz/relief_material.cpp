@@ -145,14 +145,13 @@ void ReliefMaterial::setReliefTiling(float repeats_per_patch) {
   vertexParameters(material_)->setNamedConstant("reliefTiling", repeats_per_patch);
 }
 
-Eigen::AlignedBox3f ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
+void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
   if (!bezier_vertices_) throw std::logic_error("ReliefMaterial " + name_ + ": patches set on a CPU-vertex material");
   if (patches.size() > kMaxPatches) {
     throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) + " patches; the Bezier vertex shader holds " +
                                 std::to_string(kMaxPatches));
   }
-  Eigen::AlignedBox3f bounds;
-  if (patches.empty()) return bounds;
+  if (patches.empty()) return;
   // Straight into the parameters' float buffer (which the render system uploads when it binds
   // the pass): a staging copy would double the bytes written per frame.
   const Ogre::GpuProgramParametersSharedPtr parameters = vertexParameters(material_);
@@ -165,14 +164,12 @@ Eigen::AlignedBox3f ReliefMaterial::setPatches(const std::vector<BezierPatch>& p
   for (const BezierPatch& patch : patches) {
     for (const Eigen::Vector3d& point : patch.controlPoints()) {
       const Eigen::Vector3f p = point.cast<float>();
-      bounds.extend(p);
       *out++ = p.x();
       *out++ = p.y();
       *out++ = p.z();
       *out++ = 1.0f;
     }
   }
-  return bounds;
 }
 
 void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constants) {

@@ -46,8 +46,7 @@ class ReliefMaterial {
   void setNormalMap(const std::vector<std::uint8_t>& rgb, int width, int height);
   // Bezier vertices only: the posed patches (at most kMaxPatches, else std::invalid_argument)
   // and, for garments, the wrinkle strength's constants (null: the relief shows everywhere).
-  // Returns the box of the control points, which holds the surface (convex hull property).
-  Eigen::AlignedBox3f setPatches(const std::vector<BezierPatch>& patches);
+  void setPatches(const std::vector<BezierPatch>& patches);
   void setWrinkleStrength(const WrinkleStrengthConstants* constants);
 
  private:

@@ -42,7 +42,18 @@ bool SurfaceMeshObject::beginFilling(std::size_t vertices, std::size_t indices) 
   return true;
 }
 
-void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight) {
+void SurfaceMeshObject::setBounds(const Eigen::AlignedBox3f& bounds) {
+  if (object_->getSections().size() != 1 || bounds.isEmpty()) return;
+  // Every frame, in both vertex modes. ManualObject only ever grows its box while vertices are
+  // written (never when the GPU moves them), and the scene node caches its world box until it is
+  // told: without both steps the human is culled by where it once was.
+  object_->setBoundingBox(Ogre::AxisAlignedBox(bounds.min().x(), bounds.min().y(), bounds.min().z(), bounds.max().x(),
+                                               bounds.max().y(), bounds.max().z()));
+  object_->getParentSceneNode()->needUpdate();
+}
+
+void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight,
+                               const Eigen::AlignedBox3f& bounds) {
   layout_id_ = 0;
   const std::size_t vertices = mesh.positions.size();
   const std::size_t indices = mesh.indices.size();
@@ -60,10 +71,11 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float
   }
   for (std::size_t i = 0; i < indices; ++i) object_->index(mesh.indices[i]);
   object_->end();
+  setBounds(bounds);
 }
 
 void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vector<Eigen::Vector4f>* inverse_rest_metric,
-                                     std::uint64_t layout_id, const Ogre::AxisAlignedBox& bounds) {
+                                     std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds) {
   if (layout_id == 0 || layout_id != layout_id_) {
     const std::size_t vertices = layout.uv.size();
     if (layout.vertex_patch.size() != vertices ||
@@ -83,7 +95,7 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vect
     object_->end();
     layout_id_ = layout_id;  // only now: a layout that failed above is tried again next frame
   }
-  if (object_->getSections().size() == 1) object_->setBoundingBox(bounds);
+  setBounds(bounds);
 }
 
 }  // namespace dressed_human

@@ -2,12 +2,14 @@
 // An Ogre::ManualObject fed from a core TriangleMesh; refilled in place (its hardware buffers
 // reused while they are large enough, grown otherwise). Either with evaluated vertices every
 // frame (update), or with a layout for the Bezier vertex shader, re-sent only when it changes
-// (updateLayout).
+// (updateLayout). Either way the object's bounds are set to the posed surface's every frame:
+// Ogre culls by them.
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <OgreManualObject.h>
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
@@ -24,13 +26,14 @@ class SurfaceMeshObject {
   SurfaceMeshObject& operator=(const SurfaceMeshObject&) = delete;
 
   // `relief_weight`: per vertex, how much relief shows (second texture coordinate); null: 1.
-  void update(const TriangleMesh& mesh, const std::vector<float>* relief_weight = nullptr);
+  // `bounds`: encloses the posed surface (SurfacePart::bounds).
+  void update(const TriangleMesh& mesh, const std::vector<float>* relief_weight, const Eigen::AlignedBox3f& bounds);
   // Per vertex (u, v, patch) as the position and the garment's rest metric (VertexCompression::
   // inverseRestMetric; null: zeros) as texture coordinate 0. Nothing is sent while `layout_id`
-  // stays the same. `bounds`: the posed surface's box (its control points' box), every frame --
-  // Ogre culls by it, and the (u, v, patch) positions say nothing about where the surface is.
+  // stays the same; `bounds` (the posed surface's) is set every frame, since the (u, v, patch)
+  // positions say nothing about where the surface is.
   void updateLayout(const TriangleMesh& layout, const std::vector<Eigen::Vector4f>* inverse_rest_metric,
-                    std::uint64_t layout_id, const Ogre::AxisAlignedBox& bounds);
+                    std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds);
   void setMaterial(const std::string& material);
   void setVisible(bool visible) { object_->setVisible(visible); }
   std::size_t rebuildCount() const { return rebuild_count_; }
@@ -44,6 +47,7 @@ class SurfaceMeshObject {
   std::size_t rebuild_count_ = 0;  // buffer (re)creations
   std::uint64_t layout_id_ = 0;    // of the layout the buffers hold; 0: evaluated vertices
   bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
+  void setBounds(const Eigen::AlignedBox3f& bounds);
 };
 
 }  // namespace dressed_human

@@ -54,6 +54,75 @@ TEST(HumanModel, RejectsABadFixedLevel) {
   EXPECT_NO_THROW(model.update(pose.root, pose.bone_in_world, lod));
 }
 
+// The box a renderer culls by (SurfacePart::bounds) holds every vertex of the posed part, in
+// every vertex-evaluation mode, level of detail, outfit and relief setting, in every pose of a
+// walk that moves the human away from where it started: a box that stays behind hides the human
+// (issue "The human stays on screen").
+TEST(HumanModel, BoundsEncloseThePosedPartInEveryModeAndPose) {
+  std::vector<SkeletonPose> poses = walkPoses(4, body().shape);
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    // Far from the origin, as after a minute of walking, and further each pose.
+    const Eigen::Vector3d shift(40.0 + 3.0 * static_cast<double>(k), -7.0, 0.0);
+    poses[k].root.translation += shift;
+    for (RigidTransform& bone : poses[k].bone_in_world) bone.translation += shift;
+  }
+  auto map = std::make_shared<ReliefMap>(32, 32);
+  for (int r = 0; r < 32; ++r) {
+    for (int c = 0; c < 32; ++c) map->heights[map->index(c, r)] = 0.3f * static_cast<float>(std::cos(0.4 * c - 0.7 * r));
+  }
+  std::vector<LevelOfDetail> lods;
+  for (const int level : {1, 3, 16}) {
+    LevelOfDetail fixed;
+    fixed.level = level;
+    lods.push_back(fixed);
+  }
+  for (const double distance : {0.5, 60.0}) {
+    LevelOfDetail automatic;
+    automatic.automatic = true;
+    automatic.camera.position = Eigen::Vector3d(40.0 + distance, -7.0 + distance, 1.5);
+    lods.push_back(automatic);
+  }
+  std::size_t checked = 0;
+  for (const Outfit outfit : {Outfit::kNone, Outfit::kOnePiece, Outfit::kJacketSkirt, Outfit::kJacketPants}) {
+    for (const VertexEvaluation evaluation : {VertexEvaluation::kCpu, VertexEvaluation::kRenderer}) {
+      for (const bool displaced : {false, true}) {
+        HumanModel model(skeleton(), body(), settingsFor(outfit));
+        model.setVertexEvaluation(evaluation);
+        if (displaced) {
+          model.setDisplacement(ReliefKind::kSkin, map, 2.0f, 1.0f, 1.0f);
+          model.setDisplacement(ReliefKind::kCloth, map, 1.0f, 1.0f, 1.0f);
+        }
+        for (const LevelOfDetail& lod : lods) {
+          for (const SkeletonPose& pose : poses) {
+            model.update(pose.root, pose.bone_in_world, lod);
+            for (const SurfacePart& part : model.parts()) {
+              ASSERT_FALSE(part.bounds.isEmpty()) << part.name;
+              const Eigen::AlignedBox3f box = part.bounds;
+              // A box that encloses the human wherever it has ever been would never hide it, but
+              // would never let Ogre cull it either: the box is this pose's (a person, a few m).
+              EXPECT_LT(box.diagonal().norm(), 3.0f) << part.name;
+              for (std::size_t i = 0; i < part.mesh->vertexCount(); ++i) {
+                Eigen::Vector3f position;
+                if (part.evaluated) {
+                  position = part.mesh->positions[i];
+                } else {  // as the vertex shader evaluates it
+                  const BezierPatch& patch = (*part.patches)[part.mesh->vertex_patch[i]];
+                  position = patch.position(part.mesh->uv[i].x(), part.mesh->uv[i].y()).cast<float>();
+                }
+                ASSERT_TRUE(box.contains(position))
+                    << part.name << " vertex " << i << " at " << position.transpose() << " outside ["
+                    << box.min().transpose() << "] - [" << box.max().transpose() << "]";
+                ++checked;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 500000u);
+}
+
 TEST(HumanModel, DisplacedGeometryMovesOnlyTheDisplacedKindWithinItsBound) {
   const SkeletonPose pose = walkPoses(3, body().shape)[1];
   HumanModel plain(skeleton(), body(), settingsFor(Outfit::kJacketSkirt));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "dressed_human/core/body_description.h"
 #include "dressed_human/core/forward_kinematics.h"
@@ -41,6 +42,11 @@ struct SurfacePart {
   std::uint64_t layout_id = 0;                        // Tessellator::layoutId() of `mesh`
   const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex
   WrinkleStrengthConstants wrinkle_constants;
+  // Encloses the posed part in the world frame of update(), whoever evaluates its vertices: the
+  // box of the posed control points (a Bezier patch lies in their convex hull), or of the
+  // displaced vertices when the relief moves them. A renderer culls by it, so it must follow the
+  // human every frame: the layout alone says nothing about where the surface is.
+  Eigen::AlignedBox3f bounds;
 };
 
 // Who evaluates the surface at the mesh vertices. kRenderer leaves it to the renderer (a vertex

@@ -1,0 +1,246 @@
+"""What a user sees over time: a shipped launch file runs with the human moving, a screenshot is
+taken every few seconds, and each one is judged against where TF says the human is.
+
+The camera is rviz's Orbit view, computed from the rviz config the way OrbitViewController does
+(eye at focal point + distance (cos yaw cos pitch, sin yaw cos pitch, sin pitch), in the target
+frame's position, z up), so a bone frame's pixel follows from its TF pose alone.
+"""
+import json
+import math
+import os
+import signal
+import subprocess
+import time
+import xml.etree.ElementTree as ElementTree
+
+import numpy
+import rospy
+import tf2_ros
+import yaml
+from PIL import Image
+
+from screenshots import grab
+
+ROOT_FRAME = "body"
+# A bone frame sits on the bone's axis at its proximal joint; the skin and clothes reach this far
+# beyond the frames (head top above the head frame, hands, skirt hem).
+BODY_MARGIN_METRES = 0.35
+
+
+def figure_mask(image):
+    """Pixels of the human in a view with rviz's grey grid: the skin and garments are coloured
+    (the grid and background are grey and at most ~135 bright), highlights are bright."""
+    highest, lowest = image.max(axis=2), image.min(axis=2)
+    return ((highest - lowest) > 20) | (highest > 175)
+
+
+def bone_frames(urdf_text):
+    """The bone frames of the URDF (links that are not the intermediate joint links)."""
+    links = [link.get("name") for link in ElementTree.fromstring(urdf_text).iter("link")]
+    return [name for name in links if not name.endswith("_ry_link") and not name.endswith("_rx_link")]
+
+
+class OrbitView:
+    """rviz's Orbit view controller as an rviz config describes it."""
+
+    def __init__(self, config_path):
+        with open(config_path) as f:
+            config = yaml.safe_load(f)
+        manager = config["Visualization Manager"]
+        view = manager["Views"]["Current"]
+        if view["Class"] != "rviz/Orbit":
+            raise ValueError("%s: the view is %s, only rviz/Orbit is modelled" % (config_path, view["Class"]))
+        self.fixed_frame = manager["Global Options"]["Fixed Frame"]
+        target = view.get("Target Frame", "<Fixed Frame>")
+        self.target_frame = self.fixed_frame if target == "<Fixed Frame>" else target
+        self.distance = float(view["Distance"])
+        self.yaw = float(view["Yaw"])
+        self.pitch = float(view["Pitch"])
+        focal = view.get("Focal Point", {"X": 0, "Y": 0, "Z": 0})
+        self.focal = numpy.array([focal["X"], focal["Y"], focal["Z"]], dtype=float)
+        self.fov = float(view.get("Field of View", math.pi / 4))
+        self.near = float(view.get("Near Clip Distance", 0.01))
+
+    def project(self, points, target_position, width, height):
+        """Pixel columns, rows and depths of fixed-frame points in a width x height view."""
+        focal_point = target_position + self.focal
+        offset = numpy.array([math.cos(self.yaw) * math.cos(self.pitch), math.sin(self.yaw) * math.cos(self.pitch),
+                              math.sin(self.pitch)])
+        eye = focal_point + self.distance * offset
+        forward = -offset
+        right = numpy.cross(forward, [0.0, 0.0, 1.0])
+        right /= numpy.linalg.norm(right)
+        up = numpy.cross(right, forward)
+        relative = numpy.asarray(points) - eye
+        depth = relative @ forward
+        scale = (height / 2.0) / math.tan(self.fov / 2.0)  # pixels per unit of x/z at the view plane
+        safe = numpy.where(depth > 1e-6, depth, 1e-6)
+        columns = width / 2.0 + scale * (relative @ right) / safe
+        rows = height / 2.0 - scale * (relative @ up) / safe
+        return columns, rows, depth, scale
+
+
+class Pose:
+    """Where TF says the human is at one instant: bone frame origins and the view's target."""
+
+    def __init__(self, buffer, view, frames):
+        def position(frame):
+            t = buffer.lookup_transform(view.fixed_frame, frame, rospy.Time(0), rospy.Duration(0.5)).transform
+            return numpy.array([t.translation.x, t.translation.y, t.translation.z])
+        self.bones = numpy.array([position(frame) for frame in frames])
+        self.root = position(ROOT_FRAME)
+        self.target = position(view.target_frame) if view.target_frame != view.fixed_frame else numpy.zeros(3)
+
+
+def clip(box, width, height):
+    left, top, right, bottom = box
+    return max(left, 0.0), max(top, 0.0), min(right, float(width)), min(bottom, float(height))
+
+
+def area(box):
+    left, top, right, bottom = box
+    return max(0.0, right - left) * max(0.0, bottom - top)
+
+
+def judge(image, view, poses):
+    """One screenshot against the poses TF gave just before and just after it was taken.
+
+    in:   the root frame projects well inside the view at both instants: the figure must be drawn
+          inside the box its frames project to (grown by the body's reach), and nowhere else;
+    out:  the grown box misses the view at both instants: nothing may be drawn;
+    edge: partly in view (or behind the camera): recorded, not judged.
+    """
+    height, width = image.shape[:2]
+    mask = figure_mask(image)
+    tight, grown, root_inside, box_touches = None, None, True, False
+    for pose in poses:
+        columns, rows, depth, scale = view.project(pose.bones, pose.target, width, height)
+        root_column, root_row, root_depth, _ = view.project(pose.root[None, :], pose.target, width, height)
+        if (depth <= view.near).any():
+            root_inside = False
+            box_touches = True  # part of it behind the camera: not judged
+            continue
+        margin = scale * BODY_MARGIN_METRES / depth.min() + 6.0
+        box = (columns.min(), rows.min(), columns.max(), rows.max())
+        big = (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
+        tight = box if tight is None else (min(tight[0], box[0]), min(tight[1], box[1]), max(tight[2], box[2]), max(tight[3], box[3]))
+        grown = big if grown is None else (min(grown[0], big[0]), min(grown[1], big[1]), max(grown[2], big[2]), max(grown[3], big[3]))
+        inset_w, inset_h = 0.03 * width, 0.03 * height
+        root_inside &= bool(root_depth[0] > view.near and inset_w < root_column[0] < width - inset_w and
+                            inset_h < root_row[0] < height - inset_h)
+        box_touches |= area(clip(big, width, height)) > 0
+    total = int(mask.sum())
+    result = {"figure_pixels": total, "view": [width, height]}
+    if grown is not None:
+        left, top, right, bottom = (int(round(v)) for v in clip(grown, width, height))
+        inside = int(mask[max(top, 0):max(bottom, 0), max(left, 0):max(right, 0)].sum())
+        result.update(inside=inside, outside=total - inside, tight_box=[round(v, 1) for v in tight],
+                      grown_box=[round(v, 1) for v in grown])
+    if root_inside and grown is not None:
+        needed = max(40, int(0.12 * area(clip(tight, width, height))))
+        result["state"] = "in"
+        result["needed"] = needed
+        result["ok"] = result["inside"] >= needed and result["outside"] <= max(150, 0.1 * result["inside"])
+    elif not box_touches:
+        result["state"] = "out"
+        result["ok"] = total <= 100
+    else:
+        result["state"] = "edge"
+        result["ok"] = True
+    return result
+
+
+class Launch:
+    """`roslaunch dressed_human <file> <args>` on the test's master; output to a log file."""
+
+    def __init__(self, launch_file, arguments, log_path):
+        self.log_path = log_path
+        self.log = open(log_path, "w")
+        self.process = subprocess.Popen(["roslaunch", "dressed_human", launch_file] + list(arguments),
+                                        stdout=self.log, stderr=subprocess.STDOUT, start_new_session=True)
+
+    def alive(self):
+        return self.process.poll() is None
+
+    def stop(self):
+        if self.alive():
+            self.process.send_signal(signal.SIGINT)
+            try:
+                self.process.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                os.killpg(self.process.pid, signal.SIGKILL)
+                self.process.wait()
+        self.log.close()
+
+    def output(self):
+        with open(self.log_path) as f:
+            return f.read()
+
+
+def wait_for_view(launch, buffer, view, frames, path, timeout=120.0):
+    """Until rviz shows its 3D view and TF has every bone frame."""
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        if not launch.alive():
+            raise RuntimeError("roslaunch exited:\n" + launch.output()[-3000:])
+        time.sleep(1.0)
+        try:
+            Pose(buffer, view, frames)
+        except tf2_ros.TransformException:
+            continue
+        if grab(path).size > 0:
+            return
+    raise RuntimeError("no rviz view with the human's TF within %.0f s:\n%s" % (timeout, launch.output()[-3000:]))
+
+
+def observe(launch, buffer, view, frames, directory, seconds=42.0, interval=2.5):
+    """A screenshot every `interval` s for `seconds`, each judged; saved with a summary.json."""
+    os.makedirs(directory, exist_ok=True)
+    results = []
+    start = time.time()
+    shot = 0
+    while shot * interval <= seconds:
+        time.sleep(max(0.0, start + shot * interval - time.time()))
+        if not launch.alive():
+            raise RuntimeError("roslaunch exited during the observation:\n" + launch.output()[-3000:])
+        path = os.path.join(directory, "shot_%02d.png" % shot)
+        poses = []
+        try:
+            poses.append(Pose(buffer, view, frames))
+        except tf2_ros.TransformException as error:
+            rospy.logwarn("shot %d: no TF before: %s", shot, error)
+        image = grab(path)
+        try:
+            poses.append(Pose(buffer, view, frames))
+        except tf2_ros.TransformException as error:
+            rospy.logwarn("shot %d: no TF after: %s", shot, error)
+        if image.size == 0:
+            result = {"state": "no view", "ok": False}
+        elif not poses:
+            result = {"state": "no TF", "ok": True}
+        else:
+            result = judge(image, view, poses)
+        result.update(shot=shot, seconds=round(time.time() - start, 1), path=path)
+        if image.size > 0:
+            Image.fromarray(image.astype(numpy.uint8)).save(path)  # the 3D view only
+        rospy.loginfo("shot %02d at %5.1f s: %s", shot, result["seconds"],
+                      {k: v for k, v in result.items() if k not in ("path", "shot", "seconds")})
+        results.append(result)
+        shot += 1
+    with open(os.path.join(directory, "summary.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    return results
+
+
+def edited_config(source, destination, display_changes=None, view_changes=None):
+    """A copy of an rviz config with some DressedHuman display properties and view fields set."""
+    with open(source) as f:
+        config = yaml.safe_load(f)
+    manager = config["Visualization Manager"]
+    for display in manager["Displays"]:
+        if display.get("Class") == "dressed_human/DressedHuman":
+            display.update(display_changes or {})
+    manager["Views"]["Current"].update(view_changes or {})
+    with open(destination, "w") as f:
+        yaml.safe_dump(config, f, default_flow_style=False)
+    return destination

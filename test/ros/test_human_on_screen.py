@@ -1,0 +1,138 @@
+#!/usr/bin/python3
+"""The human stays on screen: a shipped launch file and rviz config run for over 40 s with the
+human walking; in every screenshot (one every 2.5 s) the figure is drawn where TF says the human
+is, and nothing is drawn once it has left the view.
+
+Usage (from a .test file): test_human_on_screen.py SCENARIO, one of SCENARIOS. Screenshots and
+each one's verdict (summary.json) go to $DRESSED_HUMAN_SCREENSHOTS/SCENARIO. A longer watch, as
+a user leaving the demo running: DRESSED_HUMAN_WATCH="600 5" (seconds, interval), e.g.
+  DRESSED_HUMAN_WATCH="600 5" rostest dressed_human human_on_screen_demo.test
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+import rosbag
+import roslib.packages
+import rospy
+import rostest
+import tf2_ros
+
+from on_screen import Launch, OrbitView, bone_frames, edited_config, observe, wait_for_view
+
+PACKAGE = roslib.packages.get_pkg_dir("dressed_human")
+DEMO_CONFIG = os.path.join(PACKAGE, "rviz", "demo.rviz")
+
+# launch: the shipped launch file; display/view: properties changed in a copy of rviz/demo.rviz
+# (none: the shipped config itself); record: seconds of the live walk recorded for a replay.
+SCENARIOS = {
+    "demo": {"launch": "demo.launch"},
+    "demo_cpu_vertices": {"launch": "demo.launch", "display": {"Vertex Evaluation": "CPU"}},
+    "demo_displaced_relief": {"launch": "demo.launch", "display": {"Relief": "Displaced geometry"}},
+    # Automatic level of detail at its extremes: about 45 px tall, and filling the view.
+    "demo_far": {"launch": "demo.launch", "view": {"Distance": 40.0}},
+    "demo_close": {"launch": "demo.launch", "view": {"Distance": 1.2}},
+    # 8 s of walk, looped: time jumps back five times during the observation.
+    "replay": {"launch": "replay.launch", "record": 8},
+    # A camera fixed in the world, looking at the middle of the recorded walk: each 16 s loop the
+    # human walks into the view, across it and out of it. At a fixed level of detail: the
+    # automatic one re-lays the mesh out as the human comes closer, which hid stale bounds.
+    "replay_fixed_camera": {"launch": "replay.launch", "record": 16, "fixed_camera": True,
+                            "display": {"Level of Detail": "Fixed"}},
+}
+
+
+def scenario_name():
+    names = [a for a in sys.argv[1:] if not a.startswith("-") and not a.startswith("__")]
+    if not names or names[0] not in SCENARIOS:
+        raise SystemExit("usage: test_human_on_screen.py {%s}" % "|".join(SCENARIOS))
+    return names[0]
+
+
+def record_walk(seconds, bag, directory):
+    """The shipped skeleton launch file, recorded as a user would (README)."""
+    skeleton = Launch("skeleton.launch", [], os.path.join(directory, "record.log"))
+    try:
+        time.sleep(3.0)
+        subprocess.run(["rosbag", "record", "--duration=%d" % seconds, "-O", bag, "/tf", "/tf_static"], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=seconds + 60)
+    finally:
+        skeleton.stop()
+
+
+def walk_extent(bag):
+    """First and last position of the root frame in the bag."""
+    first = last = None
+    with rosbag.Bag(bag) as b:
+        for _, message, _ in b.read_messages(topics=["/tf"]):
+            for transform in message.transforms:
+                if transform.child_frame_id == "body":
+                    t = transform.transform.translation
+                    first = first or (t.x, t.y)
+                    last = (t.x, t.y)
+    if first is None:
+        raise RuntimeError("the recorded bag has no transform of 'body'")
+    return first, last
+
+
+class HumanOnScreenTest(unittest.TestCase):
+    def test_human_drawn_where_tf_says_in_every_screenshot(self):
+        name = scenario_name()
+        scenario = SCENARIOS[name]
+        output = os.path.join(os.environ.get("DRESSED_HUMAN_SCREENSHOTS", tempfile.mkdtemp()), name)
+        os.makedirs(output, exist_ok=True)
+        arguments = ["rviz_args:=--disable-anti-aliasing"]
+        config = DEMO_CONFIG
+        view_changes = dict(scenario.get("view", {}))
+        if "record" in scenario:
+            bag = os.path.join(output, "walk.bag")
+            record_walk(scenario["record"], bag, output)
+            arguments.append("bag:=" + bag)
+            if scenario.get("fixed_camera"):
+                (x0, y0), (x1, y1) = walk_extent(bag)
+                view_changes.update({"Target Frame": "<Fixed Frame>", "Distance": 8.0, "Yaw": math.pi / 2,
+                                     "Pitch": 0.15, "Focal Point": {"X": (x0 + x1) / 2, "Y": (y0 + y1) / 2, "Z": 0.9}})
+            subprocess.run(["rosparam", "set", "/use_sim_time", "true"], check=True)
+        if scenario.get("display") or view_changes:
+            config = edited_config(DEMO_CONFIG, os.path.join(output, "view.rviz"), scenario.get("display"), view_changes)
+            arguments.append("rviz_config:=" + config)
+        rospy.init_node("test_human_on_screen")
+        buffer = tf2_ros.Buffer(rospy.Duration(10.0))
+        tf2_ros.TransformListener(buffer)
+        view = OrbitView(config)
+
+        launch = Launch(scenario["launch"], arguments, os.path.join(output, "launch.log"))
+        try:
+            frames = bone_frames(rospy.get_param("/robot_description") if rospy.has_param("/robot_description")
+                                 else open(os.path.join(PACKAGE, "urdf", "human.urdf")).read())
+            wait_for_view(launch, buffer, view, frames, os.path.join(output, "first.png"))
+            time.sleep(6.0)  # the display's first frame and skin relief map
+            seconds, interval = (float(v) for v in os.environ.get("DRESSED_HUMAN_WATCH", "42 2.5").split())
+            results = observe(launch, buffer, view, frames, output, seconds, interval)
+            log = launch.output()
+        finally:
+            launch.stop()
+
+        counts = {state: sum(1 for r in results if r["state"] == state) for state in ("in", "out", "edge", "no TF", "no view")}
+        failed = [r for r in results if not r["ok"]]
+        rospy.loginfo("%s: %d screenshots over %.0f s: %s; %d failed (%s)", name, len(results), results[-1]["seconds"],
+                      counts, len(failed), output)
+        self.assertGreaterEqual(results[-1]["seconds"], 40.0)
+        self.assertEqual(failed, [], "%d of %d screenshots do not show the human where TF says it is (or show "
+                         "it where it is not): %s" % (len(failed), len(results), failed))
+        self.assertLessEqual(counts["no TF"], 2)
+        if scenario.get("fixed_camera"):
+            self.assertGreaterEqual(counts["in"], 3, "the human should cross the view in every loop")
+            self.assertGreaterEqual(counts["out"], 3, "the human should leave the view in every loop")
+        else:
+            self.assertGreaterEqual(counts["in"], len(results) - 2, "the camera follows the human")
+        errors = [line for line in log.splitlines() if "ERROR" in line and "dressed_human" in line.lower()]
+        self.assertEqual(errors, [])
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dressed_human", "human_on_screen_" + scenario_name(), HumanOnScreenTest)
