@@ -98,6 +98,11 @@ def main():
                 for repeat in range(args.repeats):
                     path = os.path.join(images, "%s_%gm.png" % (mode.split()[0].lower(), distance))
                     costs.append(harness(mode, distance, args.seconds, path, env)[0])
+                    # The camera follows the frozen human: a point that did not draw it, when its
+                    # measurement started or ended, measured nothing.
+                    for shot in (path[:-4] + "_start.png", path):
+                        if luminance(shot)[1].sum() < 1000:
+                            raise RuntimeError("%s at %g m: the human is not drawn in %s" % (mode, distance, shot))
                     print(mode, distance, costs[-1], file=sys.stderr)
                 results[(mode, distance)] = (statistics.median(costs), costs)
     finally:

@@ -8,7 +8,8 @@
 //   --distance <m>            orbit view distance (default 14)
 //   --focal <x;y;z>           orbit view focal point (default 4;4.5;0.9)
 //   --view <property>=<value> set a property of the orbit view (repeatable), e.g. Target Frame=body_0
-//   --screenshot <path>       save the render window after the run
+//   --screenshot <path>       save the render window when the measurement starts (<path> with
+//                             _start before its extension) and when it ends (<path>)
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -107,7 +108,7 @@ int main(int argc, char** argv) {
       property->setValue(setting.second);
     }
   }
-  // A view that keeps all humans (walking along x, 1 m apart in y) on screen.
+  // The view the caller asks for (bench/rviz_scaling.py keeps every human in it).
   rviz::ViewController* view = manager.getViewManager()->getCurrent();
   view->subProp("Distance")->setValue(distance.toDouble());
   view->subProp("Focal Point")->setValue(focal);
@@ -165,6 +166,11 @@ int main(int argc, char** argv) {
   };
   int frames = 0;
   run(5.0, frames);  // warm-up: TF arrives, relief maps generated, buffers sized
+  if (!screenshot.isEmpty()) {
+    const int dot = screenshot.lastIndexOf('.');
+    const QString start = dot < 0 ? screenshot + "_start" : screenshot.left(dot) + "_start" + screenshot.mid(dot);
+    panel.getRenderWindow()->writeContentsToFile(start.toStdString());
+  }
   const double cpu_before = processCpuSeconds();
   sampling = true;
   const double wall = run(seconds, frames);

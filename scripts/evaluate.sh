@@ -2,7 +2,8 @@
 # Regenerates every benchmark figure and chart in docs/ and docs/EVALUATION.md (issue 8):
 # builds in build/ (Release), runs the core tools and Google Benchmarks, the ROS-side benchmarks
 # (node vs robot_state_publisher, display vs RobotModel, relief modes; under Xvfb), then
-# scripts/make_evaluation.py. Raw results go to build/evaluation/. About 15 minutes on 2 cores.
+# scripts/make_evaluation.py, which also writes the README's Speed section from the same run.
+# Raw results go to build/evaluation/. About 20 minutes on 2 cores.
 #
 # Usage: scripts/evaluate.sh
 set -euo pipefail
@@ -51,8 +52,10 @@ set +u
 source build/devel/setup.bash
 set -u
 $PY bench/node_cpu.py --markdown docs/node_cpu.md
-$PY bench/rviz_scaling.py --markdown docs/rviz_scaling.md
+rm -rf docs/rviz_scaling
+$PY bench/rviz_scaling.py --markdown docs/rviz_scaling.md --csv "$RESULTS/rviz_scaling.csv" \
+  --chart docs/rviz_scaling.png --screenshots docs/rviz_scaling
 $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
 
-step "docs/EVALUATION.md"
+step "docs/EVALUATION.md and the README's Speed section"
 $PY scripts/make_evaluation.py "$RESULTS"

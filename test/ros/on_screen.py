@@ -41,25 +41,32 @@ def bone_frames(urdf_text):
 
 
 class OrbitView:
-    """rviz's Orbit view controller as an rviz config describes it."""
+    """rviz's Orbit view controller: the eye orbits the focal point (relative to the target
+    frame's position) at `distance`, `yaw` and `pitch`, z up, vertical field of view `fov`."""
 
-    def __init__(self, config_path):
+    def __init__(self, distance, yaw, pitch, focal=(0.0, 0.0, 0.0), fixed_frame="world", target_frame=None,
+                 fov=math.pi / 4, near=0.01):
+        self.fixed_frame = fixed_frame
+        self.target_frame = target_frame or fixed_frame
+        self.distance, self.yaw, self.pitch = float(distance), float(yaw), float(pitch)
+        self.focal = numpy.array(focal, dtype=float)
+        self.fov, self.near = float(fov), float(near)
+
+    @classmethod
+    def from_config(cls, config_path):
+        """The current view of an rviz config file."""
         with open(config_path) as f:
             config = yaml.safe_load(f)
         manager = config["Visualization Manager"]
         view = manager["Views"]["Current"]
         if view["Class"] != "rviz/Orbit":
             raise ValueError("%s: the view is %s, only rviz/Orbit is modelled" % (config_path, view["Class"]))
-        self.fixed_frame = manager["Global Options"]["Fixed Frame"]
+        fixed = manager["Global Options"]["Fixed Frame"]
         target = view.get("Target Frame", "<Fixed Frame>")
-        self.target_frame = self.fixed_frame if target == "<Fixed Frame>" else target
-        self.distance = float(view["Distance"])
-        self.yaw = float(view["Yaw"])
-        self.pitch = float(view["Pitch"])
         focal = view.get("Focal Point", {"X": 0, "Y": 0, "Z": 0})
-        self.focal = numpy.array([focal["X"], focal["Y"], focal["Z"]], dtype=float)
-        self.fov = float(view.get("Field of View", math.pi / 4))
-        self.near = float(view.get("Near Clip Distance", 0.01))
+        return cls(view["Distance"], view["Yaw"], view["Pitch"], (focal["X"], focal["Y"], focal["Z"]), fixed,
+                   fixed if target == "<Fixed Frame>" else target, view.get("Field of View", math.pi / 4),
+                   view.get("Near Clip Distance", 0.01))
 
     def project(self, points, target_position, width, height):
         """Pixel columns, rows and depths of fixed-frame points in a width x height view."""
@@ -78,6 +85,18 @@ class OrbitView:
         columns = width / 2.0 + scale * (relative @ right) / safe
         rows = height / 2.0 - scale * (relative @ up) / safe
         return columns, rows, depth, scale
+
+
+def figure_pixels_in_box(image, view, low, high, target=numpy.zeros(3)):
+    """Figure pixels inside the screen rectangle an axis-aligned fixed-frame box projects to."""
+    height, width = image.shape[:2]
+    corners = numpy.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])])
+    columns, rows, depth, _ = view.project(corners, target, width, height)
+    if (depth <= view.near).any():
+        return 0
+    left, top, right, bottom = (int(round(v)) for v in clip((columns.min(), rows.min(), columns.max(), rows.max()),
+                                                            width, height))
+    return int(figure_mask(image)[max(top, 0):max(bottom, 0), max(left, 0):max(right, 0)].sum())
 
 
 class Pose:

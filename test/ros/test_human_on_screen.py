@@ -103,7 +103,7 @@ class HumanOnScreenTest(unittest.TestCase):
         rospy.init_node("test_human_on_screen")
         buffer = tf2_ros.Buffer(rospy.Duration(10.0))
         tf2_ros.TransformListener(buffer)
-        view = OrbitView(config)
+        view = OrbitView.from_config(config)
 
         launch = Launch(scenario["launch"], arguments, os.path.join(output, "launch.log"))
         try:
