@@ -33,6 +33,9 @@ enum LodMode { kAutomatic = 0, kFixed = 1 };
 enum VertexSource { kGpuVertices = 0, kCpuVertices = 1 };
 constexpr int kSkinMapSize = 512;
 constexpr double kStaleSeconds = 1.0;
+// Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
+// (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
+constexpr double kMaxDrawableCoordinate = 1e5;
 constexpr double kPi = 3.14159265358979323846;
 // The Body Shape groups offered as properties (bodyShapeGroups() names), with their labels.
 const std::vector<std::pair<std::string, std::string>> kShapeGroups{
@@ -58,6 +61,11 @@ ReliefMap transposed(const ReliefMap& map) {
     }
   }
   return out;
+}
+
+bool drawable(const RigidTransform& pose) {
+  return pose.translation.allFinite() && pose.translation.cwiseAbs().maxCoeff() <= kMaxDrawableCoordinate &&
+         pose.rotation.coeffs().allFinite();
 }
 
 RigidTransform toRigid(const geometry_msgs::Transform& t) {
@@ -286,6 +294,8 @@ void DressedHumanDisplay::reset() {
   logged_errors_.clear();
   surfaces_reported_ = {kNotReported, kNotReported};
   stale_reported_ = false;
+  undrawable_frame_.clear();  // judged again, and reported again, at the next frame
+  if (visual_) visual_->setVisible(isEnabled());
   loadRobotDescription();
 }
 
@@ -588,7 +598,7 @@ void DressedHumanDisplay::update(float, float) {
 void DressedHumanDisplay::updateSurfaces() {
   pollSkinRelief();
   pollWrinkleRelief();
-  if (!model_ || !visual_ || !lookUpBones()) return;
+  if (!model_ || !visual_ || !lookUpBones() || !posesDrawable()) return;
   LevelOfDetail lod;
   lod.level = lod_level_property_->getInt();
   lod.automatic = lod_mode_property_->getOptionInt() == kAutomatic;
@@ -618,6 +628,39 @@ void DressedHumanDisplay::updateSurfaces() {
     surfaces_reported_ = {kNotReported, kNotReported};
     reportError("Surfaces", error.what());
   }
+}
+
+bool DressedHumanDisplay::posesDrawable() {
+  // A glitching publisher (a huge origin, a runaway integration) must not take rviz down: Ogre
+  // asserts on non-finite bounds. The human disappears, the frame is named, and it comes back
+  // with sane TF.
+  std::string frame;
+  const RigidTransform* pose = nullptr;
+  if (!drawable(root_)) frame = skeleton_->rootFrame(), pose = &root_;
+  for (std::size_t b = 0; pose == nullptr && b < kBoneCount; ++b) {
+    if (!drawable(bones_[b])) frame = bone_frames_[b], pose = &bones_[b];
+  }
+  if (pose == nullptr) {
+    if (!undrawable_frame_.empty()) {
+      clearError("Pose");
+      visual_->setVisible(true);
+      undrawable_frame_.clear();
+    }
+    return true;
+  }
+  if (undrawable_frame_ != frame) {
+    char position[96];
+    std::snprintf(position, sizeof(position), "(%.2g, %.2g, %.2g) m", pose->translation.x(), pose->translation.y(),
+                  pose->translation.z());
+    const bool finite = pose->translation.allFinite() && pose->rotation.coeffs().allFinite();
+    reportError("Pose", "frame '" + frame + "' in '" + fixed_frame_.toStdString() + "' is " +
+                            (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
+                                    : std::string("not finite")) +
+                            "; the human is hidden until its TF is sane again");
+    undrawable_frame_ = frame;
+  }
+  visual_->setVisible(false);  // every frame: enabling the display again must not show it
+  return false;
 }
 
 void DressedHumanDisplay::drawSkeleton() {

@@ -59,6 +59,8 @@ class DressedHumanDisplay : public rviz::Display {
   bool lookUpBones();
   // Every bone at `stamp`; false at the first failure, or (report) after reporting each one.
   bool lookUpBonesAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report);
+  // Whether every bone pose TF gave can be drawn; if not, hides the human and names the frame.
+  bool posesDrawable();
   void updateSurfaces();
   void reportError(const std::string& name, const std::string& text, bool transient = false);
   void clearError(const std::string& name);
@@ -107,6 +109,7 @@ class DressedHumanDisplay : public rviz::Display {
   std::vector<std::string> bone_status_names_;
   std::string root_status_name_;
   bool stale_reported_ = false;
+  std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
   // (parts, triangles) the "Surfaces" status says: the text is rebuilt only when they change.
   static constexpr std::size_t kNotReported = static_cast<std::size_t>(-1);
   std::array<std::size_t, 2> surfaces_reported_{kNotReported, kNotReported};
