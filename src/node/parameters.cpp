@@ -1,6 +1,7 @@
 #include "parameters.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include <xmlrpcpp/XmlRpcValue.h>
 
@@ -34,6 +35,18 @@ double Parameters::number(const std::string& name, double fallback) const {
   }
   if (!std::isfinite(result)) throw ParameterError("parameter " + fullName(name) + " must be finite");
   return result;
+}
+
+double Parameters::numberIn(const std::string& name, double fallback, double low, double high,
+                            const std::string& unit) const {
+  const double value = number(name, fallback);
+  if (value < low || value > high) {
+    char text[160];
+    std::snprintf(text, sizeof(text), " must be in [%g, %g]%s%s, got %g", low, high, unit.empty() ? "" : " ",
+                  unit.c_str(), value);
+    throw ParameterError("parameter " + fullName(name) + text);
+  }
+  return value;
 }
 
 bool Parameters::boolean(const std::string& name, bool fallback) const {

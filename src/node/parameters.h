@@ -17,6 +17,8 @@ class Parameters {
   explicit Parameters(const ros::NodeHandle& node) : node_(node) {}
 
   double number(const std::string& name, double fallback) const;
+  // The number, which must lie in [low, high] (`unit` names them in the message).
+  double numberIn(const std::string& name, double fallback, double low, double high, const std::string& unit) const;
   bool boolean(const std::string& name, bool fallback) const;
   std::string text(const std::string& name, const std::string& fallback) const;
   std::string requiredText(const std::string& name) const;

@@ -13,6 +13,8 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kMaxRate = 10000.0;
+constexpr double kMaxSpeedFactor = 10.0;
+constexpr double kMaxOriginMetres = 1e5;  // the DressedHuman display's drawable range
 
 void copy(const RigidTransform& from, geometry_msgs::Transform& to) {
   to.translation.x = from.translation.x();
@@ -48,12 +50,10 @@ SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::N
     throw ParameterError("parameter " + parameters.fullName("rate") + " must be in (0, " +
                          std::to_string(static_cast<int>(kMaxRate)) + "] Hz, got " + std::to_string(s.rate));
   }
-  s.speed_factor = parameters.number("speed_factor", s.speed_factor);
-  if (s.speed_factor < 0.0) {
-    throw ParameterError("parameter " + parameters.fullName("speed_factor") + " must be >= 0, got " +
-                         std::to_string(s.speed_factor));
-  }
-  s.start_phase = parameters.number("start_phase", s.start_phase);
+  // Physical ranges: a replay from frozen to ten times as fast; positions a map holds (and that
+  // rviz can draw a human at, in float); a heading and phase in radians, not degrees.
+  s.speed_factor = parameters.numberIn("speed_factor", s.speed_factor, 0.0, kMaxSpeedFactor, "(times the motion's speed)");
+  s.start_phase = parameters.numberIn("start_phase", s.start_phase, -kTwoPi, kTwoPi, "rad");
   s.loop = parameters.boolean("loop", s.loop);
   s.body_id = parameters.text("body_id", s.body_id);
   for (unsigned char c : s.body_id) {
@@ -64,9 +64,9 @@ SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::N
   }
   s.world_frame = parameters.text("world_frame", s.world_frame);
   if (s.world_frame.empty()) throw ParameterError("parameter " + parameters.fullName("world_frame") + " is empty");
-  s.origin_x = parameters.number("origin_x", s.origin_x);
-  s.origin_y = parameters.number("origin_y", s.origin_y);
-  s.origin_yaw = parameters.number("origin_yaw", s.origin_yaw);
+  s.origin_x = parameters.numberIn("origin_x", s.origin_x, -kMaxOriginMetres, kMaxOriginMetres, "m");
+  s.origin_y = parameters.numberIn("origin_y", s.origin_y, -kMaxOriginMetres, kMaxOriginMetres, "m");
+  s.origin_yaw = parameters.numberIn("origin_yaw", s.origin_yaw, -kTwoPi, kTwoPi, "rad");
   s.publish_joint_states = parameters.boolean("publish_joint_states", s.publish_joint_states);
   return s;
 }

@@ -37,7 +37,17 @@ class BadParametersTest(unittest.TestCase):
         self.assertRejected("parameter /{node}/rate must be a number, got a string", "_rate:=fast")
 
     def test_speed_factor_negative(self):
-        self.assertRejected("parameter /{node}/speed_factor must be >= 0", "_speed_factor:=-1")
+        self.assertRejected("parameter /{node}/speed_factor must be in [0, 10]", "_speed_factor:=-1")
+
+    def test_speed_factor_absurd(self):
+        self.assertRejected("parameter /{node}/speed_factor must be in [0, 10] (times the motion's speed), got 1e+12",
+                            "_speed_factor:=1e12")
+
+    def test_origin_beyond_a_map(self):
+        self.assertRejected("parameter /{node}/origin_x must be in [-100000, 100000] m, got 1e+308", "_origin_x:=1e308")
+
+    def test_yaw_in_degrees(self):
+        self.assertRejected("parameter /{node}/origin_yaw must be in [-6.28319, 6.28319] rad, got 90", "_origin_yaw:=90")
 
     def test_loop_wrong_type(self):
         self.assertRejected("parameter /{node}/loop must be true or false, got a string", "_loop:=maybe")
