@@ -1,9 +1,9 @@
 // Bicubic patch evaluation and tessellation throughput.
 //   vertices/s of grid evaluation (target >= 20 M/s per core at the default density),
 //   time to re-tessellate 100 patches per frame (layout reused) and to build a layout.
-#include "dressed_human/core/bezier_patch.h"
-#include "dressed_human/core/generalized_cylinder.h"
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/surfaces/bezier_patch.h"
+#include "dressed_human/core/surfaces/generalized_cylinder.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 
 #include <benchmark/benchmark.h>
 

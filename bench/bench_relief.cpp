@@ -12,14 +12,14 @@
 //    fits are cached across maps (wrinkle_map.cpp), so after the first iteration this measures a
 //    pose whose alphas were seen before; WrinkleMapNewAlphas clears nothing but uses alphas never
 //    seen, i.e. pays the 5 fits every iteration.
-#include "dressed_human/core/skin_relief.h"
-#include "dressed_human/core/wrinkle_map.h"
-#include "dressed_human/core/body_description.h"
-#include "dressed_human/core/garment_file.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/tessellation.h"
-#include "dressed_human/core/wrinkle_placement.h"
+#include "dressed_human/core/relief/skin_relief.h"
+#include "dressed_human/core/relief/wrinkle_map.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/surfaces/tessellation.h"
+#include "dressed_human/core/relief/wrinkle_placement.h"
 
 #include <memory>
 #include <string>

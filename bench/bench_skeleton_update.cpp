@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/motion_evaluator.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
 
 namespace dressed_human {
 namespace {

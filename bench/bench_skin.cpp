@@ -1,8 +1,8 @@
 // The whole skin per frame: pose (bone frames -> world control points) and tessellate, at the
 // default level and others; vertices/s of the whole frame. Poses cycle through the walk.
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/skin.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/surfaces/skin.h"
 
 #include <benchmark/benchmark.h>
 

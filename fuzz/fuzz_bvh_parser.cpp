@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "dressed_human/core/bvh_file.h"
+#include "dressed_human/core/motion/bvh_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

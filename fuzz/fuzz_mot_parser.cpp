@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "dressed_human/core/opensim_motion_file.h"
+#include "dressed_human/core/motion/opensim_motion_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -16,8 +16,8 @@ flags="-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recov
 build_target() {  # name, parser source
   "$cxx" $flags "$here/fuzz/$1.cpp" "$here/src/core/$2" -o "$build/bin/$1"
 }
-build_target fuzz_bvh_parser bvh_file.cpp
-build_target fuzz_mot_parser opensim_motion_file.cpp
+build_target fuzz_bvh_parser motion/bvh_file.cpp
+build_target fuzz_mot_parser motion/opensim_motion_file.cpp
 
 run_target() {  # name, seed glob extension
   corpus="$build/$1/corpus"

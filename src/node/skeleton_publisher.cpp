@@ -5,7 +5,7 @@
 
 #include <ros/package.h>
 
-#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/motion/motion_file.h"
 #include "parameters.h"
 
 namespace dressed_human {

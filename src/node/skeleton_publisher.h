@@ -11,8 +11,8 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/motion_evaluator.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
 
 namespace dressed_human {
 

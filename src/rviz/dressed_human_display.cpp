@@ -22,7 +22,7 @@
 #include <rviz/view_manager.h>
 #include <tf2_ros/buffer.h>
 
-#include "dressed_human/core/wrinkle_map.h"
+#include "dressed_human/core/relief/wrinkle_map.h"
 #include "human_visual.h"
 
 namespace dressed_human {

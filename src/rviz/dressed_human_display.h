@@ -13,9 +13,9 @@
 #include <rviz/display.h>
 #include <tf2_ros/buffer.h>
 
-#include "dressed_human/core/human_model.h"
-#include "dressed_human/core/relief_map.h"
-#include "dressed_human/core/skin_relief.h"
+#include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/relief/relief_map.h"
+#include "dressed_human/core/relief/skin_relief.h"
 
 namespace rviz {
 class BoolProperty;

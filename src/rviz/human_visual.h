@@ -11,7 +11,7 @@
 
 #include <rviz/ogre_helpers/billboard_line.h>
 
-#include "dressed_human/core/human_model.h"
+#include "dressed_human/core/model/human_model.h"
 #include "relief_material.h"
 #include "surface_mesh_object.h"
 

@@ -13,8 +13,8 @@
 
 #include <Eigen/Geometry>
 
-#include "dressed_human/core/bezier_patch.h"
-#include "dressed_human/core/wrinkle_placement.h"
+#include "dressed_human/core/surfaces/bezier_patch.h"
+#include "dressed_human/core/relief/wrinkle_placement.h"
 
 namespace dressed_human {
 

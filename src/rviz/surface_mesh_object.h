@@ -14,7 +14,7 @@
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
 
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 
 namespace dressed_human {
 

@@ -4,12 +4,12 @@
 // scripts/make_relief_figures.py runs this and assembles the panels into docs/relief/.
 //
 // Usage: relief_images <output_directory>
-#include "dressed_human/core/buckling_chain.h"
-#include "dressed_human/core/gaussian_fold_fit.h"
-#include "dressed_human/core/lambert_shading.h"
-#include "dressed_human/core/png_writer.h"
-#include "dressed_human/core/skin_relief.h"
-#include "dressed_human/core/wrinkle_map.h"
+#include "dressed_human/core/relief/buckling_chain.h"
+#include "dressed_human/core/relief/gaussian_fold_fit.h"
+#include "dressed_human/core/relief/lambert_shading.h"
+#include "dressed_human/core/io/png_writer.h"
+#include "dressed_human/core/relief/skin_relief.h"
+#include "dressed_human/core/relief/wrinkle_map.h"
 
 #include <cmath>
 #include <exception>

@@ -7,15 +7,15 @@
 //
 // The body is the real skin (skin.h: config/bodies/default.yaml on urdf/human.urdf), posed by
 // Skin::pose and tessellated like src/tools/render_skin.cpp; --no-body leaves it out.
-#include "dressed_human/core/body_description.h"
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/garment.h"
-#include "dressed_human/core/garment_file.h"
-#include "dressed_human/core/mesh_rasterizer.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/skin.h"
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/garments/garment.h"
+#include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/render/mesh_rasterizer.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/surfaces/skin.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 
 #include <cmath>
 #include <cstdio>

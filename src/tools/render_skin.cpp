@@ -2,10 +2,10 @@
 // the walk (config/motions/walk.yaml), side by side, seen from the body's right, to a PNG.
 //
 //   render_skin [--root DIR] [--level N] [--size WxH] --out docs/skin_walk.png
-#include "dressed_human/core/mesh_rasterizer.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/skin.h"
+#include "dressed_human/core/render/mesh_rasterizer.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/surfaces/skin.h"
 
 #include <cstdio>
 #include <iostream>

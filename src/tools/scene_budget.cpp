@@ -12,9 +12,9 @@
 // kRenderer: the update then poses control points and lays out the mesh only).
 //
 //   scene_budget [package directory, default .] [--poses N]
-#include "dressed_human/core/human_model.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
 
 #include <algorithm>
 #include <chrono>

@@ -11,17 +11,17 @@
 //   period.csv            autocorrelation of periodic and non-periodic input, with the verdict
 //   corner_normals.csv    angle between n(t, t) and the degenerate corner's normal vs t
 //   relief_<case>.csv     height maps of the Voronoi relief with degenerate seed sets
-#include "dressed_human/core/body_description.h"
-#include "dressed_human/core/bezier_patch.h"
-#include "dressed_human/core/buckling_solution.h"
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/gait_period.h"
-#include "dressed_human/core/garment.h"
-#include "dressed_human/core/garment_file.h"
-#include "dressed_human/core/mocap_retarget.h"
-#include "dressed_human/core/motion.h"
-#include "dressed_human/core/skin_relief.h"
-#include "dressed_human/core/skirt_length_map.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/surfaces/bezier_patch.h"
+#include "dressed_human/core/relief/buckling_solution.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/motion/gait_period.h"
+#include "dressed_human/core/garments/garment.h"
+#include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/motion/motion.h"
+#include "dressed_human/core/relief/skin_relief.h"
+#include "dressed_human/core/garments/skirt_length_map.h"
 
 #include <cmath>
 #include <cstdio>

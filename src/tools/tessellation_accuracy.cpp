@@ -12,11 +12,11 @@
 // Error: for sample points of every triangle, the distance to the closest point of the
 // triangle's patch (Gauss-Newton from the parametric guess). Also printed: the parametric error
 // |F(x) - L(x)|, the upper bound that the adaptive criterion controls.
-#include "dressed_human/core/generalized_cylinder.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/skin.h"
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/surfaces/generalized_cylinder.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/surfaces/skin.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 
 #include <Eigen/Dense>
 

@@ -5,13 +5,13 @@
 // docs/relief/wrinkle_placement_walk.png from this.
 //
 // Usage: wrinkle_placement_walk <source_directory> <output_directory> [poses (default 60)]
-#include "dressed_human/core/body_description.h"
-#include "dressed_human/core/garment_file.h"
-#include "dressed_human/core/lambert_shading.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
-#include "dressed_human/core/png_writer.h"
-#include "dressed_human/core/wrinkle_placement.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/relief/lambert_shading.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/io/png_writer.h"
+#include "dressed_human/core/relief/wrinkle_placement.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
 // Shared set-up of the garment tests: skeleton, default body, walk, outfits.
 #pragma once
 
-#include "dressed_human/core/body_description.h"
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/garment.h"
-#include "dressed_human/core/garment_file.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/garments/garment.h"
+#include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "dressed_human/core/bezier_patch.h"
+#include "dressed_human/core/surfaces/bezier_patch.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "dressed_human/core/buckling_chain.h"
+#include "dressed_human/core/relief/buckling_chain.h"
 
 #include <gtest/gtest.h>
 

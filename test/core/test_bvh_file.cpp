@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "dressed_human/core/bvh_file.h"
+#include "dressed_human/core/motion/bvh_file.h"
 
 namespace dressed_human {
 namespace {

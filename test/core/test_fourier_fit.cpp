@@ -7,8 +7,8 @@
 #include <random>
 #include <string>
 
-#include "dressed_human/core/fourier_fit.h"
-#include "dressed_human/core/gait_period.h"
+#include "dressed_human/core/motion/fourier_fit.h"
+#include "dressed_human/core/motion/gait_period.h"
 
 namespace dressed_human {
 namespace {

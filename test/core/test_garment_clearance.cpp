@@ -9,7 +9,7 @@
 // sleeves against the arms, and the hips / skirt / legs pieces against the trunk and legs.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/skin_clearance.h"
+#include "dressed_human/core/surfaces/skin_clearance.h"
 #include "garment_test_support.h"
 
 #include <iostream>

@@ -3,7 +3,7 @@
 // classification of control points.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/patch_continuity.h"
+#include "dressed_human/core/surfaces/patch_continuity.h"
 #include "garment_test_support.h"
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // shape changes carry through.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/skirt_length_map.h"
+#include "dressed_human/core/garments/skirt_length_map.h"
 #include "garment_test_support.h"
 
 #include <cmath>

@@ -3,7 +3,7 @@
 // a tube with 2), a skirt is one tube (2 loops); the link structure of every outfit.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/mesh_boundary.h"
+#include "dressed_human/core/surfaces/mesh_boundary.h"
 #include "garment_test_support.h"
 
 #include <map>

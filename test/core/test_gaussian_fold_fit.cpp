@@ -1,4 +1,4 @@
-#include "dressed_human/core/gaussian_fold_fit.h"
+#include "dressed_human/core/relief/gaussian_fold_fit.h"
 
 #include <gtest/gtest.h>
 

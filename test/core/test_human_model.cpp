@@ -1,7 +1,7 @@
 // HumanModel (human_model.h): outfits become the expected surface parts, the level of detail is
 // validated, and the displaced-geometry relief mode moves each part by no more than its map
 // allows while leaving bump-mapped parts untouched.
-#include "dressed_human/core/human_model.h"
+#include "dressed_human/core/model/human_model.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Displaced geometry (mesh_displacement.h): positions move along the normal by the scaled
 // relief height, normals tilt by the relief slope; checked against the analytic displaced
 // surface of a flat patch and against the displaced mesh's own finite differences.
-#include "dressed_human/core/mesh_displacement.h"
+#include "dressed_human/core/relief/mesh_displacement.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // MeshRasterizer: coverage, depth order, shading, PNG output.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/mesh_rasterizer.h"
+#include "dressed_human/core/render/mesh_rasterizer.h"
 
 #include <cstdio>
 #include <fstream>

@@ -9,11 +9,11 @@
 #include <sstream>
 #include <string>
 
-#include "dressed_human/core/bvh_file.h"
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/mocap_joint_map.h"
-#include "dressed_human/core/mocap_retarget.h"
-#include "dressed_human/core/motion.h"
+#include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/motion/mocap_joint_map.h"
+#include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/motion/motion.h"
 
 namespace dressed_human {
 namespace {

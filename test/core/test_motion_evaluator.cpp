@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
 
 namespace dressed_human {
 namespace {

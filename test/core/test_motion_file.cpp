@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/motion/motion_file.h"
 
 namespace dressed_human {
 namespace {

@@ -8,13 +8,13 @@
 
 #include <Eigen/Cholesky>
 
-#include "dressed_human/core/bvh_file.h"
-#include "dressed_human/core/fit_accuracy.h"
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/mocap_retarget.h"
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_fit.h"
-#include "dressed_human/core/opensim_motion_file.h"
+#include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/motion/fit_accuracy.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_fit.h"
+#include "dressed_human/core/motion/opensim_motion_file.h"
 
 namespace dressed_human {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "dressed_human/core/opensim_motion_file.h"
+#include "dressed_human/core/motion/opensim_motion_file.h"
 
 namespace dressed_human {
 namespace {

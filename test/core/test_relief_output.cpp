@@ -1,6 +1,6 @@
-#include "dressed_human/core/lambert_shading.h"
-#include "dressed_human/core/png_writer.h"
-#include "dressed_human/core/relief_map.h"
+#include "dressed_human/core/relief/lambert_shading.h"
+#include "dressed_human/core/io/png_writer.h"
+#include "dressed_human/core/relief/relief_map.h"
 
 #include <gtest/gtest.h>
 

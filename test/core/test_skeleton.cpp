@@ -6,7 +6,7 @@
 #include <regex>
 #include <sstream>
 
-#include "dressed_human/core/forward_kinematics.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
 
 namespace dressed_human {
 namespace {

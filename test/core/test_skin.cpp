@@ -1,9 +1,9 @@
 // The skin model (issue 4): C0 at joints over the walk, watertight closed meshes at uniform and
 // mixed adaptive levels, Eq. 5 scaling consistent with ForwardKinematics, allocation-free posing.
-#include "dressed_human/core/skin.h"
+#include "dressed_human/core/surfaces/skin.h"
 
-#include "dressed_human/core/motion_evaluator.h"
-#include "dressed_human/core/motion_file.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Body description YAML (config/bodies/*.yaml): the default loads; bad files fail with errors
 // that name file:line:col and the key path.
-#include "dressed_human/core/body_description.h"
+#include "dressed_human/core/skeleton/body_description.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "dressed_human/core/skin_relief.h"
+#include "dressed_human/core/relief/skin_relief.h"
 
 #include <boost/polygon/voronoi.hpp>
 #include <gtest/gtest.h>

@@ -6,9 +6,9 @@
 // forward-differencing drift).
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/bezier_patch.h"
-#include "dressed_human/core/skin.h"
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/surfaces/bezier_patch.h"
+#include "dressed_human/core/surfaces/skin.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 #include "garment_test_support.h"
 
 #include <cmath>

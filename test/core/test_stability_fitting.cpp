@@ -3,13 +3,13 @@
 // fits fed non-periodic or constant input.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/bvh_file.h"
-#include "dressed_human/core/fourier_fit.h"
-#include "dressed_human/core/gait_period.h"
-#include "dressed_human/core/mocap_joint_map.h"
-#include "dressed_human/core/mocap_retarget.h"
-#include "dressed_human/core/motion.h"
-#include "dressed_human/core/motion_fit.h"
+#include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/motion/fourier_fit.h"
+#include "dressed_human/core/motion/gait_period.h"
+#include "dressed_human/core/motion/mocap_joint_map.h"
+#include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/motion/motion.h"
+#include "dressed_human/core/motion/motion_fit.h"
 
 #include <cmath>
 #include <random>

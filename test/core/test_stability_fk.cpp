@@ -3,10 +3,10 @@
 // at large multiples of 2 pi, and bones made very short or very long by the body shape.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/body_description.h"
-#include "dressed_human/core/forward_kinematics.h"
-#include "dressed_human/core/skin.h"
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/surfaces/skin.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 
 #include <cmath>
 #include <fstream>

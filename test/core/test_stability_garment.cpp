@@ -4,8 +4,8 @@
 // lengths -- finite patches and meshes, a hem that only goes down as c grows, no jump at c_k.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/skirt_length_map.h"
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/garments/skirt_length_map.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 #include "garment_test_support.h"
 
 #include <cmath>

@@ -5,10 +5,10 @@
 // stretched to two rows; a tile holding a single column). Public API only.
 #include <gtest/gtest.h>
 
-#include "dressed_human/core/buckling_chain.h"
-#include "dressed_human/core/buckling_pattern.h"
-#include "dressed_human/core/buckling_solution.h"
-#include "dressed_human/core/skin_relief.h"
+#include "dressed_human/core/relief/buckling_chain.h"
+#include "dressed_human/core/relief/buckling_pattern.h"
+#include "dressed_human/core/relief/buckling_solution.h"
+#include "dressed_human/core/relief/skin_relief.h"
 
 #include <cmath>
 #include <string>

@@ -1,6 +1,6 @@
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 
-#include "dressed_human/core/generalized_cylinder.h"
+#include "dressed_human/core/surfaces/generalized_cylinder.h"
 
 #include <gtest/gtest.h>
 

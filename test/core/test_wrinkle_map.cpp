@@ -1,4 +1,4 @@
-#include "dressed_human/core/wrinkle_map.h"
+#include "dressed_human/core/relief/wrinkle_map.h"
 
 #include <gtest/gtest.h>
 

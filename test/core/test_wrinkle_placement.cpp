@@ -1,8 +1,8 @@
 // Wrinkle placement (issue 6): compression measured on the posed garment against its rest pose,
 // alpha -> pattern and amplitude, the per-pose wrinkle map and the per-vertex API.
-#include "dressed_human/core/wrinkle_placement.h"
+#include "dressed_human/core/relief/wrinkle_placement.h"
 
-#include "dressed_human/core/tessellation.h"
+#include "dressed_human/core/surfaces/tessellation.h"
 #include "garment_test_support.h"
 
 #include <gtest/gtest.h>

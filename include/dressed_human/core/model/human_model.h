@@ -1,0 +1,145 @@
+#pragma once
+// Everything a renderer needs of one dressed human, in one place: from the bone frames (as TF
+// delivers them) to posed, tessellated surface parts with their colour and relief kind. The rviz
+// display is a thin adapter around this class; tools and benchmarks use it the same way.
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/garments/garment.h"
+#include "dressed_human/core/relief/mesh_displacement.h"
+#include "dressed_human/core/surfaces/skin.h"
+#include "dressed_human/core/surfaces/tessellation.h"
+#include "dressed_human/core/relief/wrinkle_placement.h"
+
+namespace dressed_human {
+
+enum class ReliefKind { kSkin, kCloth };
+
+struct SurfacePart {
+  std::string name;
+  ReliefKind relief;
+  Eigen::Vector4f colour;     // RGBA, 0..1
+  const TriangleMesh* mesh;   // owned by the HumanModel, valid until its next update()
+  // Per vertex of `mesh`, how much of the relief shows there, in [0, 1]; null: all of it. For
+  // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
+  // wrinkles behind a bent knee, none on a straight leg.
+  const std::vector<float>* relief_weight = nullptr;
+  // false: `mesh` is only the layout (uv, vertex_patch, indices; positions, normals, tangents
+  // unspecified) and relief_weight is null. The renderer evaluates `patches` at (vertex_patch, uv)
+  // itself and, for garments, the wrinkle strength from `inverse_rest_metric` and
+  // `wrinkle_constants` (VertexCompression's formula). See VertexEvaluation.
+  bool evaluated = true;
+  const std::vector<BezierPatch>* patches = nullptr;  // posed, in the world frame of update()
+  std::uint64_t layout_id = 0;                        // Tessellator::layoutId() of `mesh`
+  const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex
+  WrinkleStrengthConstants wrinkle_constants;
+  // Encloses the posed part in the world frame of update(), whoever evaluates its vertices: the
+  // box of the posed control points (a Bezier patch lies in their convex hull), or of the
+  // displaced vertices when the relief moves them. A renderer culls by it, so it must follow the
+  // human every frame: the layout alone says nothing about where the surface is.
+  Eigen::AlignedBox3f bounds;
+};
+
+// Who evaluates the surface at the mesh vertices. kRenderer leaves it to the renderer (a vertex
+// shader evaluating the Bezier patches from their control points): update() then only poses the
+// control points and re-lays out the mesh when the levels change, which is what makes a frame
+// cheap. Parts with displaced relief are always evaluated here (the displacement needs vertices).
+enum class VertexEvaluation { kCpu, kRenderer };
+
+struct LevelOfDetail {
+  bool automatic = false;      // true: from the camera's screen-space error; false: `level`
+  int level = Skin::kDefaultLevel;
+  int max_level = 16;
+  double max_error_pixels = 1.0;
+  CameraView camera{Eigen::Vector3d::Zero(), 0.8, 1000.0};
+};
+
+// The seed paper's three outfits (SPEC §3), or the bare skin.
+enum class Outfit { kNone, kOnePiece, kJacketSkirt, kJacketPants };
+// "none", "one_piece", "jacket_skirt", "jacket_pants"; throws std::invalid_argument otherwise.
+Outfit outfitFromName(const std::string& name);
+// The garment files (config/garments/<name>.yaml) an outfit is made of, outermost last.
+std::vector<std::string> garmentFileNames(Outfit outfit);
+
+struct HumanModelSettings {
+  Eigen::Vector4f skin_colour{0.87f, 0.72f, 0.62f, 1.0f};
+  Outfit outfit = Outfit::kJacketSkirt;
+  std::string garment_directory;   // holds the outfit's garment YAML files
+  double skirt_length = -1.0;      // normalized c in [0, 1] (Eq. 8'); < 0: as the skirt file says
+  // Per garment file name ("jacket", "skirt", ...): RGBA replacing the file's colour.
+  std::map<std::string, Eigen::Vector4f> garment_colours;
+};
+
+class HumanModel {
+ public:
+  HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings);
+
+  // Loads the outfit's garments; throws (GarmentError, BodyDescriptionError, SkinError) naming
+  // the file and what is wrong.
+  // `root` is the skeleton's root frame ("body"), `bones` every bone frame, all in one world
+  // frame. Allocation-free while the level of detail stays the same.
+  void update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
+              const LevelOfDetail& lod);
+
+  // Relief as displaced geometry (mesh_displacement.h) for every part of `kind`, from the next
+  // update() on; a null map turns it off (bump mapping is then the renderer's business). The
+  // model keeps the map alive. Throws std::invalid_argument naming a bad setting.
+  void setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling, float height_to_tile,
+                       float amplitude);
+
+  // From the next update() on; kCpu by default.
+  void setVertexEvaluation(VertexEvaluation evaluation) { vertex_evaluation_ = evaluation; }
+  VertexEvaluation vertexEvaluation() const { return vertex_evaluation_; }
+
+  const std::vector<SurfacePart>& parts() const { return parts_; }
+  std::size_t triangleCount() const;
+  // Part `part`'s posed Bezier patches and the tessellation level each got in the last update()
+  // (for error budgets: geometricErrorBound(patch, level)).
+  const std::vector<BezierPatch>& partPatches(std::size_t part) const;
+  const std::vector<int>& partLevels(std::size_t part) const;
+  const Skin& skin() const { return skin_; }
+
+ private:
+  const std::vector<int>& levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
+                                    const LevelOfDetail& lod);
+  Tessellator& tessellatorOf(std::size_t part);
+  const PatchTopology& topologyOf(std::size_t part) const;
+
+  HumanModelSettings settings_;
+  Skin skin_;
+  SkeletonPose pose_;
+  Tessellator skin_tessellator_;
+  std::vector<Garment> garments_;
+  std::vector<std::unique_ptr<Tessellator>> garment_tessellators_;
+  std::vector<SurfacePart> parts_;
+  struct AutomaticLevels {
+    std::vector<int> levels;        // per patch, the level in use
+    std::vector<int> frames_below;  // per patch, updates in a row a lower level would have done
+  };
+  std::map<const Tessellator*, AutomaticLevels> automatic_levels_;
+  std::vector<int> uniform_levels_;
+  std::vector<int> wanted_levels_;  // scratch: what the screen error asks for, per patch
+  VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
+  struct Displacement {
+    std::shared_ptr<const ReliefMap> map;
+    ReliefDisplacement settings;
+  };
+  std::array<Displacement, 2> displacements_;  // by ReliefKind
+  std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced
+  // Per garment: its rest-pose patches, the per-vertex compression measure, the weights.
+  std::vector<std::vector<BezierPatch>> rest_patches_;
+  std::vector<VertexCompression> compressions_;
+  std::vector<std::uint64_t> compressed_layouts_;  // Tessellator::layoutId() each was prepared for
+  std::vector<std::vector<float>> wrinkle_weights_;  // per surface, last levels used
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,42 @@
+#pragma once
+// How far the Fourier-driven skeleton strays from the capture, in centimetres of joint position:
+// the error users see, where degrees are abstract.
+//
+// Positions are taken relative to the root (pelvis) position, in the walk frame, frame by frame
+// over the fit window; the root's own translation error is reported separately. For each driven
+// joint, the position of our bone's proximal joint is compared with
+//  - the capture skeleton's own forward kinematics scaled to our stature ("against the capture":
+//    includes the difference of bone proportions between the two skeletons), and
+//  - our skeleton driven by the unsmoothed retargeted angles ("against the samples": the error
+//    that the truncated series alone adds).
+
+#include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/motion/motion.h"
+#include "dressed_human/core/motion/motion_fit.h"
+#include "dressed_human/core/skeleton/skeleton.h"
+
+namespace dressed_human {
+
+struct PositionError {
+  double mean_cm = 0.0;  // over joints and frames
+  double rms_cm = 0.0;
+  double max_cm = 0.0;
+  std::size_t samples = 0;
+};
+
+struct FitAccuracy {
+  PositionError against_capture;     // empty (samples = 0) without a capture skeleton
+  // Our skeleton on the unsmoothed retargeted angles vs the capture: the floor that the two
+  // skeletons' different bone proportions set, whatever the order.
+  PositionError unsmoothed_against_capture;
+  PositionError against_samples;
+  PositionError root_translation;    // fitted root vs sampled root, walk frame
+  double mean_rms_degrees = 0.0;     // over driven angle series
+  double max_rms_degrees = 0.0;
+};
+
+// `motion` is evaluated at the window's times (it may be a refit of `fit` with another order).
+FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sampled, const MotionFit& fit,
+                               const Motion& motion);
+
+}  // namespace dressed_human

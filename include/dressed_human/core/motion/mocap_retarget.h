@@ -1,0 +1,62 @@
+#pragma once
+// Retargeting motion capture onto our skeleton: per frame, the 48 joint angles (y, x, z chain
+// order of every joint) and the root pose that make our bones take the orientations of the
+// corresponding source segments.
+//
+// Rotations are composed, never copied as Euler numbers: a BVH joint's channels are multiplied in
+// the file's rotation order and accumulated down the source tree into world orientations; the
+// source axes are changed to ours (BVH Y-up -> our Z-up, facing from the rest pose); a constant
+// per-bone offset absorbs the difference of rest poses (a T-pose arm vs our hanging arm: the
+// smallest rotation taking our bone's rest direction onto the source's rest direction); then the
+// local rotation relative to our parent bone is split into our R_rest * Ry * Rx * Rz.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/motion/mocap_joint_map.h"
+#include "dressed_human/core/motion/opensim_motion_file.h"
+#include "dressed_human/core/skeleton/skeleton.h"
+
+namespace dressed_human {
+
+using JointPositions = std::array<Eigen::Vector3d, kJointCount>;
+
+struct SampledMotion {
+  std::string source;
+  std::vector<double> times;                 // seconds from the first frame, uniform steps
+  std::vector<JointAngles> angles;           // radians in (-pi, pi]: unwrapping is the fitter's job
+  std::vector<RigidTransform> root;          // our body frame in the capture's world, our axes (z up), metres
+  std::array<bool, kJointCount> driven{};    // false: the source does not move this joint (held at rest)
+  // The source skeleton's own forward kinematics, for the accuracy metric: the proximal joint of
+  // every driven bone relative to the source root, our axes, scaled to our stature. Empty when the
+  // source has no skeleton (joint coordinates).
+  std::vector<JointPositions> reference_joint_positions;
+  double root_scale = 1.0;       // metres per source unit for the root translation (leg length ratio)
+  double reference_scale = 1.0;  // metres per source unit for the reference positions (stature ratio)
+
+  double frameTime() const { return times.size() > 1 ? times[1] - times[0] : 0.0; }
+};
+
+// R = Ry(y) Rx(x) Rz(z) -> (y, x, z), each in (-pi, pi], x in [-pi/2, pi/2]. At gimbal lock
+// (cos x < 1e-8) z = 0 and y takes y - z (x = +90 degrees) or y + z (x = -90); the angles rebuild
+// R to ~3e-8 everywhere, but y and z jump where a motion passes through x = +-90 degrees.
+Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& rotation);
+// R = Rz(yaw) Ry(pitch) Rx(roll) -> (roll, pitch, yaw); at pitch +-90 degrees roll = 0.
+Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& rotation);
+
+// The standing height of our skeleton at rest (lowest to highest bone end), metres.
+double skeletonStature(const Skeleton& skeleton);
+
+// Throws JointMapError for a map that does not fit the clip and MotionError for a rest pose that
+// gives no left-right direction.
+SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
+                          const std::string& source_name);
+SampledMotion retargetCoordinates(const OpenSimTable& table, const CoordinateJointMap& map, const Skeleton& skeleton,
+                                  const std::string& source_name);
+
+}  // namespace dressed_human

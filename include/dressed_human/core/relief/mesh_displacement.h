@@ -1,0 +1,44 @@
+// Displaced geometry: the relief map's heights moved into the mesh itself, the reference that
+// bump mapping approximates (issue 7's "displaced geometry" relief mode, issue 8's comparison).
+// Bump mapping only tilts normals; displacement moves vertices along the normal by the relief
+// height, so silhouettes and self-occlusion change too, at the cost of a fine tessellation.
+//
+// Units. The relief tile covers `tiling` x `tiling` tiles per patch (uv in [0, 1] per patch, as
+// the shader's reliefUv = uv * tiling). Map heights are in units where one tile is
+// 1 / height_to_tile long (skin maps: tile units, height_to_tile = 1; wrinkle maps: buckling
+// cell units, see wrinkle_map.h), slopes are dimensionless. A tile is mapped onto a piece of
+// surface sqrt(|F_u| |F_v|) / tiling metres across, so the displacement in metres is
+//   d = amplitude * height_to_tile * h * sqrt(|F_u| |F_v|) / tiling,
+// and the displaced normal tilts by amplitude * slope, as the bump-mapping shader tilts it:
+// the two relief modes agree where the surface is locally isometric to the tile.
+#pragma once
+
+#include "dressed_human/core/relief/relief_sample.h"
+#include "dressed_human/core/relief/relief_map.h"
+#include "dressed_human/core/surfaces/tessellation.h"
+
+namespace dressed_human {
+
+struct ReliefDisplacement {
+  const ReliefMap* map = nullptr;  ///< not owned; must outlive the call
+  float tiling = 1.0f;             ///< tiles per patch along u and v, > 0
+  float height_to_tile = 1.0f;     ///< tile units per map height unit, > 0
+  float amplitude = 1.0f;          ///< relief strength (as the shader's), >= 0
+  /// Optional per-vertex factor on the amplitude (SurfacePart::relief_weight); null: 1.
+  const std::vector<float>* weights = nullptr;
+};
+
+/// Height and slopes of the map at tile coordinates (any real values: the map wraps),
+/// bilinear between pixel centres.
+ReliefSample sampleReliefMap(const ReliefMap& map, double tile_u, double tile_v);
+
+/// Throws std::invalid_argument naming a bad field (no map, empty map, tiling or
+/// height_to_tile <= 0, negative or non-finite amplitude).
+void checkReliefDisplacement(const ReliefDisplacement& displacement);
+
+/// `out` = `base` with every vertex moved along its normal and normals tilted by the relief
+/// (tangents and uv copied). Allocation-free once `out` has had the same size. Throws as
+/// checkReliefDisplacement, or when `weights` does not have one entry per vertex.
+void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displacement, TriangleMesh& out);
+
+}  // namespace dressed_human

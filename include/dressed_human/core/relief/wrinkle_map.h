@@ -1,0 +1,51 @@
+// Wrinkle relief map from buckling patterns (SPEC §4): a grid of buckling cells, `cells_around`
+// across u (periodic: the map wraps around a limb) and `rows` along v (the compression axis,
+// e.g. along the bone), each with its own compression alpha.
+//
+// This is the interface for the (not yet written) wrinkle placement: measure compression per
+// garment region, turn it into alpha per cell, call makeWrinkleMap. Placement itself -- which
+// regions, which chain -- is the caller's.
+//
+// Layout: every row of cells takes the same band of pixels whatever its alpha (the map lives in
+// the garment's material/texture coordinates); inside a cell, footprint y = alpha * rest y, so a
+// more compressed row shows the same number of wrinkles with higher relief. Heights and slopes are
+// in the posed (compressed) physical frame of the cell (units of L_x, L_y), so the normal map is
+// the true fold normal for the posed garment. Cells meet continuously when neighbours share alpha;
+// between two cells of different alpha along u the fold heights differ (a step of |dh1| at the
+// joint), so callers should vary alpha smoothly or per row. Rows always meet at height 0.
+#pragma once
+
+#include "dressed_human/core/relief/buckling_pattern.h"
+#include "dressed_human/core/relief/relief_map.h"
+
+#include <string>
+#include <vector>
+
+namespace dressed_human {
+
+enum class WrinkleSurface {
+  exactFolds,             ///< the piecewise-planar folds (creased normals)
+  gaussianApproximation,  ///< the seed's smooth Gaussian approximation (fit per distinct alpha)
+};
+
+struct WrinkleMapSpec {
+  int width_pixels = 512;
+  int height_pixels = 512;
+  BucklingCell cell;            ///< rest L_x, L_y of every cell
+  std::string chain = "X";      ///< pattern sequence repeated across u ("X", "YY", "YXY", "I", ...)
+  int cells_around = 8;         ///< cells across u; the repeated chain must close periodically
+  int rows = 4;                 ///< cells along v
+  /// Compression per cell, row-major (rows x cells_around); a single value applies to all cells,
+  /// `rows` values apply per row. alpha = 1 flat, smaller = more compressed (buckling_solution.h).
+  std::vector<double> alpha{0.7};
+  OutOfDomainPolicy out_of_domain = OutOfDomainPolicy::clampToDomainEdge;
+  WrinkleSurface surface = WrinkleSurface::exactFolds;
+  int gaussian_terms = 8;
+  double amplitude = 1.0;       ///< scales relief (heights and slopes), >= 0
+};
+
+/// Throws std::invalid_argument naming the bad field (sizes, alpha count or range, chain that
+/// does not close around u, amplitude).
+ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec);
+
+}  // namespace dressed_human

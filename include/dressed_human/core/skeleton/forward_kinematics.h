@@ -1,0 +1,54 @@
+#pragma once
+// Forward kinematics: 48 joint angles + the root pose -> every frame of the skeleton.
+
+#include <array>
+
+#include <Eigen/Geometry>
+
+#include "dressed_human/core/skeleton/skeleton.h"
+
+namespace dressed_human {
+
+// Angle index = joint * 3 + dof, dof in chain order (y, x, z); radians.
+using JointAngles = std::array<double, kDofCount>;
+
+// Eq. 5 per bone: P' = [a Px, b Py, c Pz] in the bone frame. c scales the bone's length, a and b
+// its thickness. Children attach at the scaled position of their joint in this bone's frame.
+struct BodyShape {
+  std::array<Eigen::Vector3d, kBoneCount> scale;
+  BodyShape() { scale.fill(Eigen::Vector3d::Ones()); }
+};
+
+struct RigidTransform {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+};
+
+struct SkeletonPose {
+  RigidTransform root;                               // body frame in the world
+  // Parent -> child transform of every URDF revolute joint, as TF publishes it: for DOF 0 the
+  // joint origin (scaled) times the rotation about y; for DOFs 1 and 2 a pure rotation.
+  std::array<RigidTransform, kDofCount> dof_transforms;
+  std::array<RigidTransform, kBoneCount> bone_in_parent;  // bone frame in its parent bone (or body)
+  std::array<RigidTransform, kBoneCount> bone_in_world;
+};
+
+class ForwardKinematics {
+ public:
+  explicit ForwardKinematics(const Skeleton& skeleton, const BodyShape& shape = BodyShape());
+
+  // Allocation-free; `pose` is filled completely.
+  void compute(const RigidTransform& root, const JointAngles& angles, SkeletonPose& pose) const;
+
+  // Where a bone frame sits in its parent, shape applied (also the fixed joints' TF).
+  const Eigen::Vector3d& scaledRestTranslation(std::size_t bone) const { return scaled_rest_translation_[bone]; }
+  const Skeleton& skeleton() const { return skeleton_; }
+  const BodyShape& shape() const { return shape_; }
+
+ private:
+  Skeleton skeleton_;
+  BodyShape shape_;
+  std::array<Eigen::Vector3d, kBoneCount> scaled_rest_translation_;
+};
+
+}  // namespace dressed_human

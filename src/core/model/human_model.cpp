@@ -1,0 +1,236 @@
+#include "dressed_human/core/model/human_model.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "dressed_human/core/garments/garment_file.h"
+
+namespace dressed_human {
+namespace {
+
+constexpr int kDropAfterUpdates = 60;  // 2 s at rviz's 30 fps
+constexpr std::array<int, 12> kLevelLadder{{1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64}};
+
+// Index of the smallest ladder level >= level (the top one beyond it).
+int ladderRung(int level) {
+  for (std::size_t r = 0; r < kLevelLadder.size(); ++r) {
+    if (kLevelLadder[r] >= level) return static_cast<int>(r);
+  }
+  return static_cast<int>(kLevelLadder.size()) - 1;
+}
+
+SurfacePart surfacePart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour) {
+  SurfacePart part;
+  part.name = name;
+  part.relief = relief;
+  part.colour = colour;
+  part.mesh = nullptr;
+  return part;
+}
+
+// In double, rounded outwards to float: the float vertices evaluated from these control points
+// stay inside.
+Eigen::AlignedBox3f outwardToFloat(const Eigen::AlignedBox3d& box) {
+  if (box.isEmpty()) return Eigen::AlignedBox3f();
+  const float lowest = -std::numeric_limits<float>::infinity(), highest = std::numeric_limits<float>::infinity();
+  Eigen::Vector3f min, max;
+  for (int k = 0; k < 3; ++k) {
+    min[k] = std::nextafter(static_cast<float>(box.min()[k]), lowest);
+    max[k] = std::nextafter(static_cast<float>(box.max()[k]), highest);
+  }
+  return Eigen::AlignedBox3f(min, max);
+}
+
+Eigen::AlignedBox3f controlPointBounds(const std::vector<BezierPatch>& patches) {
+  Eigen::AlignedBox3d box;
+  for (const BezierPatch& patch : patches) {
+    box.extend(patch.boundingBoxMin());
+    box.extend(patch.boundingBoxMax());
+  }
+  return outwardToFloat(box);
+}
+
+Eigen::AlignedBox3f vertexBounds(const std::vector<Eigen::Vector3f>& positions) {
+  Eigen::AlignedBox3f box;
+  for (const Eigen::Vector3f& position : positions) box.extend(position);
+  return box;
+}
+
+}  // namespace
+
+Outfit outfitFromName(const std::string& name) {
+  if (name == "none") return Outfit::kNone;
+  if (name == "one_piece") return Outfit::kOnePiece;
+  if (name == "jacket_skirt") return Outfit::kJacketSkirt;
+  if (name == "jacket_pants") return Outfit::kJacketPants;
+  throw std::invalid_argument("unknown outfit '" + name + "'; expected none, one_piece, jacket_skirt or jacket_pants");
+}
+
+std::vector<std::string> garmentFileNames(Outfit outfit) {
+  switch (outfit) {
+    case Outfit::kNone: return {};
+    case Outfit::kOnePiece: return {"one_piece"};
+    case Outfit::kJacketSkirt: return {"skirt", "jacket"};
+    case Outfit::kJacketPants: return {"pants", "jacket"};
+  }
+  return {};
+}
+
+HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
+    : settings_(settings), skin_(skeleton, body) {
+  parts_.push_back(surfacePart("skin", ReliefKind::kSkin, settings_.skin_colour));
+  for (const std::string& name : garmentFileNames(settings_.outfit)) {
+    GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
+    const bool has_skirt = description.type == GarmentType::kSkirt || description.type == GarmentType::kOnePiece;
+    if (settings_.skirt_length >= 0.0 && has_skirt) {
+      if (settings_.skirt_length > 1.0) {
+        throw std::invalid_argument("skirt length " + std::to_string(settings_.skirt_length) +
+                                    " is outside [0, 1] (0 mini, knee length c_k, 1 long)");
+      }
+      description.legs.length = settings_.skirt_length;
+      description.legs.at_knee = false;
+    }
+    garments_.emplace_back(description, skeleton, body.shape);
+    rest_patches_.push_back(garments_.back().patches());  // built in the rest pose
+    compressions_.emplace_back();
+    compressed_layouts_.push_back(0);
+    wrinkle_weights_.emplace_back();
+    garment_tessellators_.push_back(std::make_unique<Tessellator>());
+    const auto colour = settings_.garment_colours.find(name);
+    const Eigen::Vector4f rgba = colour != settings_.garment_colours.end()
+                                     ? colour->second
+                                     : Eigen::Vector4f(static_cast<float>(description.colour.x()),
+                                                       static_cast<float>(description.colour.y()),
+                                                       static_cast<float>(description.colour.z()), 1.0f);
+    parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
+  }
+}
+
+const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
+                                              const LevelOfDetail& lod) {
+  if (lod.automatic) {
+    // Levels from the screen-space error, with hysteresis: a level drops only when two below
+    // the current one would do. Otherwise a walking human flickers between levels and the
+    // tessellator rebuilds its layout every frame instead of only re-evaluating vertices.
+    AutomaticLevels& automatic = automatic_levels_[&tessellator];
+    std::vector<int>& levels = automatic.levels;
+    levels.resize(patches.size(), 0);
+    automatic.frames_below.resize(patches.size(), 0);
+    const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kRenderer;
+    levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+      const int wanted = wanted_levels_[p];
+      if (coarse_steps) {
+        // When the renderer evaluates the vertices, a frame costs the CPU almost nothing unless
+        // the layout changes, and a few more triangles cost the vertex shader little. So levels
+        // move on a coarse ladder (rounded up: the error bound still holds), rise at once, and
+        // drop only after two rungs less have sufficed for kDropAfterUpdates updates in a row:
+        // longer than a gait cycle, so a walking human keeps its layout.
+        const int rung = ladderRung(wanted);
+        const int current = levels[p] == 0 ? -1 : ladderRung(levels[p]);
+        int& below = automatic.frames_below[p];
+        below = rung + 1 < current ? below + 1 : 0;
+        if (rung > current || below > kDropAfterUpdates) {
+          levels[p] = std::min(kLevelLadder[static_cast<std::size_t>(rung)], lod.max_level);
+          below = 0;
+        }
+      } else if (wanted > levels[p] || wanted < levels[p] - 1) {
+        levels[p] = wanted;
+      }
+    }
+    return levels;
+  }
+  if (lod.level < 1 || lod.level > Tessellator::kMaxLevel) {
+    throw std::invalid_argument("tessellation level " + std::to_string(lod.level) + " is outside [1, " +
+                                std::to_string(Tessellator::kMaxLevel) + "]");
+  }
+  uniform_levels_.assign(patches.size(), lod.level);
+  return uniform_levels_;
+}
+
+Tessellator& HumanModel::tessellatorOf(std::size_t part) {
+  return part == 0 ? skin_tessellator_ : *garment_tessellators_.at(part - 1);
+}
+
+const PatchTopology& HumanModel::topologyOf(std::size_t part) const {
+  return part == 0 ? skin_.topology() : garments_.at(part - 1).topology();
+}
+
+void HumanModel::update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
+                        const LevelOfDetail& lod) {
+  pose_.root = root;
+  pose_.bone_in_world = bones;
+  skin_.pose(pose_);
+  for (Garment& garment : garments_) garment.pose(pose_);
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    SurfacePart& part = parts_[p];
+    const Displacement& displacement = displacements_[static_cast<std::size_t>(part.relief)];
+    const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displacement.map;
+    Tessellator& tessellator = tessellatorOf(p);
+    const std::vector<BezierPatch>& patches = partPatches(p);
+    const std::vector<int>& levels = levelsFor(tessellator, patches, lod);
+    part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(p), levels)
+                         : &tessellator.layout(patches, topologyOf(p), levels);
+    part.evaluated = evaluate;
+    part.patches = &patches;
+    part.layout_id = tessellator.layoutId();
+    if (p > 0) {
+      const std::size_t g = p - 1;
+      VertexCompression& compression = compressions_[g];
+      // The rest metric belongs to the layout: re-derived only when the tessellator laid the
+      // mesh out anew (comparing layouts vertex by vertex every frame would cost more than
+      // the rest of a GPU-evaluated frame).
+      if (compressed_layouts_[g] != part.layout_id) {
+        compression.prepare(*part.mesh, rest_patches_[g]);
+        compressed_layouts_[g] = part.layout_id;
+      }
+      if (evaluate) {
+        wrinkle_weights_[g].resize(part.mesh->vertexCount());
+        compression.evaluate(*part.mesh, nullptr, wrinkle_weights_[g].data());
+        part.relief_weight = &wrinkle_weights_[g];
+        part.inverse_rest_metric = nullptr;
+      } else {
+        part.relief_weight = nullptr;
+        part.inverse_rest_metric = &compression.inverseRestMetric();
+      }
+      part.wrinkle_constants = compression.strengthConstants();
+    }
+    if (displacement.map) {
+      ReliefDisplacement settings = displacement.settings;
+      settings.weights = part.relief_weight;
+      displaceMesh(*part.mesh, settings, displaced_meshes_[p]);
+      part.mesh = &displaced_meshes_[p];
+      part.bounds = vertexBounds(part.mesh->positions);
+    } else {
+      part.bounds = controlPointBounds(patches);
+    }
+  }
+}
+
+void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling,
+                                 float height_to_tile, float amplitude) {
+  Displacement displacement{std::move(map), ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
+  displacement.settings.map = displacement.map.get();
+  if (displacement.map) checkReliefDisplacement(displacement.settings);  // now, not at the next update
+  displacements_[static_cast<std::size_t>(kind)] = std::move(displacement);
+  displaced_meshes_.resize(parts_.size());
+}
+
+const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
+  return part == 0 ? skin_.patches() : garments_.at(part - 1).patches();
+}
+
+const std::vector<int>& HumanModel::partLevels(std::size_t part) const {
+  return part == 0 ? skin_tessellator_.levels() : garment_tessellators_.at(part - 1)->levels();
+}
+
+std::size_t HumanModel::triangleCount() const {
+  std::size_t count = 0;
+  for (const SurfacePart& part : parts_) count += part.mesh ? part.mesh->triangleCount() : 0;
+  return count;
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,112 @@
+#include "dressed_human/core/motion/fit_accuracy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dressed_human/core/motion/motion_evaluator.h"
+
+namespace dressed_human {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+class ErrorAccumulator {
+ public:
+  void add(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const double cm = 100.0 * (a - b).norm();
+    sum_ += cm;
+    sum_squares_ += cm * cm;
+    result_.max_cm = std::max(result_.max_cm, cm);
+    ++result_.samples;
+  }
+  PositionError result() const {
+    PositionError r = result_;
+    if (r.samples > 0) {
+      r.mean_cm = sum_ / static_cast<double>(r.samples);
+      r.rms_cm = std::sqrt(sum_squares_ / static_cast<double>(r.samples));
+    }
+    return r;
+  }
+
+ private:
+  PositionError result_;
+  double sum_ = 0.0;
+  double sum_squares_ = 0.0;
+};
+
+Eigen::Quaterniond rotationFromRollPitchYaw(double roll, double pitch, double yaw) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                            Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                            Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()));
+}
+
+}  // namespace
+
+FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sampled, const MotionFit& fit,
+                               const Motion& motion) {
+  const ForwardKinematics kinematics(skeleton);
+  MotionEvaluator evaluator(motion);
+  ErrorAccumulator capture;
+  ErrorAccumulator unsmoothed_capture;
+  ErrorAccumulator samples;
+  ErrorAccumulator root;
+  const std::size_t first = fit.skipped_frames;  // the window starts after the skipped frames
+  const bool has_capture = sampled.reference_joint_positions.size() >= first + fit.frames_used;
+  const Eigen::Matrix3d to_walk = fit.walk_rotation.transpose();
+  SkeletonPose fitted_pose;
+  SkeletonPose sampled_pose;
+  for (std::size_t f = 0; f < fit.frames_used; ++f) {
+    const double time = fit.times[f];
+    JointAngles fitted_angles{};
+    RigidTransform fitted_root;
+    evaluator.evaluate(time, fitted_angles, fitted_root);
+    const Eigen::Vector3d sampled_root(fit.samples[kDofCount][f], fit.samples[kDofCount + 1][f],
+                                       fit.samples[kDofCount + 2][f]);
+    root.add(fitted_root.translation, sampled_root);
+    fitted_root.translation.setZero();
+
+    JointAngles sampled_angles{};
+    for (std::size_t i = 0; i < kDofCount; ++i) sampled_angles[i] = fit.samples[i][f];
+    RigidTransform sampled_root_pose;
+    sampled_root_pose.rotation = rotationFromRollPitchYaw(fit.samples[kDofCount + 3][f], fit.samples[kDofCount + 4][f],
+                                                          fit.samples[kDofCount + 5][f]);
+    kinematics.compute(fitted_root, fitted_angles, fitted_pose);
+    kinematics.compute(sampled_root_pose, sampled_angles, sampled_pose);
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      if (!sampled.driven[j]) continue;
+      const auto bone = static_cast<std::size_t>(skeleton.joint(j).bone);
+      const Eigen::Vector3d& ours = fitted_pose.bone_in_world[bone].translation;
+      samples.add(ours, sampled_pose.bone_in_world[bone].translation);
+      if (has_capture) {
+        const Eigen::Vector3d reference = to_walk * sampled.reference_joint_positions[first + f][j];
+        capture.add(ours, reference);
+        unsmoothed_capture.add(sampled_pose.bone_in_world[bone].translation, reference);
+      }
+    }
+  }
+  FitAccuracy accuracy;
+  accuracy.against_capture = capture.result();
+  accuracy.unsmoothed_against_capture = unsmoothed_capture.result();
+  accuracy.against_samples = samples.result();
+  accuracy.root_translation = root.result();
+  std::size_t driven = 0;
+  for (std::size_t i = 0; i < Motion::kSeriesCount; ++i) {
+    const SeriesFitReport& report = fit.reports[i];
+    if (!report.is_angle || !report.driven) continue;
+    // The residual of `motion`, which may differ from the fit's own reports (a refit).
+    const FourierSeries& series = motion.series(i);
+    double squares = 0.0;
+    for (std::size_t f = 0; f < fit.frames_used; ++f) {
+      const double residual = series.valueBySummation(fit.times[f]) - fit.samples[i][f];
+      squares += residual * residual;
+    }
+    const double rms_degrees = std::sqrt(squares / static_cast<double>(fit.frames_used)) * 180.0 / kPi;
+    accuracy.mean_rms_degrees += rms_degrees;
+    accuracy.max_rms_degrees = std::max(accuracy.max_rms_degrees, rms_degrees);
+    ++driven;
+  }
+  if (driven > 0) accuracy.mean_rms_degrees /= static_cast<double>(driven);
+  return accuracy;
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,304 @@
+#include "dressed_human/core/motion/mocap_retarget.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dressed_human/core/motion/motion.h"
+
+namespace dressed_human {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegree = kPi / 180.0;
+
+// For each of our joints, the joint at the distal end of its bone (-1: the bone ends free). The
+// source position of that joint gives the source bone's rest direction.
+constexpr std::array<int, kJointCount> kDistalJoint = {1, 2, 3, -1, 5, 6, -1, 8, 9, -1, 11, 12, -1, 14, 15, -1};
+constexpr int kLeftHip = 10;
+constexpr int kLeftKnee = 11;
+constexpr int kLeftAnkle = 12;
+constexpr int kRightHip = 13;
+
+Eigen::Matrix3d toMatrix(const Eigen::Quaterniond& q) { return q.normalized().toRotationMatrix(); }
+
+// Our skeleton at rest with the root at the origin: world rotation and proximal position per bone.
+struct RestPose {
+  std::array<Eigen::Matrix3d, kBoneCount> rotation;
+  std::array<Eigen::Vector3d, kBoneCount> position;
+};
+
+RestPose ourRestPose(const Skeleton& skeleton) {
+  const ForwardKinematics kinematics(skeleton);
+  SkeletonPose pose;
+  kinematics.compute(RigidTransform(), JointAngles{}, pose);
+  RestPose rest;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    rest.rotation[b] = toMatrix(pose.bone_in_world[b].rotation);
+    rest.position[b] = pose.bone_in_world[b].translation;
+  }
+  return rest;
+}
+
+// Rest direction of a source segment: towards the first descendant (joint or end site) that is
+// not at the same place; zero-length helper joints (CMU's LHipJoint, LeftFingerBase) are skipped.
+Eigen::Vector3d firstDistinctDescendant(const BvhClip& clip, const BvhPose& rest, int joint) {
+  const Eigen::Vector3d& origin = rest.position[static_cast<std::size_t>(joint)];
+  std::vector<int> stack = {joint};
+  while (!stack.empty()) {
+    const auto j = static_cast<std::size_t>(stack.back());
+    stack.pop_back();
+    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
+      const Eigen::Vector3d d = rest.position[j] + end - origin;
+      if (d.norm() > 1e-9) return d;
+    }
+    const std::vector<int>& children = clip.joints[j].children;
+    for (auto child = children.rbegin(); child != children.rend(); ++child) {
+      const Eigen::Vector3d d = rest.position[static_cast<std::size_t>(*child)] - origin;
+      if (d.norm() > 1e-9) return d;
+      stack.push_back(*child);
+    }
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+// Our joint angles from target world orientations (nullptr: held at rest), walking the bones
+// parents first so that every local rotation is taken relative to our own parent bone.
+JointAngles solveJointAngles(const Skeleton& skeleton, const Eigen::Matrix3d& body,
+                             const std::array<const Eigen::Matrix3d*, kJointCount>& target) {
+  JointAngles angles{};
+  std::array<Eigen::Matrix3d, kBoneCount> world;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const Bone& bone = skeleton.bone(b);
+    const Eigen::Matrix3d& parent = bone.parent < 0 ? body : world[static_cast<std::size_t>(bone.parent)];
+    const Eigen::Matrix3d rest = parent * toMatrix(bone.rest_rotation);
+    world[b] = rest;
+    if (bone.joint < 0) continue;
+    const auto j = static_cast<std::size_t>(bone.joint);
+    if (!target[j]) continue;
+    const Eigen::Vector3d yxz = decomposeYxz(rest.transpose() * *target[j]);
+    for (std::size_t d = 0; d < kDofsPerJoint; ++d) angles[j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
+    world[b] = rest * Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
+               Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ());
+  }
+  return angles;
+}
+
+Eigen::Matrix3d chainRotation(const std::vector<CoordinateRotation>& chain, const std::vector<int>& columns,
+                              const std::vector<double>& row, double angle_unit) {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    rotation = rotation * Eigen::AngleAxisd(row[static_cast<std::size_t>(columns[i])] * angle_unit, chain[i].axis);
+  }
+  return rotation;
+}
+
+}  // namespace
+
+// Where the middle angle nears +-90 degrees the outer two share one axis. Their split is then
+// ill-conditioned: reading them off entries that carry cos(middle) costs eps / cos(middle) in the
+// rebuilt rotation, while putting everything into the first angle costs ~cos(middle). Switching
+// where the two meet, cos(middle) ~ sqrt(eps), bounds the rebuild error by ~3e-8 everywhere (the
+// former test 1 - |sin| < 1e-12 switched at cos ~ 1.4e-6 and lost up to ~3e-6). The middle angle
+// comes from atan2 with cos(middle) = |column or row|: asin near +-1 loses half the digits.
+constexpr double kGimbalCosine = 1e-8;
+
+Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& r) {
+  // R = Ry(a) Rx(b) Rz(c): third column (sa cb, -sb, ca cb), second row (cb sc, cb cc, -sb).
+  const double cos_x = std::hypot(r(0, 2), r(2, 2));
+  const double x = std::atan2(-r(1, 2), cos_x);
+  if (cos_x < kGimbalCosine) {
+    // Gimbal lock: only y - z (at +90 degrees) or y + z (at -90) is defined; put it all into y.
+    return {std::atan2(-r(2, 0), r(0, 0)), x, 0.0};
+  }
+  return {std::atan2(r(0, 2), r(2, 2)), x, std::atan2(r(1, 0), r(1, 1))};
+}
+
+Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& r) {
+  // R = Rz(yaw) Ry(pitch) Rx(roll): third row (-sp, cp sr, cp cr), first column (cy cp, sy cp, -sp).
+  const double cos_pitch = std::hypot(r(2, 1), r(2, 2));
+  const double pitch = std::atan2(-r(2, 0), cos_pitch);
+  if (cos_pitch < kGimbalCosine) return {0.0, pitch, std::atan2(-r(0, 1), r(1, 1))};
+  return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
+}
+
+double skeletonStature(const Skeleton& skeleton) {
+  const RestPose rest = ourRestPose(skeleton);
+  double low = 0.0;
+  double high = 0.0;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const Eigen::Vector3d end = rest.position[b] + rest.rotation[b].col(2) * skeleton.bone(b).length;
+    low = std::min({low, rest.position[b].z(), end.z()});
+    high = std::max({high, rest.position[b].z(), end.z()});
+  }
+  return high - low;
+}
+
+SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
+                          const std::string& source_name) {
+  checkBvhJointMap(map, clip, source_name);
+  const BvhPose source_rest = bvhRestPose(clip);
+  const RestPose our_rest = ourRestPose(skeleton);
+  const auto sourceIndex = [&](const std::string& name) { return static_cast<std::size_t>(clip.findJoint(name)); };
+  const std::size_t root = sourceIndex(map.root);
+
+  // Source axes -> ours: BVH is Y-up; left comes from the hips of the rest pose, forward = left x up.
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  if (map.joints[kLeftHip].empty() || map.joints[kRightHip].empty()) {
+    throw JointMapError(source_name + ": the joint map must name both hips (they give the body's left-right axis)");
+  }
+  Eigen::Vector3d left =
+      source_rest.position[sourceIndex(map.joints[kLeftHip])] - source_rest.position[sourceIndex(map.joints[kRightHip])];
+  left -= left.dot(up) * up;
+  if (left.norm() < 1e-9) {
+    throw MotionError(source_name + ": the rest pose puts both hips at the same place: no left-right direction");
+  }
+  left.normalize();
+  Eigen::Matrix3d to_ours;  // rows: forward, left, up in source coordinates
+  to_ours.row(0) = left.cross(up);
+  to_ours.row(1) = left;
+  to_ours.row(2) = up;
+
+  // Constant per-bone offset: our rest frame turned so that its bone axis lies along the source's
+  // rest segment. World target of bone b = to_ours * G_source * to_ours^T * offset_b.
+  std::array<Eigen::Matrix3d, kJointCount> rest_offset;
+  std::array<std::size_t, kJointCount> source_joint{};
+  SampledMotion motion;
+  motion.source = source_name;
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    motion.driven[j] = !map.joints[j].empty();
+    if (!motion.driven[j]) continue;
+    source_joint[j] = sourceIndex(map.joints[j]);
+    const auto s = static_cast<int>(source_joint[j]);
+    const int distal = kDistalJoint[j];
+    Eigen::Vector3d direction = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty()
+                                    ? source_rest.position[sourceIndex(map.joints[static_cast<std::size_t>(distal)])] -
+                                          source_rest.position[source_joint[j]]
+                                    : firstDistinctDescendant(clip, source_rest, s);
+    if (direction.norm() < 1e-9) direction = firstDistinctDescendant(clip, source_rest, s);
+    const std::size_t bone = static_cast<std::size_t>(skeleton.joint(j).bone);
+    Eigen::Matrix3d offset = our_rest.rotation[bone];
+    if (direction.norm() > 1e-9) {
+      const Eigen::Quaterniond swing = Eigen::Quaterniond::FromTwoVectors(our_rest.rotation[bone].col(2), to_ours * direction);
+      offset = toMatrix(swing) * offset;
+    }
+    rest_offset[j] = offset;
+  }
+
+  // Root translation: scaled by leg length so that the feet reach the floor and strides do not
+  // slide; shifted so that our hip joints sit at the scaled height of the source's.
+  const std::size_t source_hip = sourceIndex(map.joints[kLeftHip]);
+  double source_leg = 0.0;
+  double our_leg = 0.0;
+  if (!map.joints[kLeftKnee].empty() && !map.joints[kLeftAnkle].empty()) {
+    const std::size_t knee = sourceIndex(map.joints[kLeftKnee]);
+    const std::size_t ankle = sourceIndex(map.joints[kLeftAnkle]);
+    source_leg = (source_rest.position[knee] - source_rest.position[source_hip]).norm() +
+                 (source_rest.position[ankle] - source_rest.position[knee]).norm();
+    const auto bone = [&](int joint) { return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone); };
+    our_leg = (our_rest.position[bone(kLeftKnee)] - our_rest.position[bone(kLeftHip)]).norm() +
+              (our_rest.position[bone(kLeftAnkle)] - our_rest.position[bone(kLeftKnee)]).norm();
+  }
+  if (!(source_leg > 1e-9)) throw MotionError(source_name + ": the source's left leg has no length at rest");
+  motion.root_scale = our_leg / source_leg;
+  const double source_hip_drop = -(to_ours * (source_rest.position[source_hip] - source_rest.position[root])).z();
+  const double our_hip_drop = -our_rest.position[static_cast<std::size_t>(skeleton.joint(kLeftHip).bone)].z();
+  const double height_shift = our_hip_drop - motion.root_scale * source_hip_drop;
+
+  double source_low = 0.0;
+  double source_high = 0.0;
+  for (std::size_t j = 0; j < clip.joints.size(); ++j) {
+    const double height = (to_ours * (source_rest.position[j] - source_rest.position[root])).z();
+    source_low = std::min(source_low, height);
+    source_high = std::max(source_high, height);
+    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
+      const double end_height = (to_ours * (source_rest.position[j] + end - source_rest.position[root])).z();
+      source_low = std::min(source_low, end_height);
+      source_high = std::max(source_high, end_height);
+    }
+  }
+  motion.reference_scale = skeletonStature(skeleton) / (source_high - source_low);
+
+  const std::size_t frames = clip.frames.size();
+  motion.times.resize(frames);
+  motion.angles.resize(frames);
+  motion.root.resize(frames);
+  motion.reference_joint_positions.resize(frames);
+  std::array<Eigen::Matrix3d, kJointCount> target;
+  std::array<const Eigen::Matrix3d*, kJointCount> target_pointer{};
+  for (std::size_t f = 0; f < frames; ++f) {
+    const BvhPose pose = bvhForwardKinematics(clip, f);
+    motion.times[f] = static_cast<double>(f) * clip.frame_time;
+    const Eigen::Matrix3d body = to_ours * pose.rotation[root] * to_ours.transpose();
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      target_pointer[j] = nullptr;
+      if (!motion.driven[j]) continue;
+      target[j] = to_ours * pose.rotation[source_joint[j]] * to_ours.transpose() * rest_offset[j];
+      target_pointer[j] = &target[j];
+      motion.reference_joint_positions[f][j] =
+          motion.reference_scale * (to_ours * (pose.position[source_joint[j]] - pose.position[root]));
+    }
+    motion.angles[f] = solveJointAngles(skeleton, body, target_pointer);
+    Eigen::Vector3d position = motion.root_scale * (to_ours * pose.position[root]);
+    position.z() += height_shift;
+    motion.root[f].translation = position;
+    motion.root[f].rotation = Eigen::Quaterniond(body).normalized();
+  }
+  return motion;
+}
+
+SampledMotion retargetCoordinates(const OpenSimTable& table, const CoordinateJointMap& map, const Skeleton& skeleton,
+                                  const std::string& source_name) {
+  checkCoordinateJointMap(map, table, source_name);
+  const RestPose our_rest = ourRestPose(skeleton);
+  // OpenSim axes (X forward, Y up, Z right) -> ours (x forward, y left, z up).
+  Eigen::Matrix3d to_ours;
+  to_ours << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+  const double angle_unit = table.in_degrees ? kDegree : 1.0;
+  const auto columnsOf = [&](const std::vector<CoordinateRotation>& chain) {
+    std::vector<int> columns;
+    for (const CoordinateRotation& r : chain) columns.push_back(table.findColumn(r.column));
+    return columns;
+  };
+  const std::vector<int> root_columns = columnsOf(map.root_rotation);
+  std::array<std::vector<int>, kJointCount> joint_columns;
+  SampledMotion motion;
+  motion.source = source_name;
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    joint_columns[j] = columnsOf(map.joints[j]);
+    motion.driven[j] = !map.joints[j].empty();
+  }
+  std::array<int, 3> translation_columns{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    translation_columns[k] = map.root_translation[k].empty() ? -1 : table.findColumn(map.root_translation[k]);
+  }
+
+  const std::size_t frames = table.rows.size();
+  motion.times.resize(frames);
+  motion.angles.resize(frames);
+  motion.root.resize(frames);
+  for (std::size_t f = 0; f < frames; ++f) {
+    const std::vector<double>& row = table.rows[f];
+    motion.times[f] = table.times[f] - table.times[0];
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      if (!motion.driven[j]) continue;
+      // A joint rotation between segments that are parallel at rest, in our body axes, turned
+      // into our bone's frame: R_joint = R0^T D R0 (R0: our bone's rest orientation).
+      const Eigen::Matrix3d relative = to_ours * chainRotation(map.joints[j], joint_columns[j], row, angle_unit) *
+                                       to_ours.transpose();
+      const Eigen::Matrix3d& rest = our_rest.rotation[static_cast<std::size_t>(skeleton.joint(j).bone)];
+      const Eigen::Vector3d yxz = decomposeYxz(rest.transpose() * relative * rest);
+      for (std::size_t d = 0; d < kDofsPerJoint; ++d) motion.angles[f][j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
+    }
+    const Eigen::Matrix3d body =
+        to_ours * chainRotation(map.root_rotation, root_columns, row, angle_unit) * to_ours.transpose();
+    Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (translation_columns[k] >= 0) translation[static_cast<int>(k)] = row[static_cast<std::size_t>(translation_columns[k])];
+    }
+    motion.root[f].translation = to_ours * translation;
+    motion.root[f].rotation = Eigen::Quaterniond(body).normalized();
+  }
+  return motion;
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,77 @@
+#include "dressed_human/core/motion/motion.h"
+
+#include <cmath>
+
+namespace dressed_human {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+double phaseAngle(const FourierSeries& s, double time) { return kTwoPi * time / s.period + s.phase; }
+
+}  // namespace
+
+double FourierSeries::valueBySummation(double time) const {
+  const double t = phaseAngle(*this, time);
+  double value = 0.5 * a0;
+  for (std::size_t n = 1; n <= order(); ++n) {
+    value += a[n - 1] * std::cos(static_cast<double>(n) * t) + b[n - 1] * std::sin(static_cast<double>(n) * t);
+  }
+  return value;
+}
+
+double FourierSeries::derivativeBySummation(double time) const {
+  const double t = phaseAngle(*this, time);
+  double value = 0.0;
+  for (std::size_t n = 1; n <= order(); ++n) {
+    const double k = static_cast<double>(n);
+    value += k * (-a[n - 1] * std::sin(k * t) + b[n - 1] * std::cos(k * t));
+  }
+  return value * kTwoPi / period;
+}
+
+const std::array<const char*, kJointCount>& humanJointNames() {
+  static const std::array<const char*, kJointCount> names = {
+      "waist",   "torso",  "neck",  "head",    "l_shoulder", "l_elbow", "l_wrist", "r_shoulder",
+      "r_elbow", "r_wrist", "l_hip", "l_knee", "l_ankle",   "r_hip",   "r_knee",  "r_ankle"};
+  return names;
+}
+
+const FourierSeries& Motion::series(std::size_t index) const {
+  if (index < kDofCount) return dofs[index];
+  if (index < kDofCount + 3) return root.translation[index - kDofCount];
+  return root.rotation.at(index - kDofCount - 3);
+}
+
+std::string Motion::seriesName(std::size_t index) const {
+  if (index < kDofCount) {
+    return std::string(humanJointNames()[index / kDofsPerJoint]) + "." + kDofNames[index % kDofsPerJoint];
+  }
+  if (index < kDofCount + 3) return std::string("root.translation.") + kRootTranslationNames[index - kDofCount];
+  return std::string("root.rotation.") + kRootRotationNames.at(index - kDofCount - 3);
+}
+
+void Motion::validate() const {
+  if (!std::isfinite(period) || period <= 0.0) {
+    throw MotionError("motion period must be a finite number > 0 s, got " + std::to_string(period));
+  }
+  if (!std::isfinite(root.forward_speed)) throw MotionError("root.forward_speed must be finite");
+  for (std::size_t i = 0; i < kSeriesCount; ++i) {
+    const FourierSeries& s = series(i);
+    const std::string name = seriesName(i);
+    if (!std::isfinite(s.period) || s.period <= 0.0) {
+      throw MotionError(name + ": period must be a finite number > 0 s, got " + std::to_string(s.period));
+    }
+    if (!std::isfinite(s.phase)) throw MotionError(name + ": phase must be finite");
+    if (s.a.size() != s.b.size()) {
+      throw MotionError(name + ": " + std::to_string(s.a.size()) + " cosine coefficients but " +
+                        std::to_string(s.b.size()) + " sine coefficients; both lists must have the order m");
+    }
+    bool finite = std::isfinite(s.a0);
+    for (double c : s.a) finite = finite && std::isfinite(c);
+    for (double c : s.b) finite = finite && std::isfinite(c);
+    if (!finite) throw MotionError(name + ": coefficients must be finite numbers");
+  }
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,145 @@
+#include "dressed_human/core/relief/wrinkle_map.h"
+
+#include "dressed_human/core/relief/buckling_chain.h"
+#include "dressed_human/core/relief/gaussian_fold_fit.h"
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+namespace dressed_human {
+namespace {
+
+void requirePositive(int value, const char* name) {
+  if (value <= 0) {
+    std::ostringstream message;
+    message << "WrinkleMapSpec." << name << " must be > 0, got " << value;
+    throw std::invalid_argument(message.str());
+  }
+}
+
+double alphaOfCell(const WrinkleMapSpec& spec, int row, int column) {
+  const std::size_t count = spec.alpha.size();
+  if (count == 1) return spec.alpha[0];
+  if (count == static_cast<std::size_t>(spec.rows)) return spec.alpha[static_cast<std::size_t>(row)];
+  return spec.alpha[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) + static_cast<std::size_t>(column)];
+}
+
+// A cell's surface, built once per distinct (pattern, orientation, alpha).
+struct CellSurface {
+  std::unique_ptr<BucklingPattern> pattern;
+  std::shared_ptr<const GaussianFoldApproximation> gaussians;
+  ReliefSample sample(double x, double y) const {
+    return gaussians ? gaussians->sample(x, y) : pattern->sampleFootprint(x, y);
+  }
+};
+
+// Gaussian fits outlive one map: a fit costs tens of milliseconds and depends only on the
+// pattern (kind, orientation, alpha, cell, out-of-domain policy) and the term count, and a pose
+// sequence keeps returning to the same alphas. Keyed by the exact alpha, so a cached fit is the
+// fit that would be computed. Bounded: emptied when full, as alphas from continuous compression
+// need not repeat.
+using FitKey = std::tuple<int, bool, double, double, double, int, int>;
+
+std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const BucklingPattern& pattern, const FitKey& key, int terms) {
+  constexpr std::size_t kMaximumFits = 256;
+  static std::mutex mutex;
+  static std::map<FitKey, std::shared_ptr<const GaussianFoldApproximation>> fits;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto found = fits.find(key);
+    if (found != fits.end()) return found->second;
+  }
+  auto fit = std::make_shared<const GaussianFoldApproximation>(fitGaussians(pattern, terms));  // outside the lock
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (fits.size() >= kMaximumFits) fits.clear();
+  fits.emplace(key, fit);
+  return fit;
+}
+
+}  // namespace
+
+ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
+  requirePositive(spec.width_pixels, "width_pixels");
+  requirePositive(spec.height_pixels, "height_pixels");
+  requirePositive(spec.cells_around, "cells_around");
+  requirePositive(spec.rows, "rows");
+  const std::size_t cell_count = static_cast<std::size_t>(spec.rows) * static_cast<std::size_t>(spec.cells_around);
+  if (spec.alpha.size() != 1 && spec.alpha.size() != static_cast<std::size_t>(spec.rows) && spec.alpha.size() != cell_count) {
+    std::ostringstream message;
+    message << "WrinkleMapSpec.alpha must hold 1, rows (" << spec.rows << ") or rows*cells_around ("
+            << cell_count << ") values, got " << spec.alpha.size();
+    throw std::invalid_argument(message.str());
+  }
+  for (double alpha : spec.alpha) {
+    if (!(alpha > 0.0 && alpha <= 1.0)) {
+      std::ostringstream message;
+      message << "WrinkleMapSpec.alpha values must be in (0, 1], got " << alpha;
+      throw std::invalid_argument(message.str());
+    }
+  }
+  if (!(spec.amplitude >= 0.0) || !std::isfinite(spec.amplitude)) {
+    std::ostringstream message;
+    message << "WrinkleMapSpec.amplitude must be finite and >= 0, got " << spec.amplitude;
+    throw std::invalid_argument(message.str());
+  }
+  if (spec.surface == WrinkleSurface::gaussianApproximation) requirePositive(spec.gaussian_terms, "gaussian_terms");
+
+  std::string around;
+  for (int column = 0; column < spec.cells_around; ++column) around += spec.chain[static_cast<std::size_t>(column) % spec.chain.size()];
+  const std::vector<ChainCell> oriented = orientChain(around, true);
+
+  // Build each distinct cell surface once: fits cost milliseconds, pixels must not.
+  std::map<std::tuple<int, bool, double>, CellSurface> surfaces;
+  std::vector<const CellSurface*> cell_surfaces(cell_count);
+  for (int row = 0; row < spec.rows; ++row) {
+    for (int column = 0; column < spec.cells_around; ++column) {
+      const ChainCell& entry = oriented[static_cast<std::size_t>(column)];
+      const bool split_on_right = entry.kind == PatternKind::Y && entry.split_right;
+      const double alpha = alphaOfCell(spec, row, column);
+      const auto key = std::make_tuple(static_cast<int>(entry.kind), split_on_right, alpha);
+      auto found = surfaces.find(key);
+      if (found == surfaces.end()) {
+        CellSurface surface;
+        surface.pattern = std::make_unique<BucklingPattern>(entry.kind, alpha, spec.cell, spec.out_of_domain, split_on_right);
+        if (spec.surface == WrinkleSurface::gaussianApproximation) {
+          const FitKey fit_key(static_cast<int>(entry.kind), split_on_right, alpha, spec.cell.half_width_x, spec.cell.half_length_y,
+                               static_cast<int>(spec.out_of_domain), spec.gaussian_terms);
+          surface.gaussians = cachedGaussianFit(*surface.pattern, fit_key, spec.gaussian_terms);
+        }
+        found = surfaces.emplace(key, std::move(surface)).first;
+      }
+      cell_surfaces[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) + static_cast<std::size_t>(column)] = &found->second;
+    }
+  }
+
+  ReliefMap map(spec.width_pixels, spec.height_pixels);
+  const double lx = spec.cell.half_width_x;
+  const double ly = spec.cell.half_length_y;
+  const double cells_per_pixel_u = static_cast<double>(spec.cells_around) / spec.width_pixels;
+  const double cells_per_pixel_v = static_cast<double>(spec.rows) / spec.height_pixels;
+  for (int pixel_row = 0; pixel_row < spec.height_pixels; ++pixel_row) {
+    const double v = (pixel_row + 0.5) * cells_per_pixel_v;
+    const int row = std::min(static_cast<int>(v), spec.rows - 1);
+    const double rest_y = (v - row - 0.5) * 2.0 * ly;
+    for (int pixel_column = 0; pixel_column < spec.width_pixels; ++pixel_column) {
+      const double u = (pixel_column + 0.5) * cells_per_pixel_u;
+      const int column = std::min(static_cast<int>(u), spec.cells_around - 1);
+      const CellSurface& surface = *cell_surfaces[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) + static_cast<std::size_t>(column)];
+      const double x = (u - column - 0.5) * 2.0 * lx;
+      const double y = rest_y * surface.pattern->solution().alpha;
+      const ReliefSample sample = surface.sample(x, y);
+      const std::size_t at = map.index(pixel_column, pixel_row);
+      map.heights[at] = static_cast<float>(spec.amplitude * sample.height);
+      map.slope_u[at] = static_cast<float>(spec.amplitude * sample.slope.x());
+      map.slope_v[at] = static_cast<float>(spec.amplitude * sample.slope.y());
+    }
+  }
+  return map;
+}
+
+}  // namespace dressed_human
