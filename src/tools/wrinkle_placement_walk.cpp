@@ -25,12 +25,11 @@ namespace {
 
 using namespace dressed_human;
 
-constexpr double kPi = 3.14159265358979323846;
 
 double bendDegrees(const SkeletonPose& pose, const Skeleton& skeleton, const char* upper, const char* lower) {
   const Eigen::Vector3d a = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(upper))].rotation * Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d b = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(lower))].rotation * Eigen::Vector3d::UnitZ();
-  return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / kPi;
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
 int run(const std::string& source, const std::string& directory, int count) {

@@ -11,13 +11,12 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Off-curve point I (I % 3 != 0) of a Bezier circle of `columns` arcs starting at angle
 // `start`: unit-circle coordinates (cos-like, sin-like). The on-curve points (I % 3 == 0) are
 // the midpoints of their two neighbours: the circle obeys the midpoint rule by construction.
 Eigen::Vector2d circlePoint(int columns, double start, int index) {
-  const double arc = 2.0 * kPi / columns;
+  const double arc = 2.0 * M_PI / columns;
   const double k = 4.0 / 3.0 * std::tan(arc / 4.0);
   const int column = index / 3;
   const bool first = index % 3 == 1;
@@ -224,7 +223,7 @@ class Builder {
       Lattice lat;
       lat.columns = 2;
       lat.patch_rows = 1;
-      fill(lat, piece, [&](int i, int j) { return ringPoint(d_.sleeve[static_cast<std::size_t>(j)], 2, -kPi / 2, i, side == 1); },
+      fill(lat, piece, [&](int i, int j) { return ringPoint(d_.sleeve[static_cast<std::size_t>(j)], 2, -M_PI / 2, i, side == 1); },
            [](int, int) { return std::int64_t{-1}; });
       patches(lat, [&](int, int) { return piece; });
     }
@@ -298,7 +297,7 @@ class Builder {
       const std::pair<int, int> twist[8] = {{1, 2},        {1, 4},        {half - 1, 4}, {half - 1, 2},
                                             {half + 1, 2}, {half + 1, 4}, {n - 1, 4},    {n - 1, 2}};
       for (int k = 0; k < 8; ++k) {
-        const double angle = kPi / 8.0 + k * kPi / 4.0;
+        const double angle = M_PI / 8.0 + k * M_PI / 4.0;
         const bool leg_sector = twist[k].second > 3;
         const Eigen::Vector2d& radius = leg_sector ? d_.crotch_leg_radius : d_.crotch_radius;
         // Source: on the crotch ellipse, fixed in the crotch frame. (Riding the thighs instead
@@ -329,7 +328,7 @@ class Builder {
       if (pants) {
         const int half = n / 2;
         const bool right_leg = i >= half;
-        return legPoint(2, -kPi / 2, right_leg ? i - half : i, right_leg, c);
+        return legPoint(2, -M_PI / 2, right_leg ? i - half : i, right_leg, c);
       }
       return legPoint(4, 0.0, i, right, c);
     };

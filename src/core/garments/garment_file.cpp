@@ -1,9 +1,8 @@
 #include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "dressed_human/core/io/yaml_reader.h"
 
@@ -219,12 +218,9 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
 }
 
 GarmentDescription loadGarmentFile(const std::string& path, const Skeleton& skeleton) {
-  std::ifstream file(path);
-  if (!file) throw GarmentError(path + ": cannot open the garment file");
-  std::stringstream text;
-  text << file.rdbuf();
+  const std::string text = readWholeFileOrThrow<GarmentError>(path, "the garment file");
   const std::size_t slash = path.find_last_of('/');
-  return parseGarmentYaml(text.str(), skeleton, slash == std::string::npos ? path : path.substr(slash + 1));
+  return parseGarmentYaml(text, skeleton, slash == std::string::npos ? path : path.substr(slash + 1));
 }
 
 }  // namespace dressed_human

@@ -94,11 +94,6 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
       description.legs.at_knee = false;
     }
     garments_.emplace_back(description, skeleton, body.shape);
-    rest_patches_.push_back(garments_.back().patches());  // built in the rest pose
-    compressions_.emplace_back();
-    compressed_layouts_.push_back(0);
-    wrinkle_weights_.emplace_back();
-    garment_tessellators_.push_back(std::make_unique<Tessellator>());
     const auto colour = settings_.garment_colours.find(name);
     const Eigen::Vector4f rgba = colour != settings_.garment_colours.end()
                                      ? colour->second
@@ -108,6 +103,12 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
 }
+
+HumanModel::DressedGarment::DressedGarment(const GarmentDescription& description, const Skeleton& skeleton,
+                                           const BodyShape& shape)
+    : garment(description, skeleton, shape),
+      tessellator(std::make_unique<Tessellator>()),
+      rest_patches(garment.patches()) {}
 
 const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
                                               const LevelOfDetail& lod) {
@@ -152,11 +153,11 @@ const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, co
 }
 
 Tessellator& HumanModel::tessellatorOf(std::size_t part) {
-  return part == 0 ? skin_tessellator_ : *garment_tessellators_.at(part - 1);
+  return part == 0 ? skin_tessellator_ : *garments_.at(part - 1).tessellator;
 }
 
 const PatchTopology& HumanModel::topologyOf(std::size_t part) const {
-  return part == 0 ? skin_.topology() : garments_.at(part - 1).topology();
+  return part == 0 ? skin_.topology() : garments_.at(part - 1).garment.topology();
 }
 
 void HumanModel::update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
@@ -164,7 +165,7 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
   pose_.root = root;
   pose_.bone_in_world = bones;
   skin_.pose(pose_);
-  for (Garment& garment : garments_) garment.pose(pose_);
+  for (DressedGarment& dressed : garments_) dressed.garment.pose(pose_);
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     SurfacePart& part = parts_[p];
     const Displacement& displacement = displacements_[static_cast<std::size_t>(part.relief)];
@@ -178,19 +179,19 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     part.patches = &patches;
     part.layout_id = tessellator.layoutId();
     if (p > 0) {
-      const std::size_t g = p - 1;
-      VertexCompression& compression = compressions_[g];
+      DressedGarment& dressed = garments_[p - 1];
+      VertexCompression& compression = dressed.compression;
       // The rest metric belongs to the layout: re-derived only when the tessellator laid the
       // mesh out anew (comparing layouts vertex by vertex every frame would cost more than
       // the rest of a GPU-evaluated frame).
-      if (compressed_layouts_[g] != part.layout_id) {
-        compression.prepare(*part.mesh, rest_patches_[g]);
-        compressed_layouts_[g] = part.layout_id;
+      if (dressed.compressed_layout != part.layout_id) {
+        compression.prepare(*part.mesh, dressed.rest_patches);
+        dressed.compressed_layout = part.layout_id;
       }
       if (evaluate) {
-        wrinkle_weights_[g].resize(part.mesh->vertexCount());
-        compression.evaluate(*part.mesh, nullptr, wrinkle_weights_[g].data());
-        part.relief_weight = &wrinkle_weights_[g];
+        dressed.wrinkle_weights.resize(part.mesh->vertexCount());
+        compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data());
+        part.relief_weight = &dressed.wrinkle_weights;
         part.inverse_rest_metric = nullptr;
       } else {
         part.relief_weight = nullptr;
@@ -220,11 +221,11 @@ void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMa
 }
 
 const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
-  return part == 0 ? skin_.patches() : garments_.at(part - 1).patches();
+  return part == 0 ? skin_.patches() : garments_.at(part - 1).garment.patches();
 }
 
 const std::vector<int>& HumanModel::partLevels(std::size_t part) const {
-  return part == 0 ? skin_tessellator_.levels() : garment_tessellators_.at(part - 1)->levels();
+  return part == 0 ? skin_tessellator_.levels() : garments_.at(part - 1).tessellator->levels();
 }
 
 std::size_t HumanModel::triangleCount() const {

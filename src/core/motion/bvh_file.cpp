@@ -1,10 +1,9 @@
 #include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 namespace dressed_human {
 namespace {
@@ -284,11 +283,7 @@ BvhClip parseBvh(const std::string& text, const std::string& source_name) {
 }
 
 BvhClip loadBvhFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw BvhError(path + ": cannot open the BVH file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseBvh(text.str(), path);
+  return parseBvh(readWholeFileOrThrow<BvhError>(path, "the BVH file"), path);
 }
 
 }  // namespace dressed_human

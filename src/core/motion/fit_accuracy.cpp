@@ -8,7 +8,6 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 class ErrorAccumulator {
  public:
@@ -100,7 +99,7 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
       const double residual = series.valueBySummation(fit.times[f]) - fit.samples[i][f];
       squares += residual * residual;
     }
-    const double rms_degrees = std::sqrt(squares / static_cast<double>(fit.frames_used)) * 180.0 / kPi;
+    const double rms_degrees = std::sqrt(squares / static_cast<double>(fit.frames_used)) * 180.0 / M_PI;
     accuracy.mean_rms_degrees += rms_degrees;
     accuracy.max_rms_degrees = std::max(accuracy.max_rms_degrees, rms_degrees);
     ++driven;

@@ -8,7 +8,6 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -19,7 +18,7 @@ std::vector<double> unwrapAngles(const std::vector<double>& wrapped) {
       unwrapped[i] = wrapped[i];
       continue;
     }
-    const double step = std::remainder(wrapped[i] - wrapped[i - 1], 2.0 * kPi);
+    const double step = std::remainder(wrapped[i] - wrapped[i - 1], 2.0 * M_PI);
     unwrapped[i] = unwrapped[i - 1] + step;
   }
   return unwrapped;
@@ -41,7 +40,7 @@ FourierFit fitFourierSeries(const std::vector<double>& times, const std::vector<
   const auto rows = static_cast<Eigen::Index>(values.size());
   Eigen::MatrixXd design(rows, static_cast<Eigen::Index>(unknowns));
   Eigen::VectorXd rhs(rows);
-  const double omega = 2.0 * kPi / period;
+  const double omega = 2.0 * M_PI / period;
   for (Eigen::Index i = 0; i < rows; ++i) {
     const double time = times[static_cast<std::size_t>(i)];
     const double value = values[static_cast<std::size_t>(i)];

@@ -1,7 +1,7 @@
 #include "dressed_human/core/motion/mocap_joint_map.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
@@ -223,11 +223,7 @@ JointMapFile parseJointMapYaml(const std::string& yaml_text, const std::string& 
 }
 
 JointMapFile loadJointMapFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw JointMapError(path + ": cannot open the joint map file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseJointMapYaml(text.str(), path);
+  return parseJointMapYaml(readWholeFileOrThrow<JointMapError>(path, "the joint map file"), path);
 }
 
 }  // namespace dressed_human

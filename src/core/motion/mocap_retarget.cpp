@@ -8,8 +8,7 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegree = kPi / 180.0;
+constexpr double kDegree = M_PI / 180.0;
 
 // For each of our joints, the joint at the distal end of its bone (-1: the bone ends free). The
 // source position of that joint gives the source bone's rest direction.

@@ -1,7 +1,7 @@
 #include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <set>
@@ -97,11 +97,7 @@ Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_n
 }
 
 Motion loadMotionFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw MotionError(path + ": cannot open the motion file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseMotionYaml(text.str(), path);
+  return parseMotionYaml(readWholeFileOrThrow<MotionError>(path, "the motion file"), path);
 }
 
 namespace {

@@ -9,8 +9,7 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegree = kPi / 180.0;
+constexpr double kDegree = M_PI / 180.0;
 constexpr std::size_t kMinSamplesPerCycle = 8;
 constexpr std::size_t kRootX = kDofCount;          // series index of the root's forward translation
 constexpr std::size_t kFirstRootRotation = kDofCount + 3;
@@ -28,7 +27,7 @@ void centreTurns(std::vector<double>& values) {
   if (values.empty()) return;
   double mean = 0.0;
   for (const double v : values) mean += v / static_cast<double>(values.size());
-  const double shift = mean - std::remainder(mean, 2.0 * kPi);
+  const double shift = mean - std::remainder(mean, 2.0 * M_PI);
   for (double& v : values) v -= shift;
 }
 
@@ -90,7 +89,7 @@ double largestStep(const SampledMotion& sampled, std::size_t frame) {
   double step = 0.0;
   for (std::size_t i = 0; i < kDofCount; ++i) {
     if (!sampled.driven[i / kDofsPerJoint]) continue;
-    step = std::max(step, std::abs(std::remainder(sampled.angles[frame + 1][i] - sampled.angles[frame][i], 2.0 * kPi)));
+    step = std::max(step, std::abs(std::remainder(sampled.angles[frame + 1][i] - sampled.angles[frame][i], 2.0 * M_PI)));
   }
   return step;
 }

@@ -1,8 +1,8 @@
 #include "dressed_human/core/motion/opensim_motion_file.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace dressed_human {
@@ -170,11 +170,7 @@ OpenSimTable parseOpenSimMotion(const std::string& text, const std::string& sour
 }
 
 OpenSimTable loadOpenSimMotionFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw OpenSimError(path + ": cannot open the OpenSim motion file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseOpenSimMotion(text.str(), path);
+  return parseOpenSimMotion(readWholeFileOrThrow<OpenSimError>(path, "the OpenSim motion file"), path);
 }
 
 }  // namespace dressed_human

@@ -1,7 +1,7 @@
 #include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -191,11 +191,8 @@ BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Ske
 }
 
 BodyDescription loadBodyDescriptionFile(const std::string& path, const Skeleton& skeleton) {
-  std::ifstream file(path);
-  if (!file) throw BodyDescriptionError(path + ": cannot open the body description");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseBodyDescriptionYaml(text.str(), skeleton, path);
+  return parseBodyDescriptionYaml(readWholeFileOrThrow<BodyDescriptionError>(path, "the body description"), skeleton,
+                                  path);
 }
 
 }  // namespace dressed_human

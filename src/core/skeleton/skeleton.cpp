@@ -1,9 +1,8 @@
 #include "dressed_human/core/skeleton/skeleton.h"
+#include "dressed_human/core/io/text_file.h"
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
 
 #include <urdf_model/model.h>
 #include <urdf_parser/urdf_parser.h>
@@ -131,12 +130,9 @@ const std::array<BoneLayoutEntry, kBoneCount>& humanBoneLayout() {
 }
 
 Skeleton Skeleton::fromUrdfFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw SkeletonError("cannot open URDF file '" + path + "'");
-  std::stringstream text;
-  text << file.rdbuf();
+  const std::string text = readWholeFileOrThrow<SkeletonError>(path, "the URDF file");
   try {
-    return fromUrdf(text.str());
+    return fromUrdf(text);
   } catch (const SkeletonError& error) {
     throw SkeletonError(path + ": " + error.what());
   }

@@ -28,11 +28,6 @@ void fillRing(double z, double radius_x, double radius_y, Ring& ring) {
   }
 }
 
-struct ProfilePoint {
-  double z;  // along the chain: may be shifted into the neighbour's frame (slopes only)
-  Eigen::Vector2d radius;
-};
-
 }  // namespace
 
 Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShape& shape)
@@ -41,11 +36,31 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
   const std::size_t segment_count = body.segments.size();
   if (segment_count == 0) throw SkinError("Skin: the body description has no segments");
 
-  auto scaleOf = [&](int bone) {
-    return bone < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone)];
-  };
+  joinSegments(body);
+  // Local rings: surface rows (own sections, plus the child's joint ring), handle rows.
+  local_.resize(segment_count);
+  const std::vector<Profile> profiles = sectionProfiles(body, kinematics);
+  for (std::size_t s = 0; s < segment_count; ++s) buildSegmentRings(s, body.segments[s], profiles);
+  std::size_t most_rows = 0;
+  for (const SegmentRings& rings : local_) most_rows = std::max(most_rows, rings.rows.size());
+  posed_segment_.rows.resize(most_rows);
+  posed_joint_rings_.resize(segment_count);
 
-  // ---- segments, joins, parts
+  const std::uint32_t patch_count = numberPatches();
+  linkPatches(patch_count);  // fixed for every pose
+
+  // Placeholder patches, overwritten by pose() (BezierPatch has no empty state).
+  BezierPatch::ControlPoints unit;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) unit[BezierPatch::index(i, j)] = Eigen::Vector3d(i, j, 0.0);
+  }
+  patches_.assign(patch_count, BezierPatch(unit));
+  poseAtRest();
+}
+
+// Segments, the joins between them, and the parts they make up.
+void Skin::joinSegments(const BodyDescription& body) {
+  const std::size_t segment_count = body.segments.size();
   segments_.resize(segment_count);
   for (std::size_t s = 0; s < segment_count; ++s) {
     const SkinSegmentSpec& spec = body.segments[s];
@@ -69,19 +84,25 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
       segment.part = static_cast<std::uint32_t>(part_count_++);
     }
   }
+}
 
-  // ---- local rings: surface rows (own sections, plus the child's joint ring), handle rows
-  local_.resize(segment_count);
-  std::vector<std::vector<ProfilePoint>> profiles(segment_count);
+// Eq. 5's scale of a bone; the pelvis segment ("body", bone -1) is not scaled.
+Eigen::Vector3d Skin::boneScale(int bone) const {
+  return bone < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone)];
+}
+
+std::vector<Skin::Profile> Skin::sectionProfiles(const BodyDescription& body, const ForwardKinematics& kinematics) const {
+  const std::size_t segment_count = body.segments.size();
+  std::vector<Profile> profiles(segment_count);
   for (std::size_t s = 0; s < segment_count; ++s) {
     const SkinSegmentSpec& spec = body.segments[s];
-    const Eigen::Vector3d scale = scaleOf(segments_[s].bone);
+    const Eigen::Vector3d scale = boneScale(segments_[s].bone);
     for (const SkinSection& section : spec.sections) {
       profiles[s].push_back({scale.z() * section.z, Eigen::Vector2d(scale.x() * section.radius_x, scale.y() * section.radius_y)});
     }
   }
   for (std::size_t s = 0; s < segment_count; ++s) {
-    SkinSegment& segment = segments_[s];
+    const SkinSegment& segment = segments_[s];
     if (segment.joined_child < 0) continue;
     const auto child = static_cast<std::size_t>(segment.joined_child);
     const double joint_z = kinematics.scaledRestTranslation(static_cast<std::size_t>(segments_[child].bone)).z();
@@ -90,81 +111,88 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
     }
     profiles[s].push_back({joint_z, profiles[child].front().radius});
   }
-  for (std::size_t s = 0; s < segment_count; ++s) {
-    const SkinSegmentSpec& spec = body.segments[s];
-    SkinSegment& segment = segments_[s];
-    const std::vector<ProfilePoint>& own = profiles[s];
-    if (own.size() < 2) throw SkinError("Skin: segment '" + segment.name + "' needs two surface rings");
-    segment.has_proximal_cap = segment.joined_parent < 0;
-    segment.has_distal_cap = segment.joined_child < 0;
-    if (segment.has_proximal_cap && !(spec.proximal_cap > 0.0)) throw SkinError("Skin: segment '" + segment.name + "' has an open proximal end");
-    if (segment.has_distal_cap && !(spec.distal_cap > 0.0)) throw SkinError("Skin: segment '" + segment.name + "' has an open distal end");
+  return profiles;
+}
 
-    // Slopes dr/dz: central differences, across a joint too (the neighbour's z shifted along the
-    // chain, so both sides of a joint compute the same slope); 0 next to a cap (tangent to the dome).
-    std::vector<ProfilePoint> extended;
-    if (segment.joined_parent >= 0) {
-      const std::vector<ProfilePoint>& parent = profiles[static_cast<std::size_t>(segment.joined_parent)];
-      const ProfilePoint& before = parent[parent.size() - 2];
-      extended.push_back({before.z - parent.back().z, before.radius});
-    }
-    const std::size_t offset = extended.size();
-    extended.insert(extended.end(), own.begin(), own.end());
-    if (segment.joined_child >= 0) {
-      const std::vector<ProfilePoint>& child = profiles[static_cast<std::size_t>(segment.joined_child)];
-      const ProfilePoint& after = child.size() > 1 ? child[1] : child[0];
-      if (child.size() > 1) extended.push_back({own.back().z + after.z, after.radius});
-    }
-    const std::size_t rows = own.size();
-    std::vector<Eigen::Vector2d> slope(rows, Eigen::Vector2d::Zero());
-    for (std::size_t k = 0; k < rows; ++k) {
-      const std::size_t e = k + offset;
-      const bool capped_end = (k == 0 && segment.has_proximal_cap) || (k + 1 == rows && segment.has_distal_cap);
-      if (capped_end) continue;
-      const std::size_t lo = e > 0 ? e - 1 : e;
-      const std::size_t hi = e + 1 < extended.size() ? e + 1 : e;
-      slope[k] = (extended[hi].radius - extended[lo].radius) / (extended[hi].z - extended[lo].z);
-    }
-
-    SegmentRings& rings = local_[s];
-    rings.rows.resize(3 * (rows - 1) + 1);
-    for (std::size_t k = 0; k < rows; ++k) {
-      fillRing(own[k].z, own[k].radius.x(), own[k].radius.y(), rings.rows[3 * k]);
-      rings.profile.emplace_back(own[k].z, own[k].radius.x(), own[k].radius.y());
-      if (k + 1 == rows) break;
-      const double third = (own[k + 1].z - own[k].z) / 3.0;
-      const Eigen::Vector2d floor = kMinimumHandleRadius * own[k].radius.cwiseMin(own[k + 1].radius);
-      const Eigen::Vector2d near = (own[k].radius + third * slope[k]).cwiseMax(floor);
-      const Eigen::Vector2d far = (own[k + 1].radius - third * slope[k + 1]).cwiseMax(floor);
-      fillRing(own[k].z + third, near.x(), near.y(), rings.rows[3 * k + 1]);
-      fillRing(own[k + 1].z - third, far.x(), far.y(), rings.rows[3 * k + 2]);
-    }
-    const double k = kQuarterCircleHandle;
-    const double length_scale = scaleOf(segment.bone).z();  // Eq. 5 applies to the domes too
-    if (segment.has_proximal_cap) {
-      const ProfilePoint& end = own.front();
-      const double height = length_scale * spec.proximal_cap;
-      const double pole_z = end.z - height;
-      fillRing(pole_z, 0.0, 0.0, rings.proximal_cap[0]);
-      fillRing(pole_z, k * end.radius.x(), k * end.radius.y(), rings.proximal_cap[1]);
-      fillRing(end.z - k * height, end.radius.x(), end.radius.y(), rings.proximal_cap[2]);
-    }
-    if (segment.has_distal_cap) {
-      const ProfilePoint& end = own.back();
-      const double height = length_scale * spec.distal_cap;
-      const double pole_z = end.z + height;
-      fillRing(end.z + k * height, end.radius.x(), end.radius.y(), rings.distal_cap[0]);
-      fillRing(pole_z, k * end.radius.x(), k * end.radius.y(), rings.distal_cap[1]);
-      fillRing(pole_z, 0.0, 0.0, rings.distal_cap[2]);
-    }
-    segment.stack_count = static_cast<std::uint32_t>(rows - 1);
+// Central differences, across a joint too (the neighbour's z shifted along the chain, so both
+// sides of a joint compute the same slope); 0 next to a cap (tangent to the dome).
+std::vector<Eigen::Vector2d> Skin::profileSlopes(std::size_t s, const std::vector<Profile>& profiles) const {
+  const SkinSegment& segment = segments_[s];
+  const Profile& own = profiles[s];
+  std::vector<ProfilePoint> extended;
+  if (segment.joined_parent >= 0) {
+    const std::vector<ProfilePoint>& parent = profiles[static_cast<std::size_t>(segment.joined_parent)];
+    const ProfilePoint& before = parent[parent.size() - 2];
+    extended.push_back({before.z - parent.back().z, before.radius});
   }
-  std::size_t most_rows = 0;
-  for (const SegmentRings& rings : local_) most_rows = std::max(most_rows, rings.rows.size());
-  posed_segment_.rows.resize(most_rows);
-  posed_joint_rings_.resize(segment_count);
+  const std::size_t offset = extended.size();
+  extended.insert(extended.end(), own.begin(), own.end());
+  if (segment.joined_child >= 0) {
+    const std::vector<ProfilePoint>& child = profiles[static_cast<std::size_t>(segment.joined_child)];
+    const ProfilePoint& after = child.size() > 1 ? child[1] : child[0];
+    if (child.size() > 1) extended.push_back({own.back().z + after.z, after.radius});
+  }
+  const std::size_t rows = own.size();
+  std::vector<Eigen::Vector2d> slope(rows, Eigen::Vector2d::Zero());
+  for (std::size_t k = 0; k < rows; ++k) {
+    const std::size_t e = k + offset;
+    const bool capped_end = (k == 0 && segment.has_proximal_cap) || (k + 1 == rows && segment.has_distal_cap);
+    if (capped_end) continue;
+    const std::size_t lo = e > 0 ? e - 1 : e;
+    const std::size_t hi = e + 1 < extended.size() ? e + 1 : e;
+    slope[k] = (extended[hi].radius - extended[lo].radius) / (extended[hi].z - extended[lo].z);
+  }
+  return slope;
+}
 
-  // ---- patch numbering: per segment proximal cap, stacks, distal cap
+void Skin::buildSegmentRings(std::size_t s, const SkinSegmentSpec& spec, const std::vector<Profile>& profiles) {
+  SkinSegment& segment = segments_[s];
+  const Profile& own = profiles[s];
+  if (own.size() < 2) throw SkinError("Skin: segment '" + segment.name + "' needs two surface rings");
+  segment.has_proximal_cap = segment.joined_parent < 0;
+  segment.has_distal_cap = segment.joined_child < 0;
+  if (segment.has_proximal_cap && !(spec.proximal_cap > 0.0)) throw SkinError("Skin: segment '" + segment.name + "' has an open proximal end");
+  if (segment.has_distal_cap && !(spec.distal_cap > 0.0)) throw SkinError("Skin: segment '" + segment.name + "' has an open distal end");
+
+  const std::size_t rows = own.size();
+  const std::vector<Eigen::Vector2d> slope = profileSlopes(s, profiles);
+  SegmentRings& rings = local_[s];
+  rings.rows.resize(3 * (rows - 1) + 1);
+  for (std::size_t k = 0; k < rows; ++k) {
+    fillRing(own[k].z, own[k].radius.x(), own[k].radius.y(), rings.rows[3 * k]);
+    rings.profile.emplace_back(own[k].z, own[k].radius.x(), own[k].radius.y());
+    if (k + 1 == rows) break;
+    const double third = (own[k + 1].z - own[k].z) / 3.0;
+    const Eigen::Vector2d floor = kMinimumHandleRadius * own[k].radius.cwiseMin(own[k + 1].radius);
+    const Eigen::Vector2d near = (own[k].radius + third * slope[k]).cwiseMax(floor);
+    const Eigen::Vector2d far = (own[k + 1].radius - third * slope[k + 1]).cwiseMax(floor);
+    fillRing(own[k].z + third, near.x(), near.y(), rings.rows[3 * k + 1]);
+    fillRing(own[k + 1].z - third, far.x(), far.y(), rings.rows[3 * k + 2]);
+  }
+  const double k = kQuarterCircleHandle;
+  const double length_scale = boneScale(segment.bone).z();  // Eq. 5 applies to the domes too
+  if (segment.has_proximal_cap) {
+    const ProfilePoint& end = own.front();
+    const double height = length_scale * spec.proximal_cap;
+    const double pole_z = end.z - height;
+    fillRing(pole_z, 0.0, 0.0, rings.proximal_cap[0]);
+    fillRing(pole_z, k * end.radius.x(), k * end.radius.y(), rings.proximal_cap[1]);
+    fillRing(end.z - k * height, end.radius.x(), end.radius.y(), rings.proximal_cap[2]);
+  }
+  if (segment.has_distal_cap) {
+    const ProfilePoint& end = own.back();
+    const double height = length_scale * spec.distal_cap;
+    const double pole_z = end.z + height;
+    fillRing(end.z + k * height, end.radius.x(), end.radius.y(), rings.distal_cap[0]);
+    fillRing(pole_z, k * end.radius.x(), k * end.radius.y(), rings.distal_cap[1]);
+    fillRing(pole_z, 0.0, 0.0, rings.distal_cap[2]);
+  }
+  segment.stack_count = static_cast<std::uint32_t>(rows - 1);
+}
+
+// Per segment: proximal cap, stacks, distal cap. Returns the patch count.
+std::uint32_t Skin::numberPatches() {
+  const std::size_t segment_count = segments_.size();
   std::uint32_t patch_count = 0;
   for (std::size_t s = 0; s < segment_count; ++s) {
     SkinSegment& segment = segments_[s];
@@ -187,7 +215,11 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
     for (std::uint32_t p = first; p < last; ++p) patch_segment_[p] = static_cast<int>(s);
   }
 
-  // ---- topology (fixed for every pose)
+  return patch_count;
+}
+
+void Skin::linkPatches(std::uint32_t patch_count) {
+  const std::size_t segment_count = segments_.size();
   topology_ = PatchTopology(patch_count);
   for (std::size_t s = 0; s < segment_count; ++s) {
     const SkinSegment& segment = segments_[s];
@@ -221,13 +253,6 @@ Skin::Skin(const Skeleton& skeleton, const BodyDescription& body, const BodyShap
     }
   }
 
-  // Placeholder patches, overwritten by pose() (BezierPatch has no empty state).
-  BezierPatch::ControlPoints unit;
-  for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) unit[BezierPatch::index(i, j)] = Eigen::Vector3d(i, j, 0.0);
-  }
-  patches_.assign(patch_count, BezierPatch(unit));
-  poseAtRest();
 }
 
 void Skin::poseAtRest() {

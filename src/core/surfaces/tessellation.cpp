@@ -13,7 +13,6 @@ namespace dressed_human {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCollapsedRelative = 1e-9;
 // Linked edges must coincide to this fraction of the larger patch scale. The check exists to
 // catch a wrong topology (which would otherwise hide a gap behind shared vertices), not to
@@ -69,57 +68,6 @@ void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
   b = findRoot(parent, b);
   // The smaller slot stays root so ownership does not depend on the order of the unions.
   if (a < b) parent[b] = a; else if (b < a) parent[a] = b;
-}
-
-// Curvature constant K of the bound K / n^2 (see geometricErrorBound).
-double errorBoundConstant(const BezierPatch& patch) {
-  // Maxima of squared norms, one square root each at the end, on the packed coordinates (row j
-  // of the net is p[12 j .. 12 j + 11], point i of it at 3 i): this runs for every patch every
-  // frame under automatic level of detail, so the loops have fixed bounds and unroll.
-  const double* p = patch.controlPoints().front().data();
-  const auto squared = [](double x, double y, double z) { return x * x + y * y + z * z; };
-  double second_u = 0.0;
-  double second_v = 0.0;
-  double twist = 0.0;
-  for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 2; ++i) {
-      const double* q = p + 12 * j + 3 * i;
-      second_u = std::max(second_u, squared(q[6] - 2.0 * q[3] + q[0], q[7] - 2.0 * q[4] + q[1], q[8] - 2.0 * q[5] + q[2]));
-    }
-  }
-  for (int j = 0; j < 2; ++j) {
-    for (int i = 0; i < 4; ++i) {
-      const double* q = p + 12 * j + 3 * i;
-      second_v = std::max(second_v, squared(q[24] - 2.0 * q[12] + q[0], q[25] - 2.0 * q[13] + q[1], q[26] - 2.0 * q[14] + q[2]));
-    }
-  }
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) {
-      const double* q = p + 12 * j + 3 * i;
-      twist = std::max(twist, squared(q[15] - q[12] - q[3] + q[0], q[16] - q[13] - q[4] + q[1], q[17] - q[14] - q[5] + q[2]));
-    }
-  }
-  const double bound_uu = 6.0 * std::sqrt(second_u);  // sup |F_uu|: F_uu is a Bezier patch on 6 * second differences
-  const double bound_vv = 6.0 * std::sqrt(second_v);
-  const double bound_uv = 9.0 * std::sqrt(twist);     // sup |F_uv|: F_uv is a Bezier patch on 9 * twists
-  return (bound_uu + 2.0 * bound_uv + bound_vv) / 8.0;
-}
-
-int smallestLevelFor(double constant, double allowed, int max_level) {
-  if (!(allowed > 0.0)) return max_level;
-  const double exact = std::sqrt(constant / allowed);
-  if (!(exact < max_level)) return max_level;
-  int level = std::max(1, static_cast<int>(std::ceil(exact)));
-  while (level < max_level && constant / (static_cast<double>(level) * level) > allowed) ++level;
-  return level;
-}
-
-void requireLevelLimit(int max_level) {
-  if (max_level < 1 || max_level > Tessellator::kMaxLevel) {
-    throw std::invalid_argument("tessellation max_level must be in [1, " +
-                                std::to_string(Tessellator::kMaxLevel) + "], got " +
-                                std::to_string(max_level));
-  }
 }
 
 }  // namespace
@@ -251,69 +199,6 @@ PatchTopology PatchTopology::fromCoincidentEdges(const std::vector<BezierPatch>&
 // Q(d) = |d_u|^2 M_uu + 2 |d_u d_v| M_uv + |d_v|^2 M_vv bounds |F_dd| (M = sup of the second
 // partials' norms). Using 2|d_u d_v| <= d_u^2 + d_v^2 and that the l-weighted variance of the
 // vertices' u (and v) is at most h^2 / 4 gives |F - L| <= (M_uu + 2 M_uv + M_vv) h^2 / 8.
-// M_uu <= 6 max |second u-differences of P|, M_vv likewise, M_uv <= 9 max |twists of P|
-// (the derivative patches are Bezier patches on those differences: convex hull property).
-double geometricErrorBound(const BezierPatch& patch, int level) {
-  if (level < 1) throw std::invalid_argument("geometricErrorBound: level must be >= 1");
-  return errorBoundConstant(patch) / (static_cast<double>(level) * level);
-}
-
-int levelForGeometricError(const BezierPatch& patch, double max_error, int max_level) {
-  requireLevelLimit(max_level);
-  if (!(max_error > 0.0) || !std::isfinite(max_error)) {
-    throw std::invalid_argument("levelForGeometricError: max_error must be finite and > 0");
-  }
-  return smallestLevelFor(errorBoundConstant(patch), max_error, max_level);
-}
-
-// Projection uses the distance to the nearest point of the control net's bounding box, which
-// holds the patch (convex hull property): an error e there covers at most e * f / d pixels at
-// the centre of the view, f = height / (2 tan(fov / 2)) being the focal length in pixels. Off
-// the view axis the true size is up to 1 / cos^2 of the off-axis angle larger; the camera's
-// orientation is not part of the query, so that factor is left to the caller's pixel budget.
-namespace {
-
-// Pixels per metre of error at distance 1 (the focal length in pixels), after checking the query.
-double focalPixels(const CameraView& camera, double max_error_pixels, int max_level) {
-  requireLevelLimit(max_level);
-  if (!camera.position.allFinite() || !(camera.vertical_fov_radians > 0.0) ||
-      !(camera.vertical_fov_radians < kPi) || !(camera.viewport_height_pixels > 0.0) ||
-      !std::isfinite(camera.viewport_height_pixels)) {
-    throw std::invalid_argument(
-        "levelForScreenError: camera needs a finite position, 0 < fov < pi and a viewport "
-        "height > 0");
-  }
-  if (!(max_error_pixels > 0.0) || !std::isfinite(max_error_pixels)) {
-    throw std::invalid_argument("levelForScreenError: max_error_pixels must be finite and > 0");
-  }
-  return camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
-}
-
-int screenErrorLevel(const BezierPatch& patch, const Eigen::Vector3d& camera_position, double error_per_distance,
-                     int max_level) {
-  const Eigen::Vector3d nearest = camera_position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
-  const double distance = (nearest - camera_position).norm();
-  if (!(distance > 0.0)) return max_level;
-  return smallestLevelFor(errorBoundConstant(patch), error_per_distance * distance, max_level);
-}
-
-}  // namespace
-
-int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
-                           double max_error_pixels, int max_level) {
-  const double focal = focalPixels(camera, max_error_pixels, max_level);
-  return screenErrorLevel(patch, camera.position, max_error_pixels / focal, max_level);
-}
-
-void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
-                          double max_error_pixels, int max_level, std::vector<int>& levels) {
-  const double error_per_distance = max_error_pixels / focalPixels(camera, max_error_pixels, max_level);
-  levels.resize(patches.size());
-  for (std::size_t p = 0; p < patches.size(); ++p) {
-    levels[p] = screenErrorLevel(patches[p], camera.position, error_per_distance, max_level);
-  }
-}
-
 // ------------------------------------------------------------------------------- Tessellator
 
 // A boundary vertex is evaluated once, by the first patch edge slot that reaches it.
@@ -434,17 +319,36 @@ bool Tessellator::layoutMatches(const PatchTopology& topology) const {
   return layout_links_ == topology.links();
 }
 
+// Boundary slots: point k (counter-clockwise) of edge e of patch p; corners appear twice. Slots
+// that are one point (a corner of two edges, a collapsed edge, two linked edges) are united.
+struct Tessellator::BoundarySlots {
+  std::vector<std::uint32_t> first;   // per patch edge its first slot; the slot count last
+  std::vector<std::uint32_t> parent;  // union-find over the slots
+  std::uint32_t operator()(std::size_t p, int e, int k) const {
+    return first[4 * p + static_cast<std::size_t>(e)] + static_cast<std::uint32_t>(k);
+  }
+};
+
 void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
                                const PatchTopology& topology) {
-  const std::size_t patch_count = patches.size();
-  layout_patch_count_ = patch_count;
+  layout_patch_count_ = patches.size();
   layout_links_ = topology.links();
   layout_collapsed_edges_ = collapsed_edges_;
   ++layout_build_count_;
   static std::atomic<std::uint64_t> last_layout_id{0};
   layout_id_ = ++last_layout_id;
 
-  // Edge levels: the larger of the two patches' levels on a shared edge.
+  const std::vector<int> edge_level = sharedEdgeLevels();
+  giveLevelOnePatchesAnInnerVertex(edge_level);
+  BoundarySlots slots = weldBoundarySlots(edge_level);
+  const std::vector<std::uint32_t> slot_vertex = numberVertices(edge_level, slots);
+  buildTriangles(edge_level, slots, slot_vertex);
+  has_layout_ = true;
+}
+
+// Edge levels: the larger of the two patches' levels on a shared edge.
+std::vector<int> Tessellator::sharedEdgeLevels() const {
+  const std::size_t patch_count = layout_patch_count_;
   std::vector<int> edge_level(4 * patch_count);
   for (std::size_t p = 0; p < patch_count; ++p) {
     for (int e = 0; e < 4; ++e) edge_level[4 * p + e] = layout_requested_levels_[p];
@@ -455,23 +359,29 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
     edge_level[4 * link.patch_a + edgeIndex(link.edge_a)] = shared;
     edge_level[4 * link.patch_b + edgeIndex(link.edge_b)] = shared;
   }
-  // A level-1 patch has no inner vertex to stitch a finer edge to: give it one.
+  return edge_level;
+}
+
+// A level-1 patch has no inner vertex to stitch a finer edge to: give it one.
+void Tessellator::giveLevelOnePatchesAnInnerVertex(const std::vector<int>& edge_level) {
   levels_ = layout_requested_levels_;
-  for (std::size_t p = 0; p < patch_count; ++p) {
+  for (std::size_t p = 0; p < layout_patch_count_; ++p) {
     if (levels_[p] != 1) continue;
     for (int e = 0; e < 4; ++e) {
       if (edge_level[4 * p + e] > 1) levels_[p] = 2;
     }
   }
+}
 
-  // Boundary slots: point k (counter-clockwise) of edge e of patch p; corners appear twice.
-  std::vector<std::uint32_t> slot_first(4 * patch_count + 1, 0);
+Tessellator::BoundarySlots Tessellator::weldBoundarySlots(const std::vector<int>& edge_level) const {
+  const std::size_t patch_count = layout_patch_count_;
+  BoundarySlots slot;
+  slot.first.assign(4 * patch_count + 1, 0);
   for (std::size_t edge = 0; edge < 4 * patch_count; ++edge) {
-    slot_first[edge + 1] = slot_first[edge] + static_cast<std::uint32_t>(edge_level[edge] + 1);
+    slot.first[edge + 1] = slot.first[edge] + static_cast<std::uint32_t>(edge_level[edge] + 1);
   }
-  const std::uint32_t slot_count = slot_first.back();
-  auto slot = [&](std::size_t p, int e, int k) { return slot_first[4 * p + e] + k; };
-  std::vector<std::uint32_t> parent(slot_count);
+  std::vector<std::uint32_t>& parent = slot.parent;
+  parent.resize(slot.first.back());
   std::iota(parent.begin(), parent.end(), 0u);
   for (std::size_t p = 0; p < patch_count; ++p) {
     for (int e = 0; e < 4; ++e) {
@@ -494,7 +404,15 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
     }
   }
 
-  // Vertex numbering: per patch its interior block, then the boundary vertices it owns.
+  return slot;
+}
+
+// Vertex numbering: per patch its interior block, then the boundary vertices it owns. Returns
+// the vertex of every boundary slot.
+std::vector<std::uint32_t> Tessellator::numberVertices(const std::vector<int>& edge_level, BoundarySlots& slot) {
+  const std::size_t patch_count = layout_patch_count_;
+  const std::uint32_t slot_count = slot.first.back();
+  std::vector<std::uint32_t>& parent = slot.parent;
   constexpr std::uint32_t kUnassigned = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> root_vertex(slot_count, kUnassigned);
   std::vector<std::uint32_t> slot_vertex(slot_count);
@@ -547,7 +465,12 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
   mesh_.tangents_u.resize(vertex_count);
   mesh_.tangents_v.resize(vertex_count);
 
-  // Triangles.
+  return slot_vertex;
+}
+
+void Tessellator::buildTriangles(const std::vector<int>& edge_level, const BoundarySlots& slot,
+                                 const std::vector<std::uint32_t>& slot_vertex) {
+  const std::size_t patch_count = layout_patch_count_;
   mesh_.indices.clear();
   mesh_.triangle_patch.clear();
   corner_parameters_.clear();
@@ -619,7 +542,6 @@ void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
       }
     }
   }
-  has_layout_ = true;
 }
 
 void Tessellator::evaluateVertices(const std::vector<BezierPatch>& patches) {

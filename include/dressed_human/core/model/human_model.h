@@ -118,8 +118,17 @@ class HumanModel {
   Skin skin_;
   SkeletonPose pose_;
   Tessellator skin_tessellator_;
-  std::vector<Garment> garments_;
-  std::vector<std::unique_ptr<Tessellator>> garment_tessellators_;
+  // One garment of the outfit and what the model keeps of it between updates.
+  struct DressedGarment {
+    DressedGarment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape);
+    Garment garment;
+    std::unique_ptr<Tessellator> tessellator;  // by pointer: automatic_levels_ is keyed by it
+    std::vector<BezierPatch> rest_patches;     // built in the rest pose
+    VertexCompression compression;             // the per-vertex compression measure
+    std::uint64_t compressed_layout = 0;       // Tessellator::layoutId() `compression` was prepared for
+    std::vector<float> wrinkle_weights;        // per vertex, last levels used
+  };
+  std::vector<DressedGarment> garments_;
   std::vector<SurfacePart> parts_;
   struct AutomaticLevels {
     std::vector<int> levels;        // per patch, the level in use
@@ -135,11 +144,6 @@ class HumanModel {
   };
   std::array<Displacement, 2> displacements_;  // by ReliefKind
   std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced
-  // Per garment: its rest-pose patches, the per-vertex compression measure, the weights.
-  std::vector<std::vector<BezierPatch>> rest_patches_;
-  std::vector<VertexCompression> compressions_;
-  std::vector<std::uint64_t> compressed_layouts_;  // Tessellator::layoutId() each was prepared for
-  std::vector<std::vector<float>> wrinkle_weights_;  // per surface, last levels used
 };
 
 }  // namespace dressed_human

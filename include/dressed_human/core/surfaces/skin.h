@@ -132,6 +132,24 @@ class Skin {
     std::vector<Eigen::Vector3d> profile;  // (z, radius_x, radius_y) of the sections, shape applied
   };
 
+  // A section of a segment's profile: height along the chain (may be shifted into the
+  // neighbour's frame, for slopes only) and semi-axes, shape applied.
+  struct ProfilePoint {
+    double z;
+    Eigen::Vector2d radius;
+  };
+  using Profile = std::vector<ProfilePoint>;
+
+  // The constructor's steps, in order.
+  void joinSegments(const BodyDescription& body);
+  Eigen::Vector3d boneScale(int bone) const;
+  std::vector<Profile> sectionProfiles(const BodyDescription& body, const ForwardKinematics& kinematics) const;
+  // dr/dz at each of segment s's own sections.
+  std::vector<Eigen::Vector2d> profileSlopes(std::size_t s, const std::vector<Profile>& profiles) const;
+  void buildSegmentRings(std::size_t s, const SkinSegmentSpec& spec, const std::vector<Profile>& profiles);
+  std::uint32_t numberPatches();
+  void linkPatches(std::uint32_t patch_count);
+
   void transformRing(const Ring& local, const Eigen::Matrix3d& rotation,
                      const Eigen::Vector3d& translation, Ring& world) const;
   // Writes segment s's patches from its posed rings.

@@ -153,11 +153,19 @@ class Tessellator {
  private:
   struct OwnedBoundaryVertex;
   struct PatchLayout;
+  struct BoundarySlots;
 
   bool layoutMatches(const PatchTopology& topology) const;
   void prepareLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
                      const std::vector<int>& levels);
   void buildLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology);
+  // The steps of buildLayout, in order.
+  std::vector<int> sharedEdgeLevels() const;
+  void giveLevelOnePatchesAnInnerVertex(const std::vector<int>& edge_level);
+  BoundarySlots weldBoundarySlots(const std::vector<int>& edge_level) const;
+  std::vector<std::uint32_t> numberVertices(const std::vector<int>& edge_level, BoundarySlots& slots);
+  void buildTriangles(const std::vector<int>& edge_level, const BoundarySlots& slots,
+                      const std::vector<std::uint32_t>& slot_vertex);
   void evaluateVertices(const std::vector<BezierPatch>& patches);
   const BernsteinTable& boundaryTable(int level);
   const BernsteinTable& interiorTable(int level);

@@ -1,0 +1,130 @@
+#include "dressed_human/core/surfaces/tessellation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+// How fine a patch must be tessellated: the a-priori error bound of a level and the level a
+// geometric or screen-space error asks for.
+namespace dressed_human {
+
+namespace {
+
+// Curvature constant K of the bound K / n^2 (see geometricErrorBound).
+double errorBoundConstant(const BezierPatch& patch) {
+  // Maxima of squared norms, one square root each at the end, on the packed coordinates (row j
+  // of the net is p[12 j .. 12 j + 11], point i of it at 3 i): this runs for every patch every
+  // frame under automatic level of detail, so the loops have fixed bounds and unroll.
+  const double* p = patch.controlPoints().front().data();
+  const auto squared = [](double x, double y, double z) { return x * x + y * y + z * z; };
+  double second_u = 0.0;
+  double second_v = 0.0;
+  double twist = 0.0;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      const double* q = p + 12 * j + 3 * i;
+      second_u = std::max(second_u, squared(q[6] - 2.0 * q[3] + q[0], q[7] - 2.0 * q[4] + q[1], q[8] - 2.0 * q[5] + q[2]));
+    }
+  }
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      const double* q = p + 12 * j + 3 * i;
+      second_v = std::max(second_v, squared(q[24] - 2.0 * q[12] + q[0], q[25] - 2.0 * q[13] + q[1], q[26] - 2.0 * q[14] + q[2]));
+    }
+  }
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      const double* q = p + 12 * j + 3 * i;
+      twist = std::max(twist, squared(q[15] - q[12] - q[3] + q[0], q[16] - q[13] - q[4] + q[1], q[17] - q[14] - q[5] + q[2]));
+    }
+  }
+  const double bound_uu = 6.0 * std::sqrt(second_u);  // sup |F_uu|: F_uu is a Bezier patch on 6 * second differences
+  const double bound_vv = 6.0 * std::sqrt(second_v);
+  const double bound_uv = 9.0 * std::sqrt(twist);     // sup |F_uv|: F_uv is a Bezier patch on 9 * twists
+  return (bound_uu + 2.0 * bound_uv + bound_vv) / 8.0;
+}
+
+int smallestLevelFor(double constant, double allowed, int max_level) {
+  if (!(allowed > 0.0)) return max_level;
+  const double exact = std::sqrt(constant / allowed);
+  if (!(exact < max_level)) return max_level;
+  int level = std::max(1, static_cast<int>(std::ceil(exact)));
+  while (level < max_level && constant / (static_cast<double>(level) * level) > allowed) ++level;
+  return level;
+}
+
+void requireLevelLimit(int max_level) {
+  if (max_level < 1 || max_level > Tessellator::kMaxLevel) {
+    throw std::invalid_argument("tessellation max_level must be in [1, " +
+                                std::to_string(Tessellator::kMaxLevel) + "], got " +
+                                std::to_string(max_level));
+  }
+}
+
+}  // namespace
+
+// M_uu <= 6 max |second u-differences of P|, M_vv likewise, M_uv <= 9 max |twists of P|
+// (the derivative patches are Bezier patches on those differences: convex hull property).
+double geometricErrorBound(const BezierPatch& patch, int level) {
+  if (level < 1) throw std::invalid_argument("geometricErrorBound: level must be >= 1");
+  return errorBoundConstant(patch) / (static_cast<double>(level) * level);
+}
+
+int levelForGeometricError(const BezierPatch& patch, double max_error, int max_level) {
+  requireLevelLimit(max_level);
+  if (!(max_error > 0.0) || !std::isfinite(max_error)) {
+    throw std::invalid_argument("levelForGeometricError: max_error must be finite and > 0");
+  }
+  return smallestLevelFor(errorBoundConstant(patch), max_error, max_level);
+}
+
+// Projection uses the distance to the nearest point of the control net's bounding box, which
+// holds the patch (convex hull property): an error e there covers at most e * f / d pixels at
+// the centre of the view, f = height / (2 tan(fov / 2)) being the focal length in pixels. Off
+// the view axis the true size is up to 1 / cos^2 of the off-axis angle larger; the camera's
+// orientation is not part of the query, so that factor is left to the caller's pixel budget.
+namespace {
+
+// Pixels per metre of error at distance 1 (the focal length in pixels), after checking the query.
+double focalPixels(const CameraView& camera, double max_error_pixels, int max_level) {
+  requireLevelLimit(max_level);
+  if (!camera.position.allFinite() || !(camera.vertical_fov_radians > 0.0) ||
+      !(camera.vertical_fov_radians < M_PI) || !(camera.viewport_height_pixels > 0.0) ||
+      !std::isfinite(camera.viewport_height_pixels)) {
+    throw std::invalid_argument(
+        "levelForScreenError: camera needs a finite position, 0 < fov < pi and a viewport "
+        "height > 0");
+  }
+  if (!(max_error_pixels > 0.0) || !std::isfinite(max_error_pixels)) {
+    throw std::invalid_argument("levelForScreenError: max_error_pixels must be finite and > 0");
+  }
+  return camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
+}
+
+int screenErrorLevel(const BezierPatch& patch, const Eigen::Vector3d& camera_position, double error_per_distance,
+                     int max_level) {
+  const Eigen::Vector3d nearest = camera_position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
+  const double distance = (nearest - camera_position).norm();
+  if (!(distance > 0.0)) return max_level;
+  return smallestLevelFor(errorBoundConstant(patch), error_per_distance * distance, max_level);
+}
+
+}  // namespace
+
+int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
+                           double max_error_pixels, int max_level) {
+  const double focal = focalPixels(camera, max_error_pixels, max_level);
+  return screenErrorLevel(patch, camera.position, max_error_pixels / focal, max_level);
+}
+
+void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
+                          double max_error_pixels, int max_level, std::vector<int>& levels) {
+  const double error_per_distance = max_error_pixels / focalPixels(camera, max_error_pixels, max_level);
+  levels.resize(patches.size());
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    levels[p] = screenErrorLevel(patches[p], camera.position, error_per_distance, max_level);
+  }
+}
+
+}  // namespace dressed_human
