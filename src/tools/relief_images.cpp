@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <initializer_list>
 #include <string>
 
 namespace {
@@ -108,6 +109,17 @@ void writeSkin(const std::string& directory, const std::string& name, const Skin
   writeShaded(directory + "/skin_" + name + ".png", SkinRelief(parameters).render(size, size));
 }
 
+// One figure per value of one parameter, the others as baseSkin(): skin_<name>_<label>.png.
+template <typename Member, typename Label>
+void writeSkinSweep(const std::string& directory, const std::string& name, Member SkinReliefParameters::*member,
+                    std::initializer_list<Member> values, Label label) {
+  for (const Member value : values) {
+    SkinReliefParameters parameters = baseSkin();
+    parameters.*member = value;
+    writeSkin(directory, name + "_" + label(value), parameters);
+  }
+}
+
 void writeSkinSweeps(const std::string& directory) {
   for (double slope : {0.8, 3.0, 12.0}) {
     SkinReliefParameters parameters = baseSkin();
@@ -122,26 +134,10 @@ void writeSkinSweeps(const std::string& directory) {
     parameters.profile.second_inner = {0.9, 0.4};
     writeSkin(directory, "slope_late", parameters);
   }
-  for (double roundness : {0.0, 0.4, 1.0}) {
-    SkinReliefParameters parameters = baseSkin();
-    parameters.roundness = roundness;
-    writeSkin(directory, "roundness_" + percent(roundness), parameters);
-  }
-  for (double jitter : {0.0, 0.2, 0.45}) {
-    SkinReliefParameters parameters = baseSkin();
-    parameters.jitter = jitter;
-    writeSkin(directory, "jitter_" + percent(jitter), parameters);
-  }
-  for (double wobble : {0.0, 0.12, 0.25}) {
-    SkinReliefParameters parameters = baseSkin();
-    parameters.wobble = wobble;
-    writeSkin(directory, "wobble_" + percent(wobble), parameters);
-  }
-  for (int levels : {1, 2, 3}) {
-    SkinReliefParameters parameters = baseSkin();
-    parameters.levels = levels;
-    writeSkin(directory, "levels_" + std::to_string(levels), parameters);
-  }
+  writeSkinSweep(directory, "roundness", &SkinReliefParameters::roundness, {0.0, 0.4, 1.0}, percent);
+  writeSkinSweep(directory, "jitter", &SkinReliefParameters::jitter, {0.0, 0.2, 0.45}, percent);
+  writeSkinSweep(directory, "wobble", &SkinReliefParameters::wobble, {0.0, 0.12, 0.25}, percent);
+  writeSkinSweep(directory, "levels", &SkinReliefParameters::levels, {1, 2, 3}, [](int n) { return std::to_string(n); });
   const double stretch = 2.5;
   for (const auto& [name, angle] : {std::pair<const char*, double>{"none", -1.0}, {"horizontal", 0.0}, {"vertical", M_PI / 2}}) {
     SkinReliefParameters parameters = baseSkin();

@@ -287,27 +287,20 @@ void relief(const std::string& out) {
     const char* name;
     SkinReliefParameters parameters;
   };
-  std::vector<Case> cases;
-  SkinReliefParameters p;
-  p.jitter = 0.0;
-  p.wobble = 0.0;
-  cases.push_back({"cocircular", p});
-  p = {};
-  p.jitter = 0.5;
-  p.levels = 2;
-  cases.push_back({"max_jitter", p});
-  p = {};
-  p.cell_size = 0.1;
-  p.direction_stretch = 10.0;
-  p.direction_angle = M_PI / 2;
-  p.jitter = 0.0;
-  p.wobble = 0.0;
-  cases.push_back({"collinear", p});
-  p = {};
-  p.cell_size = 1.0;
-  p.jitter = 0.5;
-  p.levels = 2;
-  cases.push_back({"one_column", p});
+  // Each case: the defaults with a few parameters pushed to where the construction degenerates.
+  const auto skin = [](auto&& change) {
+    SkinReliefParameters parameters;
+    change(parameters);
+    return parameters;
+  };
+  const std::vector<Case> cases = {
+      {"cocircular", skin([](SkinReliefParameters& p) { p.jitter = 0.0; p.wobble = 0.0; })},
+      {"max_jitter", skin([](SkinReliefParameters& p) { p.jitter = 0.5; p.levels = 2; })},
+      {"collinear", skin([](SkinReliefParameters& p) {
+         p.cell_size = 0.1; p.direction_stretch = 10.0; p.direction_angle = M_PI / 2; p.jitter = 0.0; p.wobble = 0.0;
+       })},
+      {"one_column", skin([](SkinReliefParameters& p) { p.cell_size = 1.0; p.jitter = 0.5; p.levels = 2; })},
+  };
   for (const Case& c : cases) {
     const SkinRelief relief(c.parameters);
     // The brute-force reference path: the figure shows the model, not an accelerated lookup.
