@@ -2,7 +2,12 @@
 // Prints the period, each series' order and residual, and the joint-position error; optionally a
 // CSV of accuracy and evaluation cost against the order, for scripts/chart_fourier_order.py.
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -84,10 +89,48 @@ double parseNumber(const std::string& option, const std::string& text, double mi
   return value;
 }
 
-std::size_t parseCount(const std::string& option, const std::string& text, std::size_t minimum) {
+std::size_t parseCount(const std::string& option, const std::string& text, std::size_t minimum, std::size_t maximum,
+                       const std::string& why_maximum) {
   const double value = parseNumber(option, text, static_cast<double>(minimum));
-  if (value != std::floor(value) || value > 1e9) throw UsageError(option + " expects a whole number, got '" + text + "'");
+  if (value != std::floor(value)) throw UsageError(option + " expects a whole number, got '" + text + "'");
+  if (value > static_cast<double>(maximum)) {
+    throw UsageError(option + " is at most " + std::to_string(maximum) + " (" + why_maximum + "), got '" + text + "'");
+  }
   return static_cast<std::size_t>(value);
+}
+
+double parseNumberWithin(const std::string& option, const std::string& text, double minimum, double maximum,
+                         const std::string& unit) {
+  const double value = parseNumber(option, text, minimum);
+  if (value > maximum) {
+    std::ostringstream message;
+    message << option << " expects a number in [" << minimum << ", " << maximum << "]" << unit << ", got '" << text << "'";
+    throw UsageError(message.str());
+  }
+  return value;
+}
+
+// Why `path` cannot be written as a new or replaced file, or "" if it can: said before the fit,
+// which takes seconds to minutes, rather than after it.
+std::string whyNotWritable(const std::string& path) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) == 0) {
+    if (S_ISDIR(status.st_mode)) return "is a directory";
+    if (::access(path.c_str(), W_OK) != 0) return std::string("the file is not writable: ") + std::strerror(errno);
+    return "";
+  }
+  const std::size_t slash = path.find_last_of('/');
+  const std::string directory = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (::stat(directory.c_str(), &status) != 0) return "no such directory '" + directory + "'";
+  if (!S_ISDIR(status.st_mode)) return "'" + directory + "' is not a directory";
+  if (::access(directory.c_str(), W_OK) != 0) return "the directory '" + directory + "' is not writable: " + std::strerror(errno);
+  return "";
+}
+
+void requireWritable(const std::string& path, const std::string& what) {
+  if (path.empty()) return;
+  const std::string why = whyNotWritable(path);
+  if (!why.empty()) throw std::runtime_error(path + ": cannot write " + what + ": " + why);
 }
 
 std::string stem(const std::string& path) {
@@ -126,25 +169,25 @@ Arguments parseArguments(int argc, char** argv) {
     } else if (arg == "--urdf") {
       args.urdf = value();
     } else if (arg == "--period") {
-      args.fit.period = parseNumber(arg, value(), 1e-6);
+      args.fit.period = parseNumberWithin(arg, value(), dh::MotionLimits::kMinPeriod, dh::MotionLimits::kMaxPeriod, " s");
     } else if (arg == "--tolerance-deg") {
       args.fit.tolerance_degrees = parseNumber(arg, value(), 0.0);
     } else if (arg == "--tolerance-mm") {
       args.fit.tolerance_metres = parseNumber(arg, value(), 0.0) / 1000.0;
     } else if (arg == "--max-order") {
-      args.fit.max_order = parseCount(arg, value(), 1);
+      args.fit.max_order = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "more harmonics than a gait capture holds");
     } else if (arg == "--order") {
-      args.fit.fixed_order = parseCount(arg, value(), 1);
+      args.fit.fixed_order = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "more harmonics than a gait capture holds");
     } else if (arg == "--skip-frames") {
-      args.fit.skip_frames = static_cast<int>(parseCount(arg, value(), 0));
+      args.fit.skip_frames = static_cast<int>(parseCount(arg, value(), 0, 1000000, "frames of a capture"));
     } else if (arg == "--name") {
       args.name = value();
     } else if (arg == "--sweep-csv") {
       args.sweep_csv = value();
     } else if (arg == "--sweep-max") {
-      args.sweep_max = parseCount(arg, value(), 1);
+      args.sweep_max = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "the highest order a motion file may hold");
     } else if (arg == "--timing-calls") {
-      args.timing_calls = parseCount(arg, value(), 1);
+      args.timing_calls = parseCount(arg, value(), 1, 10000000, "each order of the sweep is timed with this many calls");
     } else if (arg == "-q" || arg == "--quiet") {
       args.quiet = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -303,6 +346,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    requireWritable(args.output, "the motion file");
+    requireWritable(args.sweep_csv, "the sweep CSV");
     const dh::Skeleton skeleton = dh::Skeleton::fromUrdfFile(args.urdf);
     const dh::SampledMotion sampled = readCapture(args, skeleton);
     const dh::MotionFit fit = dh::fitMotion(sampled, args.fit);

@@ -21,9 +21,10 @@ Motion randomMotion(std::size_t max_order, unsigned seed) {
     s.period = motion.period;
     s.a0 = coefficient(rng);
     const std::size_t m = order(rng);
+    // Divided by m + 1: within MotionLimits' amplitude (a full turn) at every order.
     for (std::size_t n = 0; n < m; ++n) {
-      s.a.push_back(coefficient(rng));
-      s.b.push_back(coefficient(rng));
+      s.a.push_back(coefficient(rng) / static_cast<double>(m + 1));
+      s.b.push_back(coefficient(rng) / static_cast<double>(m + 1));
     }
   }
   return motion;

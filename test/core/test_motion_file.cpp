@@ -4,6 +4,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "dressed_human/core/motion/motion_file.h"
 
@@ -133,6 +134,51 @@ TEST(MotionFile, ProgrammaticMotionIsValidated) {
     EXPECT_NE(std::string(error.what()).find("l_shoulder.z: 1 cosine coefficients but 0 sine"), std::string::npos)
         << error.what();
   }
+}
+
+// Issue 23: numbers a person cannot have are rejected with the key, the value and the range.
+TEST(MotionFile, AbsurdNumbersAreRejectedWithTheirRange) {
+  struct Case {
+    std::string from, to, expected;
+  };
+  const std::vector<Case> cases = {
+      {"period: 1.1000000000000001", "period: 1e-300", "motion period 1e-300 s is outside [0.1, 60] s"},
+      {"period: 1.1000000000000001", "period: 1e5", "motion period 100000 s is outside [0.1, 60] s"},
+      {"{a0: 0, period: 1}", "{a0: 0, period: 1e-300}", "waist.x: period 1e-300 s is outside [0.1, 60] s"},
+      {"forward_speed: 1.2", "forward_speed: 1e300", "root.forward_speed 1e+300 m/s is outside [-12.5, 12.5] m/s"},
+      {"a0: 1.8600000000000001", "a0: 1e308", "root.translation.z: amplitude 0.5 |a0| + sum |(a_k, b_k)| = 5e+307 m is outside [0, 10] m"},
+      {"0.20000000000000001]", "200]", "waist.y: amplitude 0.5 |a0| + sum |(a_k, b_k)| = 200.1 rad is outside [0, 6.28319] rad"},
+  };
+  for (const Case& c : cases) {
+    std::string text = validText();
+    replaceOnce(text, c.from, c.to);
+    const std::string message = errorOfText(text);
+    EXPECT_NE(message.find("inline.yaml: " + c.expected), std::string::npos) << c.to << " gave: " << message;
+  }
+}
+
+TEST(MotionFile, AnOrderAboveWhatACaptureHoldsIsRejected) {
+  std::string text = validText();
+  std::string a = "a: [", b = "b: [";
+  for (std::size_t k = 0; k < MotionLimits::kMaxOrder + 1; ++k) {
+    a += (k ? ", " : "") + std::string("0");
+    b += (k ? ", " : "") + std::string("0");
+  }
+  replaceOnce(text, "a: [0.10000000000000001, 0.20000000000000001]", a + "]");
+  replaceOnce(text, "b: [0, -0.10000000000000001]", b + "]");
+  EXPECT_NE(errorOfText(text).find("waist.y: order 65 is above 64"), std::string::npos) << errorOfText(text);
+}
+
+TEST(MotionFile, ADuplicatedKeyNamesBothLines) {
+  std::string text = validText();
+  text = "name: first\n" + text + "name: again\n";
+  const std::string message = errorOfText(text);
+  EXPECT_NE(message.find("inline.yaml:"), std::string::npos) << message;
+  EXPECT_NE(message.find(": name: the key appears twice (first at line 1)"), std::string::npos) << message;
+  std::string nested = validText();
+  replaceOnce(nested, "forward_speed: 1.2", "forward_speed: 1.2\n  forward_speed: 9");
+  EXPECT_NE(errorOfText(nested).find("root.forward_speed: the key appears twice"), std::string::npos)
+      << errorOfText(nested);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // and is thrown as the loader's own exception type `Error` (constructible from a string).
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -32,7 +33,31 @@ class YamlReader {
     }
     if (!document || document.IsNull()) throw Error(source_ + ": " + what + " is empty");
     requireMap(document, "(top level)");
+    rejectDuplicateKeys(document, "");
     return document;
+  }
+
+  // yaml-cpp keeps a repeated key and answers lookups with the first one, so the second would be
+  // ignored in silence; YAML 1.2 forbids repeated keys. Checked through the whole document.
+  void rejectDuplicateKeys(const YAML::Node& node, const std::string& key) const {
+    if (node.IsMap()) {
+      std::map<std::string, YAML::Mark> seen;
+      for (const auto& entry : node) {
+        const std::string name = entry.first.IsScalar() ? entry.first.Scalar() : std::string();
+        const std::string child_key = join(key, name);
+        if (entry.first.IsScalar()) {
+          const auto first = seen.emplace(name, entry.first.Mark());
+          if (!first.second) {
+            fail(entry.first, child_key, "the key appears twice (first at line " +
+                                             std::to_string(first.first->second.line + 1) +
+                                             "); YAML does not allow a repeated key");
+          }
+        }
+        rejectDuplicateKeys(entry.second, child_key);
+      }
+    } else if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i) rejectDuplicateKeys(node[i], key + "[" + std::to_string(i) + "]");
+    }
   }
 
   [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const {

@@ -42,14 +42,31 @@ struct RootMotion {
 constexpr std::array<const char*, 3> kRootTranslationNames = {"x", "y", "z"};
 constexpr std::array<const char*, 3> kRootRotationNames = {"roll", "pitch", "yaw"};
 
+// Physical ranges of a motion: the gait cycles, angles, speeds and sizes a person has, and the
+// orders a sampled capture supports. Beyond them a number is an error in the file, not a motion
+// (a period of 1e-300 s is a frequency of 1e300 Hz; a forward speed of 1e300 m/s puts the human
+// 3e300 m away after a second).
+struct MotionLimits {
+  static constexpr double kMinPeriod = 0.1;            // s
+  static constexpr double kMaxPeriod = 60.0;           // s
+  static constexpr double kMaxForwardSpeed = 12.5;     // m/s, the fastest human sprint
+  // Largest |value| a series can reach, 0.5 |a0| + sum_k |(a_k, b_k)|: an angle (joints, root
+  // rotation) within a full turn either way, a root translation within 10 m.
+  static constexpr double kMaxAngle = 6.283185307179586;  // rad
+  static constexpr double kMaxTranslation = 10.0;         // m
+  static constexpr double kMaxPhase = 1000.0;             // rad; sin() keeps ~1e-13 there
+  // A capture at 120 Hz over a ~1.1 s gait cycle holds 66 harmonics (Nyquist); fits use <= 12.
+  static constexpr std::size_t kMaxOrder = 64;
+};
+
 struct Motion {
   std::string name;
   double period = 1.0;                           // the cycle, seconds: loops and start phase refer to it
   std::array<FourierSeries, kDofCount> dofs;     // index joint * 3 + dof, joints in skeleton order
   RootMotion root;
 
-  // Throws MotionError naming the first series with a period <= 0, non-finite numbers or
-  // different counts of cosine and sine coefficients.
+  // Throws MotionError naming the first series with a non-finite number, different counts of
+  // cosine and sine coefficients, or a value outside MotionLimits (the value and the range).
   void validate() const;
   // Every series, DOFs first then root translation x,y,z and rotation roll,pitch,yaw, with a name
   // such as "l_knee.y" or "root.translation.z": for messages and tools.
