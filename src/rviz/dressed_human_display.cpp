@@ -22,7 +22,7 @@
 #include <rviz/view_manager.h>
 #include <tf2_ros/buffer.h>
 
-#include "dressed_human/core/relief/wrinkle_map.h"
+#include "dressed_human/core/skeleton/body_shape_groups.h"
 #include "human_visual.h"
 
 namespace dressed_human {
@@ -31,7 +31,6 @@ namespace {
 enum ReliefMode { kBumpMapping = 0, kFlat = 1, kDisplacedGeometry = 2 };
 enum LodMode { kAutomatic = 0, kFixed = 1 };
 enum VertexSource { kGpuVertices = 0, kCpuVertices = 1 };
-constexpr int kSkinMapSize = 512;
 constexpr double kStaleSeconds = 1.0;
 // Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
 // (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
@@ -40,28 +39,6 @@ constexpr double kPi = 3.14159265358979323846;
 // The Body Shape groups offered as properties (bodyShapeGroups() names), with their labels.
 const std::vector<std::pair<std::string, std::string>> kShapeGroups{
     {"all", "All Bones"}, {"trunk", "Trunk"}, {"head_neck", "Head and Neck"}, {"arms", "Arms"}, {"legs", "Legs"}};
-
-// The skin-relief fields the properties set: a change in any of them needs a new map.
-bool sameSkinParameters(const SkinReliefParameters& a, const SkinReliefParameters& b) {
-  return a.levels == b.levels && a.cell_size == b.cell_size && a.seed == b.seed &&
-         a.direction_angle == b.direction_angle && a.direction_stretch == b.direction_stretch &&
-         a.wobble == b.wobble && a.jitter == b.jitter && a.roundness == b.roundness &&
-         a.profile.first_inner == b.profile.first_inner && a.profile.second_inner == b.profile.second_inner;
-}
-
-// The map with u and v swapped (heights and slopes).
-ReliefMap transposed(const ReliefMap& map) {
-  ReliefMap out(map.height, map.width);
-  for (int row = 0; row < map.height; ++row) {
-    for (int column = 0; column < map.width; ++column) {
-      const std::size_t from = map.index(column, row), to = out.index(row, column);
-      out.heights[to] = map.heights[from];
-      out.slope_u[to] = map.slope_v[from];
-      out.slope_v[to] = map.slope_u[from];
-    }
-  }
-  return out;
-}
 
 bool drawable(const RigidTransform& pose) {
   return pose.translation.allFinite() && pose.translation.cwiseAbs().maxCoeff() <= kMaxDrawableCoordinate &&
@@ -228,10 +205,7 @@ DressedHumanDisplay::DressedHumanDisplay() {
   vertex_evaluation_property_->addOption("CPU", kCpuVertices);
 }
 
-DressedHumanDisplay::~DressedHumanDisplay() {
-  if (skin_relief_.valid()) skin_relief_.wait();
-  if (wrinkle_relief_.valid()) wrinkle_relief_.wait();
-}
+DressedHumanDisplay::~DressedHumanDisplay() = default;
 
 void DressedHumanDisplay::onInitialize() {
   try {
@@ -245,40 +219,13 @@ void DressedHumanDisplay::onInitialize() {
   updateGarmentColourVisibility();
   loadRobotDescription();
   regenerateSkinRelief();
-  // The garments' wrinkle texture: X-pattern buckling at mild compression (SPEC §4), once; a few
-  // large cells per patch, as cloth buckles at the scale of a hand, not of a knit.
-  // Y-Y chains: the pattern wrinkle placement picks for the default garments' patches (their
-  // surfaces turn about half a bend angle per cell; wrinkle_placement.h), at a strong
-  // compression; the per-vertex wrinkle weight from the posed garment (HumanModel) decides
-  // where and how much of it shows. The map compresses along its rows (v); knees and elbows
-  // compress garments along the limb, patch u: hence the transpose.
-  WrinkleMapSpec spec;
-  spec.chain = "YY";
-  spec.cells_around = 2;
-  spec.rows = 2;
-  spec.alpha = {0.8};
-  // A tile spans cells_around cells of 2 L_x each (wrinkle_map.h): heights in L_x units.
-  cloth_height_to_tile_ = static_cast<float>(1.0 / (2.0 * spec.cell.half_width_x * spec.cells_around));
-  wrinkle_relief_ = std::async(std::launch::async, [spec] { return transposed(makeWrinkleMap(spec)); });
+  relief_jobs_.startCloth();
 }
 
 void DressedHumanDisplay::updateGarmentColourVisibility() {
   upper_colour_property_->setHidden(file_colours_property_->getBool());
   lower_colour_property_->setHidden(file_colours_property_->getBool());
   rebuildModel();
-}
-
-void DressedHumanDisplay::pollWrinkleRelief() {
-  if (!wrinkle_relief_.valid() || wrinkle_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  try {
-    auto map = std::make_shared<const ReliefMap>(wrinkle_relief_.get());
-    if (visual_) visual_->setNormalMap(ReliefKind::kCloth, encodeNormalMapRgb(*map), map->width, map->height, 1.0f);
-    cloth_map_ = std::move(map);
-    clearError("Wrinkle relief");
-  } catch (const std::exception& error) {
-    reportError("Wrinkle relief", error.what());
-  }
-  updateAppearance();
 }
 
 void DressedHumanDisplay::onEnable() {
@@ -343,26 +290,19 @@ void DressedHumanDisplay::loadRobotDescription() {
 
 void DressedHumanDisplay::updateBodyShape() {
   if (!body_ || !skeleton_) return;
-  BodyShape shape = body_->shape;
+  std::vector<ShapeGroupScale> groups;
   for (const auto& entry : shape_properties_) {
     const Ogre::Vector3 abc = entry.second->getVector();
-    for (int k = 0; k < 3; ++k) {
-      if (!(abc[k] >= 0.2f && abc[k] <= 5.0f)) {
-        reportError("Body Shape", entry.second->getName().toStdString() + ": " + "abc"[k] + " = " +
-                                      std::to_string(abc[k]) + " is outside [0.2, 5]; keeping the previous shape");
-        return;
-      }
-    }
-    for (const auto& group : bodyShapeGroups()) {
-      if (group.first != entry.first) continue;
-      for (const std::string& bone : group.second) {
-        const int index = skeleton_->findBone(bone);
-        if (index >= 0) shape.scale[static_cast<std::size_t>(index)].array() *= Eigen::Array3d(abc.x, abc.y, abc.z);
-      }
-    }
+    groups.push_back({entry.first, Eigen::Vector3d(abc.x, abc.y, abc.z)});
+  }
+  try {
+    shape_ = scaleBodyShapeGroups(body_->shape, *skeleton_, groups);
+  } catch (const ShapeGroupScaleError& error) {
+    reportError("Body Shape", shape_properties_[error.entry].second->getName().toStdString() + ": " + error.what() +
+                                  "; keeping the previous shape");
+    return;
   }
   clearError("Body Shape");
-  shape_ = shape;
   rebuildModel();
 }
 
@@ -384,6 +324,7 @@ void DressedHumanDisplay::rebuildModel() {
     BodyDescription shaped = *body_;
     shaped.shape = shape_;
     model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
+    kinematics_ = std::make_unique<ForwardKinematics>(*skeleton_, shape_);
     clearError("Model");
     updateVertexEvaluation();
   } catch (const std::exception& error) {
@@ -434,10 +375,10 @@ void DressedHumanDisplay::applyDisplacement() {
   try {
     // Until a map has been generated its kind stays undisplaced; the poll that delivers it
     // calls back here.
-    model_->setDisplacement(ReliefKind::kSkin, displaced ? skin_map_ : nullptr, 1.0f, 1.0f,
+    model_->setDisplacement(ReliefKind::kSkin, displaced ? relief_jobs_.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f,
                             relief_strength_property_->getFloat());
-    model_->setDisplacement(ReliefKind::kCloth, displaced ? cloth_map_ : nullptr, 1.0f, cloth_height_to_tile_,
-                            wrinkle_strength_property_->getFloat());
+    model_->setDisplacement(ReliefKind::kCloth, displaced ? relief_jobs_.map(ReliefKind::kCloth) : nullptr, 1.0f,
+                            ReliefMapJobs::clothHeightToTile(), wrinkle_strength_property_->getFloat());
     clearError("Relief");
   } catch (const std::exception& error) {
     reportError("Relief", error.what());
@@ -445,15 +386,8 @@ void DressedHumanDisplay::applyDisplacement() {
 }
 
 void DressedHumanDisplay::regenerateSkinRelief() {
-  if (skin_relief_.valid() &&
-      skin_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
-    return;  // pollSkinRelief() starts another run with the current properties when this one ends
-  }
-  const SkinReliefParameters parameters = skinParametersFromProperties();
-  // Generated off rviz's thread: a 512^2 map takes a noticeable fraction of a second. A bad
-  // parameter throws inside the job and is reported when it is collected (pollSkinRelief).
-  skin_relief_ = std::async(std::launch::async, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
-  requested_skin_parameters_ = parameters;
+  // Built off rviz's thread; a change meanwhile is built when the running map is done.
+  relief_jobs_.requestSkin(skinParametersFromProperties());
 }
 
 SkinReliefParameters DressedHumanDisplay::skinParametersFromProperties() const {
@@ -470,18 +404,17 @@ SkinReliefParameters DressedHumanDisplay::skinParametersFromProperties() const {
   return parameters;
 }
 
-void DressedHumanDisplay::pollSkinRelief() {
-  if (!skin_relief_.valid() || skin_relief_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  try {
-    auto map = std::make_shared<const ReliefMap>(skin_relief_.get());
-    if (visual_) visual_->setNormalMap(ReliefKind::kSkin, encodeNormalMapRgb(*map), map->width, map->height, 1.0f);
-    skin_map_ = std::move(map);
-    clearError("Skin relief");
-  } catch (const std::exception& error) {
-    reportError("Skin relief", error.what());
+void DressedHumanDisplay::pollReliefMaps() {
+  for (const FinishedReliefMap& done : relief_jobs_.poll()) {
+    const std::string status = done.kind == ReliefKind::kSkin ? "Skin relief" : "Wrinkle relief";
+    if (done.map) {
+      if (visual_) visual_->setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
+      clearError(status);
+    } else {
+      reportError(status, done.error);
+    }
+    updateAppearance();
   }
-  if (!sameSkinParameters(skinParametersFromProperties(), requested_skin_parameters_)) regenerateSkinRelief();
-  updateAppearance();
 }
 
 bool DressedHumanDisplay::lookUpBones() {
@@ -544,23 +477,15 @@ bool DressedHumanDisplay::lookUpBones() {
 bool DressedHumanDisplay::lookUpBonesAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report) {
   bool all_found = true;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
-    // Each bone relative to its parent (bones come parents first), composed here: tf2 then walks
-    // the three links of one joint instead of the whole chain from the fixed frame every time.
+    // Each bone relative to its parent, composed by the core below: tf2 then walks the three
+    // links of one joint instead of the whole chain from the fixed frame every time.
     const Bone& bone = skeleton_->bone(b);
-    const RigidTransform& parent = bone.parent < 0 ? root_ : bones_[static_cast<std::size_t>(bone.parent)];
-    // Eq. 5: the joint sits at the parent's shaped offset (as ForwardKinematics puts it); TF
-    // carries the URDF's unshaped skeleton, so only its rotations are taken as they are.
-    const Eigen::Vector3d parent_scale =
-        bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
     const std::string& parent_frame = bone.parent < 0 ? skeleton_->rootFrame() : bone_frames_[static_cast<std::size_t>(bone.parent)];
     try {
       // A bone on a fixed URDF joint (clavicles, pelvis halves) sits where the URDF puts it:
       // no lookup needed, and none that could fail.
-      const RigidTransform local =
-          bone.joint < 0 ? RigidTransform{bone.rest_translation, bone.rest_rotation}
-                         : toRigid(buffer.lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
-      bones_[b].translation = parent.translation + parent.rotation * parent_scale.cwiseProduct(local.translation);
-      bones_[b].rotation = parent.rotation * local.rotation;
+      bone_in_parent_[b] = bone.joint < 0 ? RigidTransform{bone.rest_translation, bone.rest_rotation}
+                                          : toRigid(buffer.lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
       clearError(bone_status_names_[b]);
     } catch (const tf2::TransformException& error) {
       if (!report) return false;
@@ -568,6 +493,8 @@ bool DressedHumanDisplay::lookUpBonesAt(const tf2_ros::Buffer& buffer, const ros
       all_found = false;
     }
   }
+  // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
+  if (all_found) kinematics_->composeUnshaped(root_, bone_in_parent_, bones_);
   return all_found;
 }
 
@@ -596,8 +523,7 @@ void DressedHumanDisplay::update(float, float) {
 }
 
 void DressedHumanDisplay::updateSurfaces() {
-  pollSkinRelief();
-  pollWrinkleRelief();
+  pollReliefMaps();
   if (!model_ || !visual_ || !lookUpBones() || !posesDrawable()) return;
   LevelOfDetail lod;
   lod.level = lod_level_property_->getInt();

@@ -3,7 +3,6 @@
 // skeleton's TF frames. Owns the properties and the TF lookups; HumanVisual owns the Ogre side.
 
 #include <array>
-#include <future>
 #include <map>
 #include <memory>
 #include <string>
@@ -14,7 +13,7 @@
 #include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/model/human_model.h"
-#include "dressed_human/core/relief/relief_map.h"
+#include "dressed_human/core/model/relief_map_jobs.h"
 #include "dressed_human/core/relief/skin_relief.h"
 
 namespace rviz {
@@ -64,8 +63,7 @@ class DressedHumanDisplay : public rviz::Display {
   void updateSurfaces();
   void reportError(const std::string& name, const std::string& text, bool transient = false);
   void clearError(const std::string& name);
-  void pollSkinRelief();
-  void pollWrinkleRelief();
+  void pollReliefMaps();
   void applyDisplacement();
   void drawSkeleton();
   SkinReliefParameters skinParametersFromProperties() const;
@@ -117,18 +115,14 @@ class DressedHumanDisplay : public rviz::Display {
   BodyShape shape_;                         // the file's shape times the Body Shape properties
   std::unique_ptr<HumanModel> model_;
   std::unique_ptr<HumanVisual> visual_;
-  std::future<ReliefMap> skin_relief_;
-  std::future<ReliefMap> wrinkle_relief_;
-  // What the running skin-relief job was started with; a property change meanwhile is picked
-  // up when it finishes.
-  SkinReliefParameters requested_skin_parameters_;
-  // The finished maps, kept for the displaced-geometry mode (the GPU has its own copies).
-  std::shared_ptr<const ReliefMap> skin_map_, cloth_map_;
-  float cloth_height_to_tile_ = 1.0f;
+  std::unique_ptr<ForwardKinematics> kinematics_;  // the skeleton with shape_, composing TF's bones
+  // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode.
+  ReliefMapJobs relief_jobs_;
   std::map<std::string, std::string> logged_errors_;
   double update_cpu_seconds_ = 0.0;
   int update_count_ = 0;
   RigidTransform root_;
+  std::array<RigidTransform, kBoneCount> bone_in_parent_;  // as TF carries them, unshaped
   std::array<RigidTransform, kBoneCount> bones_;
 };
 
