@@ -5,40 +5,29 @@
 #include <cstdio>
 #include <ctime>
 
-#include <OgreCamera.h>
-#include <OgreViewport.h>
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/package.h>
 #include <rviz/display_context.h>
 #include <rviz/frame_manager.h>
-#include <rviz/properties/bool_property.h>
-#include <rviz/properties/color_property.h>
-#include <rviz/properties/enum_property.h>
-#include <rviz/properties/float_property.h>
-#include <rviz/properties/int_property.h>
-#include <rviz/properties/string_property.h>
-#include <rviz/properties/vector_property.h>
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
 #include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
 #include "human_visual.h"
+#include "properties/body_properties.h"
+#include "properties/debug_properties.h"
+#include "properties/garment_properties.h"
+#include "properties/lod_properties.h"
+#include "properties/relief_properties.h"
 
 namespace dressed_human {
 namespace {
 
-enum ReliefMode { kBumpMapping = 0, kFlat = 1, kDisplacedGeometry = 2 };
-enum LodMode { kAutomatic = 0, kFixed = 1 };
-enum VertexSource { kGpuVertices = 0, kCpuVertices = 1 };
 constexpr double kStaleSeconds = 1.0;
 // Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
 // (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
 constexpr double kMaxDrawableCoordinate = 1e5;
-constexpr double kPi = 3.14159265358979323846;
-// The Body Shape groups offered as properties (bodyShapeGroups() names), with their labels.
-const std::vector<std::pair<std::string, std::string>> kShapeGroups{
-    {"all", "All Bones"}, {"trunk", "Trunk"}, {"head_neck", "Head and Neck"}, {"arms", "Arms"}, {"legs", "Legs"}};
 
 bool drawable(const RigidTransform& pose) {
   return pose.translation.allFinite() && pose.translation.cwiseAbs().maxCoeff() <= kMaxDrawableCoordinate &&
@@ -79,130 +68,32 @@ void DressedHumanDisplay::clearError(const std::string& name) {
   logged_errors_.erase(reported);
 }
 
-DressedHumanDisplay::DressedHumanDisplay() {
-  description_property_ = new rviz::StringProperty(
-      "Robot Description", "robot_description",
-      "Parameter holding the human's URDF (urdf/human.urdf, optionally with a _<id> suffix).", this,
-      SLOT(loadRobotDescription()));
-  const std::string package = ros::package::getPath("dressed_human");
-  body_file_property_ = new rviz::StringProperty(
-      "Body Description", QString::fromStdString(package + "/config/bodies/default.yaml"),
-      "YAML file with the skin's cross-sections and the body shape (Eq. 5).", this, SLOT(loadRobotDescription()));
-  outfit_property_ = new rviz::EnumProperty("Outfit", "jacket_skirt", "What the human wears (SPEC §3).", this,
-                                            SLOT(rebuildModel()));
-  for (const char* outfit : {"none", "one_piece", "jacket_skirt", "jacket_pants"}) outfit_property_->addOption(outfit);
-  skirt_length_property_ = new rviz::FloatProperty(
-      "Skirt Length", -1.0,
-      "Normalized skirt length c (Eq. 8'): 0 mini, knee length c_k, 1 long. Negative: as the garment file says.",
-      this, SLOT(rebuildModel()));
-  skirt_length_property_->setMax(1.0);
-  file_colours_property_ = new rviz::BoolProperty("Garment Colours From Files", true,
-                                                  "Use the colours of config/garments/*.yaml.", this,
-                                                  SLOT(updateGarmentColourVisibility()));
-  upper_colour_property_ = new rviz::ColorProperty("Upper Garment Colour", QColor(56, 82, 148),
-                                                   "Jacket or one-piece.", file_colours_property_, SLOT(rebuildModel()), this);
-  lower_colour_property_ = new rviz::ColorProperty("Lower Garment Colour", QColor(184, 56, 77), "Skirt or pants.",
-                                                   file_colours_property_, SLOT(rebuildModel()), this);
-  relief_mode_property_ = new rviz::EnumProperty(
-      "Relief", "Bump mapping",
-      "Bump mapping: per-pixel normals from the relief maps. Displaced geometry: the relief heights move the "
-      "vertices of a finer mesh (the reference bump mapping approximates; costs far more). Flat: no relief.",
-      this, SLOT(updateAppearance()));
-  relief_mode_property_->addOption("Bump mapping", kBumpMapping);
-  relief_mode_property_->addOption("Flat", kFlat);
-  relief_mode_property_->addOption("Displaced geometry", kDisplacedGeometry);
-  displacement_level_property_ = new rviz::IntProperty(
-      "Displacement Level", 24, "Displaced geometry: each patch is cut n x n, whatever the level of detail (4-32).",
-      relief_mode_property_, SLOT(updateAppearance()), this);
-  displacement_level_property_->setMin(4);
-  displacement_level_property_->setMax(Tessellator::kMaxLevel);
-  relief_strength_property_ = new rviz::FloatProperty("Relief Strength", 1.0, "Scales the relief's normal tilt.",
-                                                      this, SLOT(updateAppearance()));
-  relief_strength_property_->setMin(0.0);
-  relief_strength_property_->setMax(5.0);
-  wrinkle_strength_property_ = new rviz::FloatProperty(
-      "Wrinkle Strength", 0.6, "Scales the garments' buckling-wrinkle relief.", this, SLOT(updateAppearance()));
-  wrinkle_strength_property_->setMin(0.0);
-  wrinkle_strength_property_->setMax(5.0);
-  skin_colour_property_ = new rviz::ColorProperty("Skin Colour", QColor(222, 184, 158), "Colour of the skin.", this,
-                                                  SLOT(rebuildModel()));
-  skin_levels_property_ = new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", this,
-                                                SLOT(regenerateSkinRelief()));
-  skin_levels_property_->setMin(1);
-  skin_levels_property_->setMax(3);
-  skin_cell_size_property_ = new rviz::FloatProperty(
-      "Skin Cell Size", 1.0 / 12.0, "Level-1 cell spacing as a fraction of the relief tile.", this,
-      SLOT(regenerateSkinRelief()));
-  skin_cell_size_property_->setMin(0.01);
-  skin_cell_size_property_->setMax(1.0);
-  skin_seed_property_ = new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", this,
-                                              SLOT(regenerateSkinRelief()));
-  skin_seed_property_->setMin(0);
-  const SkinReliefParameters skin_defaults;
-  skin_direction_property_ = new rviz::FloatProperty(
-      "Skin Direction", 0.0, "Degrees from the patch's u axis (along the limb) that the cells are stretched along.",
-      this, SLOT(regenerateSkinRelief()));
-  skin_direction_property_->setMin(-180.0);
-  skin_direction_property_->setMax(180.0);
-  skin_stretch_property_ = new rviz::FloatProperty(
-      "Skin Stretch", static_cast<float>(skin_defaults.direction_stretch),
-      "Directionality: cell elongation along Skin Direction (1 = none, up to 4).", this, SLOT(regenerateSkinRelief()));
-  skin_stretch_property_->setMin(1.0);
-  skin_stretch_property_->setMax(4.0);
-  skin_wobble_property_ = new rviz::FloatProperty(
-      "Skin Wobble", static_cast<float>(skin_defaults.wobble),
-      "Midpoint displacement of the cell walls, as a fraction of the wall length (0-0.3).", this,
-      SLOT(regenerateSkinRelief()));
-  skin_wobble_property_->setMin(0.0);
-  skin_wobble_property_->setMax(0.3);
-  skin_jitter_property_ = new rviz::FloatProperty(
-      "Skin Jitter", static_cast<float>(skin_defaults.jitter),
-      "Random seed displacement, as a fraction of the cell spacing (0 = hexagons, up to 0.5).", this,
-      SLOT(regenerateSkinRelief()));
-  skin_jitter_property_->setMin(0.0);
-  skin_jitter_property_->setMax(0.5);
-  skin_slope_property_ = new rviz::FloatProperty(
-      "Skin Slope", 3.0f,  // SkinReliefParameters' default profile
-      "Steepness of the cell cross-section at its wall (0.5-10).", this, SLOT(regenerateSkinRelief()));
-  skin_slope_property_->setMin(0.5);
-  skin_slope_property_->setMax(10.0);
-  skin_roundness_property_ = new rviz::FloatProperty(
-      "Skin Roundness", static_cast<float>(skin_defaults.roundness), "0: polygonal cell contours, 1: round.", this,
-      SLOT(regenerateSkinRelief()));
-  skin_roundness_property_->setMin(0.0);
-  skin_roundness_property_->setMax(1.0);
-  body_shape_category_ = new rviz::Property(
-      "Body Shape", QVariant(), "Eq. 5 scale factors (a, b, c) = (x, y thickness, z length along the bone), "
-      "multiplying the body file's shape; lengths move the joints, so the TF skeleton's proportions change too.",
-      this);
-  for (const auto& group : kShapeGroups) {
-    auto* property = new rviz::VectorProperty(QString::fromStdString(group.second), Ogre::Vector3(1.0f, 1.0f, 1.0f),
-                                              "(a, b, c) for this group, each in [0.2, 5].", body_shape_category_,
-                                              SLOT(updateBodyShape()), this);
-    shape_properties_.emplace_back(group.first, property);
+DressedHumanDisplay::DressedHumanDisplay()
+    : body_properties_(new BodyProperties(this)),
+      garment_properties_(new GarmentProperties(this)),
+      relief_properties_(new ReliefProperties(this)),
+      lod_properties_(new LodProperties(this)),
+      debug_properties_(new DebugProperties(this)) {
+  connect(body_properties_.get(), SIGNAL(descriptionChanged()), this, SLOT(loadRobotDescription()));
+  connect(body_properties_.get(), SIGNAL(shapeChanged()), this, SLOT(updateBodyShape()));
+  connect(body_properties_.get(), SIGNAL(skinColourChanged()), this, SLOT(rebuildModel()));
+  connect(garment_properties_.get(), SIGNAL(changed()), this, SLOT(rebuildModel()));
+  connect(relief_properties_.get(), SIGNAL(appearanceChanged()), this, SLOT(updateAppearance()));
+  connect(relief_properties_.get(), SIGNAL(skinMapChanged()), this, SLOT(regenerateSkinRelief()));
+  connect(lod_properties_.get(), SIGNAL(vertexEvaluationChanged()), this, SLOT(updateVertexEvaluation()));
+  connect(debug_properties_.get(), SIGNAL(changed()), this, SLOT(updateAppearance()));
+}
+
+void DressedHumanDisplay::load(const rviz::Config& config) {
+  rviz::Display::load(config);
+  // "Relief Strength" was renamed "Skin Relief Strength" (beside "Wrinkle Strength", the cloth's).
+  float strength = 0.0f;
+  if (config.mapGetFloat("Relief Strength", &strength)) {
+    const bool renamed = config.mapGetChild("Skin Relief Strength").isValid();
+    if (!renamed) relief_properties_->setSkinStrength(strength);
+    ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': the configuration's 'Relief Strength' is deprecated%s; "
+                   "it is now 'Skin Relief Strength'", getName().toStdString().c_str(), renamed ? " (ignored)" : "");
   }
-  show_skeleton_property_ = new rviz::BoolProperty("Show Skeleton", false,
-                                                   "Draw the bones as lines, visible through skin and garments.",
-                                                   this, SLOT(updateAppearance()));
-  lod_mode_property_ = new rviz::EnumProperty(
-      "Level of Detail", "Automatic",
-      "Automatic: tessellation follows the human's size on screen. Fixed: the level below.", this);
-  lod_mode_property_->addOption("Automatic", kAutomatic);
-  lod_mode_property_->addOption("Fixed", kFixed);
-  lod_level_property_ = new rviz::IntProperty("Tessellation Level", 6,
-                                              "Fixed level: each patch is cut n x n (1-32).", this);
-  lod_level_property_->setMin(1);
-  lod_level_property_->setMax(32);
-  lod_pixels_property_ = new rviz::FloatProperty("Max Screen Error", 1.0,
-                                                 "Automatic level: largest geometric error in pixels.", this);
-  lod_pixels_property_->setMin(0.1);
-  vertex_evaluation_property_ = new rviz::EnumProperty(
-      "Vertex Evaluation", "GPU",
-      "GPU: the vertex shader evaluates the Bezier patches from their control points; rviz's thread only poses "
-      "the control points. CPU: every vertex is evaluated and sent each frame. Displaced geometry is always CPU.",
-      this, SLOT(updateVertexEvaluation()));
-  vertex_evaluation_property_->addOption("GPU", kGpuVertices);
-  vertex_evaluation_property_->addOption("CPU", kCpuVertices);
 }
 
 DressedHumanDisplay::~DressedHumanDisplay() = default;
@@ -216,16 +107,10 @@ void DressedHumanDisplay::onInitialize() {
   } catch (const std::exception& error) {
     reportError("Material", error.what());
   }
-  updateGarmentColourVisibility();
+  garment_properties_->updateVisibility();
   loadRobotDescription();
   regenerateSkinRelief();
   relief_jobs_.startCloth();
-}
-
-void DressedHumanDisplay::updateGarmentColourVisibility() {
-  upper_colour_property_->setHidden(file_colours_property_->getBool());
-  lower_colour_property_->setHidden(file_colours_property_->getBool());
-  rebuildModel();
 }
 
 void DressedHumanDisplay::onEnable() {
@@ -252,7 +137,7 @@ void DressedHumanDisplay::loadRobotDescription() {
   model_.reset();
   body_.reset();
   skeleton_.reset();
-  const std::string parameter = description_property_->getStdString();
+  const std::string parameter = body_properties_->descriptionParameter();
   std::string urdf;
   if (parameter.empty() || !update_nh_.getParam(parameter, urdf)) {
     reportError("URDF", "parameter '" + parameter + "' is not set");
@@ -279,7 +164,7 @@ void DressedHumanDisplay::loadRobotDescription() {
     return;
   }
   try {
-    body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_file_property_->getStdString(), *skeleton_));
+    body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_properties_->bodyFile(), *skeleton_));
     clearError("Body Description");
   } catch (const std::exception& error) {
     reportError("Body Description", error.what());
@@ -290,15 +175,10 @@ void DressedHumanDisplay::loadRobotDescription() {
 
 void DressedHumanDisplay::updateBodyShape() {
   if (!body_ || !skeleton_) return;
-  std::vector<ShapeGroupScale> groups;
-  for (const auto& entry : shape_properties_) {
-    const Ogre::Vector3 abc = entry.second->getVector();
-    groups.push_back({entry.first, Eigen::Vector3d(abc.x, abc.y, abc.z)});
-  }
   try {
-    shape_ = scaleBodyShapeGroups(body_->shape, *skeleton_, groups);
+    shape_ = scaleBodyShapeGroups(body_->shape, *skeleton_, body_properties_->shapeGroups());
   } catch (const ShapeGroupScaleError& error) {
-    reportError("Body Shape", shape_properties_[error.entry].second->getName().toStdString() + ": " + error.what() +
+    reportError("Body Shape", body_properties_->shapeGroupLabel(error.entry) + ": " + error.what() +
                                   "; keeping the previous shape");
     return;
   }
@@ -309,18 +189,10 @@ void DressedHumanDisplay::updateBodyShape() {
 void DressedHumanDisplay::rebuildModel() {
   if (!skeleton_ || !body_) return;
   HumanModelSettings settings;
-  const auto rgba = [](const QColor& c) {
-    return Eigen::Vector4f(static_cast<float>(c.redF()), static_cast<float>(c.greenF()), static_cast<float>(c.blueF()), 1.0f);
-  };
-  settings.skin_colour = rgba(skin_colour_property_->getColor());
+  settings.skin_colour = body_properties_->skinColour();
   settings.garment_directory = ros::package::getPath("dressed_human") + "/config/garments";
-  settings.skirt_length = skirt_length_property_->getFloat();
-  if (!file_colours_property_->getBool()) {
-    for (const char* upper : {"jacket", "one_piece"}) settings.garment_colours[upper] = rgba(upper_colour_property_->getColor());
-    for (const char* lower : {"skirt", "pants"}) settings.garment_colours[lower] = rgba(lower_colour_property_->getColor());
-  }
   try {
-    settings.outfit = outfitFromName(outfit_property_->getStdString());
+    garment_properties_->apply(settings);
     BodyDescription shaped = *body_;
     shaped.shape = shape_;
     model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
@@ -344,7 +216,7 @@ void DressedHumanDisplay::updateVertexEvaluation() {
                 " patches, the vertex shader holds " + std::to_string(ReliefMaterial::kMaxPatches);
     }
   }
-  const bool gpu = vertex_evaluation_property_->getOptionInt() == kGpuVertices;
+  const bool gpu = lod_properties_->gpuVertices();
   if (gpu && !problem.empty()) {
     const std::string text = problem + "; the CPU evaluates the vertices";
     setStatusStd(rviz::StatusProperty::Warn, "Vertex Evaluation", text);
@@ -360,25 +232,25 @@ void DressedHumanDisplay::updateVertexEvaluation() {
 void DressedHumanDisplay::updateAppearance() {
   applyDisplacement();
   if (!visual_) return;
-  const bool bump = relief_mode_property_->getOptionInt() == kBumpMapping;
-  displacement_level_property_->setHidden(relief_mode_property_->getOptionInt() != kDisplacedGeometry);
+  const bool bump = relief_properties_->mode() == ReliefMode::kBumpMapping;
+  relief_properties_->updateVisibility();
   // Displaced geometry carries its relief in the mesh normals: the shader must not add it again.
-  visual_->setReliefStrength(ReliefKind::kSkin, bump ? relief_strength_property_->getFloat() : 0.0f);
-  visual_->setReliefStrength(ReliefKind::kCloth, bump ? wrinkle_strength_property_->getFloat() : 0.0f);
-  visual_->setSkeletonVisible(show_skeleton_property_->getBool());
+  visual_->setReliefStrength(ReliefKind::kSkin, bump ? relief_properties_->skinStrength() : 0.0f);
+  visual_->setReliefStrength(ReliefKind::kCloth, bump ? relief_properties_->wrinkleStrength() : 0.0f);
+  visual_->setSkeletonVisible(debug_properties_->showSkeleton());
   context_->queueRender();
 }
 
 void DressedHumanDisplay::applyDisplacement() {
   if (!model_) return;
-  const bool displaced = relief_mode_property_->getOptionInt() == kDisplacedGeometry;
+  const bool displaced = relief_properties_->mode() == ReliefMode::kDisplacedGeometry;
   try {
     // Until a map has been generated its kind stays undisplaced; the poll that delivers it
     // calls back here.
     model_->setDisplacement(ReliefKind::kSkin, displaced ? relief_jobs_.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f,
-                            relief_strength_property_->getFloat());
+                            relief_properties_->skinStrength());
     model_->setDisplacement(ReliefKind::kCloth, displaced ? relief_jobs_.map(ReliefKind::kCloth) : nullptr, 1.0f,
-                            ReliefMapJobs::clothHeightToTile(), wrinkle_strength_property_->getFloat());
+                            ReliefMapJobs::clothHeightToTile(), relief_properties_->wrinkleStrength());
     clearError("Relief");
   } catch (const std::exception& error) {
     reportError("Relief", error.what());
@@ -387,21 +259,7 @@ void DressedHumanDisplay::applyDisplacement() {
 
 void DressedHumanDisplay::regenerateSkinRelief() {
   // Built off rviz's thread; a change meanwhile is built when the running map is done.
-  relief_jobs_.requestSkin(skinParametersFromProperties());
-}
-
-SkinReliefParameters DressedHumanDisplay::skinParametersFromProperties() const {
-  SkinReliefParameters parameters;
-  parameters.levels = skin_levels_property_->getInt();
-  parameters.cell_size = skin_cell_size_property_->getFloat();
-  parameters.seed = static_cast<std::uint32_t>(skin_seed_property_->getInt());
-  parameters.direction_angle = skin_direction_property_->getFloat() * kPi / 180.0;
-  parameters.direction_stretch = skin_stretch_property_->getFloat();
-  parameters.wobble = skin_wobble_property_->getFloat();
-  parameters.jitter = skin_jitter_property_->getFloat();
-  parameters.profile = BezierProfile::fromEdgeSlope(skin_slope_property_->getFloat());
-  parameters.roundness = skin_roundness_property_->getFloat();
-  return parameters;
+  relief_jobs_.requestSkin(relief_properties_->skinParameters());
 }
 
 void DressedHumanDisplay::pollReliefMaps() {
@@ -526,24 +384,16 @@ void DressedHumanDisplay::updateSurfaces() {
   pollReliefMaps();
   if (!model_ || !visual_ || !lookUpBones() || !posesDrawable()) return;
   LevelOfDetail lod;
-  lod.level = lod_level_property_->getInt();
-  lod.automatic = lod_mode_property_->getOptionInt() == kAutomatic;
-  if (relief_mode_property_->getOptionInt() == kDisplacedGeometry) {
-    lod.automatic = false;  // relief in the geometry needs vertices at the relief's scale
-    lod.level = displacement_level_property_->getInt();
-  }
-  if (lod.automatic) {
-    const Ogre::Camera* camera = context_->getViewManager()->getCurrent()->getCamera();
-    const Ogre::Vector3 eye = camera->getDerivedPosition();
-    lod.camera.position = {eye.x, eye.y, eye.z};
-    lod.camera.vertical_fov_radians = camera->getFOVy().valueRadians();
-    lod.camera.viewport_height_pixels = camera->getViewport() ? camera->getViewport()->getActualHeight() : 1000.0;
-    lod.max_error_pixels = lod_pixels_property_->getFloat();
+  if (relief_properties_->mode() == ReliefMode::kDisplacedGeometry) {
+    lod.level = relief_properties_->displacementLevel();  // relief in the geometry needs vertices at its scale
+  } else {
+    const rviz::ViewController* view = context_->getViewManager()->getCurrent();
+    lod = lod_properties_->levelOfDetail(view ? view->getCamera() : nullptr);
   }
   try {
     model_->update(root_, bones_, lod);
     visual_->update(model_->parts());
-    if (show_skeleton_property_->getBool()) drawSkeleton();
+    if (debug_properties_->showSkeleton()) drawSkeleton();
     const std::array<std::size_t, 2> surfaces{model_->parts().size(), model_->triangleCount()};
     if (surfaces != surfaces_reported_) {
       setStatusStd(rviz::StatusProperty::Ok, "Surfaces",

@@ -16,26 +16,22 @@
 #include "dressed_human/core/model/relief_map_jobs.h"
 #include "dressed_human/core/relief/skin_relief.h"
 
-namespace rviz {
-class BoolProperty;
-class ColorProperty;
-class EnumProperty;
-class FloatProperty;
-class IntProperty;
-class Property;
-class StringProperty;
-class VectorProperty;
-}  // namespace rviz
-
 namespace dressed_human {
 
+class BodyProperties;
+class DebugProperties;
+class GarmentProperties;
 class HumanVisual;
+class LodProperties;
+class ReliefProperties;
 
 class DressedHumanDisplay : public rviz::Display {
   Q_OBJECT
  public:
   DressedHumanDisplay();
   ~DressedHumanDisplay() override;
+  // Also accepts the configuration key "Relief Strength" (now "Skin Relief Strength").
+  void load(const rviz::Config& config) override;
 
  protected:
   void onInitialize() override;
@@ -50,7 +46,6 @@ class DressedHumanDisplay : public rviz::Display {
   void rebuildModel();
   void updateAppearance();
   void regenerateSkinRelief();
-  void updateGarmentColourVisibility();
   void updateBodyShape();
   void updateVertexEvaluation();
 
@@ -66,37 +61,13 @@ class DressedHumanDisplay : public rviz::Display {
   void pollReliefMaps();
   void applyDisplacement();
   void drawSkeleton();
-  SkinReliefParameters skinParametersFromProperties() const;
 
-  rviz::StringProperty* description_property_;
-  rviz::StringProperty* body_file_property_;
-  rviz::EnumProperty* relief_mode_property_;
-  rviz::FloatProperty* relief_strength_property_;
-  rviz::FloatProperty* wrinkle_strength_property_;
-  rviz::EnumProperty* outfit_property_;
-  rviz::FloatProperty* skirt_length_property_;
-  rviz::BoolProperty* file_colours_property_;
-  rviz::ColorProperty* upper_colour_property_;
-  rviz::ColorProperty* lower_colour_property_;
-  rviz::ColorProperty* skin_colour_property_;
-  rviz::IntProperty* skin_levels_property_;
-  rviz::FloatProperty* skin_cell_size_property_;
-  rviz::IntProperty* skin_seed_property_;
-  rviz::FloatProperty* skin_direction_property_;
-  rviz::FloatProperty* skin_stretch_property_;
-  rviz::FloatProperty* skin_wobble_property_;
-  rviz::FloatProperty* skin_jitter_property_;
-  rviz::FloatProperty* skin_slope_property_;
-  rviz::FloatProperty* skin_roundness_property_;
-  rviz::IntProperty* displacement_level_property_;
-  rviz::Property* body_shape_category_;
-  // (a, b, c) of Eq. 5 per limb group of bodyShapeGroups(), multiplying the body file's shape.
-  std::vector<std::pair<std::string, rviz::VectorProperty*>> shape_properties_;
-  rviz::BoolProperty* show_skeleton_property_;
-  rviz::EnumProperty* lod_mode_property_;
-  rviz::IntProperty* lod_level_property_;
-  rviz::FloatProperty* lod_pixels_property_;
-  rviz::EnumProperty* vertex_evaluation_property_;
+  // The properties, by concern; each group owns its rviz properties (children of this display).
+  std::unique_ptr<BodyProperties> body_properties_;
+  std::unique_ptr<GarmentProperties> garment_properties_;
+  std::unique_ptr<ReliefProperties> relief_properties_;
+  std::unique_ptr<LodProperties> lod_properties_;
+  std::unique_ptr<DebugProperties> debug_properties_;
   // Why the Bezier vertex shader cannot run here (empty: it can).
   std::string gpu_vertices_problem_ = "the relief material did not load";
 

@@ -134,7 +134,7 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
     display_->subProp("Level of Detail")->setValue(lod[(i / 2) % 2]);
     display_->subProp("Tessellation Level")->setValue(2 + i % 7);
     display_->subProp("Vertex Evaluation")->setValue(i % 3 == 2 ? "CPU" : "GPU");
-    display_->subProp("Relief Strength")->setValue(0.5 + 0.1 * (i % 10));
+    display_->subProp("Skin Relief Strength")->setValue(0.5 + 0.1 * (i % 10));
     if (i % 50 == 0) display_->subProp("Skin Seed")->setValue(1 + (i / 50) % 3);
     if (i % 10 == 0) display_->reset();
     if (i % 20 == 7) {

@@ -1,0 +1,27 @@
+#pragma once
+// The DressedHuman display's debugging aids: the skeleton drawn as lines.
+
+#include <QObject>
+
+namespace rviz {
+class BoolProperty;
+class Property;
+}  // namespace rviz
+
+namespace dressed_human {
+
+class DebugProperties : public QObject {
+  Q_OBJECT
+ public:
+  explicit DebugProperties(rviz::Property* parent);
+
+  bool showSkeleton() const;
+
+ Q_SIGNALS:
+  void changed();
+
+ private:
+  rviz::BoolProperty* show_skeleton_;
+};
+
+}  // namespace dressed_human
