@@ -1,17 +1,13 @@
 #include "dressed_human_display.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <ctime>
 
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/package.h>
 #include <rviz/display_context.h>
-#include <rviz/frame_manager.h>
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
-#include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
 #include "human_visual.h"
@@ -20,11 +16,11 @@
 #include "properties/garment_properties.h"
 #include "properties/lod_properties.h"
 #include "properties/relief_properties.h"
+#include "tf_bone_source.h"
 
 namespace dressed_human {
 namespace {
 
-constexpr double kStaleSeconds = 1.0;
 // Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
 // (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
 constexpr double kMaxDrawableCoordinate = 1e5;
@@ -34,39 +30,13 @@ bool drawable(const RigidTransform& pose) {
          pose.rotation.coeffs().allFinite();
 }
 
-RigidTransform toRigid(const geometry_msgs::Transform& t) {
-  RigidTransform rigid;
-  rigid.translation = {t.translation.x, t.translation.y, t.translation.z};
-  rigid.rotation = Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z).normalized();
-  return rigid;
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 }  // namespace
-
-void DressedHumanDisplay::reportError(const std::string& name, const std::string& text, bool transient) {
-  setStatusStd(rviz::StatusProperty::Error, name, text);
-  // Also in the log (once per new message), so headless runs and tests see what went wrong.
-  // Missing TF is transient (startup, a stopped publisher): a warning there, not an error.
-  std::string& last = logged_errors_[name];
-  if (last != text) {
-    if (transient) {
-      ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': %s: %s", getName().toStdString().c_str(),
-                     name.c_str(), text.c_str());
-    } else {
-      ROS_ERROR_NAMED("dressed_human", "DressedHuman display '%s': %s: %s", getName().toStdString().c_str(),
-                      name.c_str(), text.c_str());
-    }
-    last = text;
-  }
-}
-
-void DressedHumanDisplay::clearError(const std::string& name) {
-  // Called for every bone every frame: only a reported error has anything to clear.
-  const auto reported = logged_errors_.find(name);
-  if (reported == logged_errors_.end()) return;
-  deleteStatus(QString::fromStdString(name));
-  logged_errors_.erase(reported);
-}
 
 DressedHumanDisplay::DressedHumanDisplay()
     : body_properties_(new BodyProperties(this)),
@@ -84,6 +54,8 @@ DressedHumanDisplay::DressedHumanDisplay()
   connect(debug_properties_.get(), SIGNAL(changed()), this, SLOT(updateAppearance()));
 }
 
+DressedHumanDisplay::~DressedHumanDisplay() = default;
+
 void DressedHumanDisplay::load(const rviz::Config& config) {
   rviz::Display::load(config);
   // "Relief Strength" was renamed "Skin Relief Strength" (beside "Wrinkle Strength", the cloth's).
@@ -96,16 +68,14 @@ void DressedHumanDisplay::load(const rviz::Config& config) {
   }
 }
 
-DressedHumanDisplay::~DressedHumanDisplay() = default;
-
 void DressedHumanDisplay::onInitialize() {
   try {
     visual_ = std::make_unique<HumanVisual>(scene_manager_, scene_node_, "dressed_human/" + getName().toStdString() +
                                                                            "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-    clearError("Material");
+    status_.clear("Material");
     ReliefMaterial::bezierEvaluationAvailable(&gpu_vertices_problem_);
   } catch (const std::exception& error) {
-    reportError("Material", error.what());
+    status_.error("Material", error.what());
   }
   garment_properties_->updateVisibility();
   loadRobotDescription();
@@ -123,9 +93,8 @@ void DressedHumanDisplay::onDisable() {
 
 void DressedHumanDisplay::reset() {
   rviz::Display::reset();  // clears the statuses; TF problems report themselves again
-  logged_errors_.clear();
+  status_.forget();
   surfaces_reported_ = {kNotReported, kNotReported};
-  stale_reported_ = false;
   undrawable_frame_.clear();  // judged again, and reported again, at the next frame
   if (visual_) visual_->setVisible(isEnabled());
   loadRobotDescription();
@@ -136,38 +105,27 @@ void DressedHumanDisplay::fixedFrameChanged() { context_->queueRender(); }
 void DressedHumanDisplay::loadRobotDescription() {
   model_.reset();
   body_.reset();
+  bone_source_.reset();
   skeleton_.reset();
   const std::string parameter = body_properties_->descriptionParameter();
   std::string urdf;
   if (parameter.empty() || !update_nh_.getParam(parameter, urdf)) {
-    reportError("URDF", "parameter '" + parameter + "' is not set");
+    status_.error("URDF", "parameter '" + parameter + "' is not set");
     return;
   }
   try {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
-    bone_frames_.clear();
-    bone_status_names_.clear();
-    for (const Bone& bone : skeleton_->bones()) {
-      bone_frames_.push_back(skeleton_->frameName(bone.name));
-      bone_status_names_.push_back("Frame " + bone_frames_.back());
-    }
-    root_status_name_ = "Frame " + skeleton_->rootFrame();
-    leaf_bones_.clear();
-    for (std::size_t b = 0; b < kBoneCount; ++b) {
-      bool has_child = false;
-      for (const Bone& other : skeleton_->bones()) has_child = has_child || other.parent == static_cast<int>(b);
-      if (!has_child) leaf_bones_.push_back(static_cast<int>(b));
-    }
+    bone_source_ = std::make_unique<TfBoneSource>(*skeleton_);
     setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones");
   } catch (const std::exception& error) {
-    reportError("URDF", "parameter '" + parameter + "': " + error.what());
+    status_.error("URDF", "parameter '" + parameter + "': " + error.what());
     return;
   }
   try {
     body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_properties_->bodyFile(), *skeleton_));
-    clearError("Body Description");
+    status_.clear("Body Description");
   } catch (const std::exception& error) {
-    reportError("Body Description", error.what());
+    status_.error("Body Description", error.what());
     return;
   }
   updateBodyShape();
@@ -178,11 +136,11 @@ void DressedHumanDisplay::updateBodyShape() {
   try {
     shape_ = scaleBodyShapeGroups(body_->shape, *skeleton_, body_properties_->shapeGroups());
   } catch (const ShapeGroupScaleError& error) {
-    reportError("Body Shape", body_properties_->shapeGroupLabel(error.entry) + ": " + error.what() +
-                                  "; keeping the previous shape");
+    status_.error("Body Shape", body_properties_->shapeGroupLabel(error.entry) + ": " + error.what() +
+                                    "; keeping the previous shape");
     return;
   }
-  clearError("Body Shape");
+  status_.clear("Body Shape");
   rebuildModel();
 }
 
@@ -197,11 +155,11 @@ void DressedHumanDisplay::rebuildModel() {
     shaped.shape = shape_;
     model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
     kinematics_ = std::make_unique<ForwardKinematics>(*skeleton_, shape_);
-    clearError("Model");
+    status_.clear("Model");
     updateVertexEvaluation();
   } catch (const std::exception& error) {
     model_.reset();
-    reportError("Model", error.what());
+    status_.error("Model", error.what());
   }
   applyDisplacement();
   context_->queueRender();
@@ -245,15 +203,15 @@ void DressedHumanDisplay::applyDisplacement() {
   if (!model_) return;
   const bool displaced = relief_properties_->mode() == ReliefMode::kDisplacedGeometry;
   try {
-    // Until a map has been generated its kind stays undisplaced; the poll that delivers it
-    // calls back here.
+    // Until a map has been built its kind stays undisplaced; the poll that delivers it calls
+    // back here.
     model_->setDisplacement(ReliefKind::kSkin, displaced ? relief_jobs_.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f,
                             relief_properties_->skinStrength());
     model_->setDisplacement(ReliefKind::kCloth, displaced ? relief_jobs_.map(ReliefKind::kCloth) : nullptr, 1.0f,
                             ReliefMapJobs::clothHeightToTile(), relief_properties_->wrinkleStrength());
-    clearError("Relief");
+    status_.clear("Relief");
   } catch (const std::exception& error) {
-    reportError("Relief", error.what());
+    status_.error("Relief", error.what());
   }
 }
 
@@ -267,122 +225,37 @@ void DressedHumanDisplay::pollReliefMaps() {
     const std::string status = done.kind == ReliefKind::kSkin ? "Skin relief" : "Wrinkle relief";
     if (done.map) {
       if (visual_) visual_->setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
-      clearError(status);
+      status_.clear(status);
     } else {
-      reportError(status, done.error);
+      status_.error(status, done.error);
     }
     updateAppearance();
   }
 }
 
-bool DressedHumanDisplay::lookUpBones() {
-  const std::shared_ptr<tf2_ros::Buffer> buffer = context_->getTF2BufferPtr();
-  const std::string fixed = fixed_frame_.toStdString();
-  const std::string& root = skeleton_->rootFrame();
-  const tf2::CompactFrameID fixed_id = buffer->_lookupFrameNumber(fixed);
-  // The newest time at which the chain from the fixed frame to `frame` is known. tf2's latest
-  // common time gives it without composing the chain; a lookup only runs to report an error.
-  const auto newestStamp = [&](const std::string& frame) {
-    ros::Time newest;
-    if (fixed_id == 0 || buffer->_getLatestCommonTime(fixed_id, buffer->_lookupFrameNumber(frame), newest, nullptr) != 0) {
-      newest = buffer->lookupTransform(fixed, frame, ros::Time(0)).header.stamp;  // throws what is wrong
-    }
-    return newest;
-  };
-  // One consistent time for every bone, so that garments spanning two bones never tear. Almost
-  // always every bone is known at the root's newest stamp (one message carries the skeleton).
-  // But TF inserts a message's transforms one by one while rviz reads, so a bone can lag its
-  // root by one tick: then a lookup at that stamp fails, and all bones are looked up again at
-  // the newest time every chain from the fixed frame to a leaf bone (head, hands, feet) is
-  // known. Walking every chain each frame instead would cost more than the lookups themselves:
-  // the TF tree is cold in the cache when rviz comes back from rendering.
-  ros::Time stamp;
-  bool found = false;
-  try {
-    stamp = newestStamp(root);
-    root_ = toRigid(buffer->lookupTransform(fixed, root, stamp).transform);
-    found = lookUpBonesAt(*buffer, stamp, false);
-    if (!found) {
-      // A chain that is missing, or lags the root by more than the stale limit (a link no
-      // longer published), is left out: holding every bone back to it would freeze the human
-      // without naming the culprit. Its bone's lookup fails below and reports the frame.
-      const ros::Time root_stamp = stamp;
-      for (const int leaf : leaf_bones_) {
-        try {
-          const ros::Time newest = newestStamp(bone_frames_[static_cast<std::size_t>(leaf)]);
-          if ((root_stamp - newest).toSec() <= kStaleSeconds) stamp = std::min(stamp, newest);
-        } catch (const tf2::TransformException&) {
-        }
-      }
-      root_ = toRigid(buffer->lookupTransform(fixed, root, stamp).transform);
-    }
-    clearError(root_status_name_);
-  } catch (const tf2::TransformException& error) {
-    reportError(root_status_name_, error.what(), true);
-    return false;
-  }
-  const bool stale = !stamp.isZero() && (ros::Time::now() - stamp).toSec() > kStaleSeconds;
-  if (stale) {
-    setStatusStd(rviz::StatusProperty::Warn, "TF",
-                 "the newest skeleton transform is " + std::to_string((ros::Time::now() - stamp).toSec()) + " s old");
-  } else if (stale_reported_) {
-    deleteStatus("TF");
-  }
-  stale_reported_ = stale;
-  return found || lookUpBonesAt(*buffer, stamp, true);
-}
-
-bool DressedHumanDisplay::lookUpBonesAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report) {
-  bool all_found = true;
-  for (std::size_t b = 0; b < kBoneCount; ++b) {
-    // Each bone relative to its parent, composed by the core below: tf2 then walks the three
-    // links of one joint instead of the whole chain from the fixed frame every time.
-    const Bone& bone = skeleton_->bone(b);
-    const std::string& parent_frame = bone.parent < 0 ? skeleton_->rootFrame() : bone_frames_[static_cast<std::size_t>(bone.parent)];
-    try {
-      // A bone on a fixed URDF joint (clavicles, pelvis halves) sits where the URDF puts it:
-      // no lookup needed, and none that could fail.
-      bone_in_parent_[b] = bone.joint < 0 ? RigidTransform{bone.rest_translation, bone.rest_rotation}
-                                          : toRigid(buffer.lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
-      clearError(bone_status_names_[b]);
-    } catch (const tf2::TransformException& error) {
-      if (!report) return false;
-      reportError(bone_status_names_[b], error.what(), true);
-      all_found = false;
-    }
-  }
-  // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
-  if (all_found) kinematics_->composeUnshaped(root_, bone_in_parent_, bones_);
-  return all_found;
-}
-
-namespace {
-
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-}  // namespace
-
 void DressedHumanDisplay::update(float, float) {
   const double start = threadCpuSeconds();
   updateSurfaces();
+  reportUpdateCost(threadCpuSeconds() - start);
+}
+
+void DressedHumanDisplay::reportUpdateCost(double cpu_seconds) {
   // What this display costs rviz's thread per frame (mean over ~1 s), for users and benchmarks.
-  update_cpu_seconds_ += threadCpuSeconds() - start;
-  if (++update_count_ == 30) {
-    char text[64];
-    std::snprintf(text, sizeof(text), "%.3f ms CPU per frame", 1e3 * update_cpu_seconds_ / update_count_);
-    setStatusStd(rviz::StatusProperty::Ok, "Update", text);
-    update_cpu_seconds_ = 0.0;
-    update_count_ = 0;
-  }
+  update_cpu_seconds_ += cpu_seconds;
+  if (++update_count_ < 30) return;
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.3f ms CPU per frame", 1e3 * update_cpu_seconds_ / update_count_);
+  setStatusStd(rviz::StatusProperty::Ok, "Update", text);
+  update_cpu_seconds_ = 0.0;
+  update_count_ = 0;
 }
 
 void DressedHumanDisplay::updateSurfaces() {
   pollReliefMaps();
-  if (!model_ || !visual_ || !lookUpBones() || !posesDrawable()) return;
+  if (!model_ || !visual_ || !bone_source_->lookUp(*context_->getFrameManager(), status_)) return;
+  // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
+  kinematics_->composeUnshaped(bone_source_->root(), bone_source_->bonesInParent(), bones_);
+  if (!posesDrawable()) return;
   LevelOfDetail lod;
   if (relief_properties_->mode() == ReliefMode::kDisplacedGeometry) {
     lod.level = relief_properties_->displacementLevel();  // relief in the geometry needs vertices at its scale
@@ -391,9 +264,9 @@ void DressedHumanDisplay::updateSurfaces() {
     lod = lod_properties_->levelOfDetail(view ? view->getCamera() : nullptr);
   }
   try {
-    model_->update(root_, bones_, lod);
+    model_->update(bone_source_->root(), bones_, lod);
     visual_->update(model_->parts());
-    if (debug_properties_->showSkeleton()) drawSkeleton();
+    visual_->updateSkeleton(*kinematics_, bones_);
     const std::array<std::size_t, 2> surfaces{model_->parts().size(), model_->triangleCount()};
     if (surfaces != surfaces_reported_) {
       setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
@@ -402,7 +275,7 @@ void DressedHumanDisplay::updateSurfaces() {
     }
   } catch (const std::exception& error) {
     surfaces_reported_ = {kNotReported, kNotReported};
-    reportError("Surfaces", error.what());
+    status_.error("Surfaces", error.what());
   }
 }
 
@@ -412,13 +285,13 @@ bool DressedHumanDisplay::posesDrawable() {
   // with sane TF.
   std::string frame;
   const RigidTransform* pose = nullptr;
-  if (!drawable(root_)) frame = skeleton_->rootFrame(), pose = &root_;
+  if (!drawable(bone_source_->root())) frame = bone_source_->rootFrame(), pose = &bone_source_->root();
   for (std::size_t b = 0; pose == nullptr && b < kBoneCount; ++b) {
-    if (!drawable(bones_[b])) frame = bone_frames_[b], pose = &bones_[b];
+    if (!drawable(bones_[b])) frame = bone_source_->boneFrame(b), pose = &bones_[b];
   }
   if (pose == nullptr) {
     if (!undrawable_frame_.empty()) {
-      clearError("Pose");
+      status_.clear("Pose");
       visual_->setVisible(true);
       undrawable_frame_.clear();
     }
@@ -429,25 +302,14 @@ bool DressedHumanDisplay::posesDrawable() {
     std::snprintf(position, sizeof(position), "(%.2g, %.2g, %.2g) m", pose->translation.x(), pose->translation.y(),
                   pose->translation.z());
     const bool finite = pose->translation.allFinite() && pose->rotation.coeffs().allFinite();
-    reportError("Pose", "frame '" + frame + "' in '" + fixed_frame_.toStdString() + "' is " +
-                            (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
-                                    : std::string("not finite")) +
-                            "; the human is hidden until its TF is sane again");
+    status_.error("Pose", "frame '" + frame + "' in '" + fixed_frame_.toStdString() + "' is " +
+                              (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
+                                      : std::string("not finite")) +
+                              "; the human is hidden until its TF is sane again");
     undrawable_frame_ = frame;
   }
   visual_->setVisible(false);  // every frame: enabling the display again must not show it
   return false;
-}
-
-void DressedHumanDisplay::drawSkeleton() {
-  std::vector<Eigen::Vector3f> segments;
-  segments.reserve(2 * kBoneCount);
-  for (std::size_t b = 0; b < kBoneCount; ++b) {
-    const double length = skeleton_->bone(b).length * shape_.scale[b].z();
-    segments.push_back(bones_[b].translation.cast<float>());
-    segments.push_back((bones_[b].translation + bones_[b].rotation * Eigen::Vector3d(0.0, 0.0, length)).cast<float>());
-  }
-  visual_->updateSkeleton(segments);
 }
 
 }  // namespace dressed_human

@@ -10,13 +10,7 @@
 #include <QObject>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
-
-namespace rviz {
-class ColorProperty;
-class Property;
-class StringProperty;
-class VectorProperty;
-}  // namespace rviz
+#include "properties/rviz_properties_fwd.h"
 
 namespace dressed_human {
 

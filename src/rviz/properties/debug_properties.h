@@ -3,10 +3,7 @@
 
 #include <QObject>
 
-namespace rviz {
-class BoolProperty;
-class Property;
-}  // namespace rviz
+#include "properties/rviz_properties_fwd.h"
 
 namespace dressed_human {
 

@@ -5,14 +5,7 @@
 #include <QObject>
 
 #include "dressed_human/core/model/human_model.h"
-
-namespace rviz {
-class BoolProperty;
-class ColorProperty;
-class EnumProperty;
-class FloatProperty;
-class Property;
-}  // namespace rviz
+#include "properties/rviz_properties_fwd.h"
 
 namespace dressed_human {
 

@@ -5,17 +5,11 @@
 #include <QObject>
 
 #include "dressed_human/core/model/human_model.h"
+#include "properties/rviz_properties_fwd.h"
 
 namespace Ogre {
 class Camera;
 }  // namespace Ogre
-
-namespace rviz {
-class EnumProperty;
-class FloatProperty;
-class IntProperty;
-class Property;
-}  // namespace rviz
 
 namespace dressed_human {
 

@@ -6,13 +6,7 @@
 #include <QObject>
 
 #include "dressed_human/core/relief/skin_relief.h"
-
-namespace rviz {
-class EnumProperty;
-class FloatProperty;
-class IntProperty;
-class Property;
-}  // namespace rviz
+#include "properties/rviz_properties_fwd.h"
 
 namespace dressed_human {
 
