@@ -31,7 +31,7 @@ BACKGROUND = numpy.array([48, 48, 48])  # rviz's default background
 def harness(mode, distance, seconds, screenshot, env):
     command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", os.path.join(DEVEL, "env.sh"),
                os.path.join(DEVEL, "lib", "dressed_human", "rviz_display_scaling"), "dressed_human/DressedHuman",
-               "1", str(seconds), "--set", "Relief=" + mode, "--set", "Relief Strength=2",
+               "1", str(seconds), "--set", "Relief=" + mode, "--set", "Skin Relief Strength=2",
                "--distance", str(distance), "--focal", "0;0;0", "--view", "Target Frame=body_0", "--view", "Pitch=0.15",
                "--screenshot", screenshot]
     output = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,

@@ -1,16 +1,16 @@
 #include "human_visual.h"
 
-#include <OgreMaterial.h>
-#include <OgreTechnique.h>
-
 namespace dressed_human {
 
 HumanVisual::HumanVisual(Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& name_prefix)
-    : scene_manager_(scene_manager), node_(parent->createChildSceneNode()), name_prefix_(name_prefix) {}
+    : scene_manager_(scene_manager),
+      node_(parent->createChildSceneNode()),
+      name_prefix_(name_prefix),
+      skeleton_(std::make_unique<SkeletonVisual>(scene_manager, node_)) {}
 
 HumanVisual::~HumanVisual() {
   parts_.clear();
-  skeleton_lines_.reset();
+  skeleton_.reset();
   scene_manager_->destroySceneNode(node_);
 }
 
@@ -60,39 +60,17 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
 void HumanVisual::setVisible(bool visible) {
   visible_ = visible;
   for (Part& part : parts_) part.mesh->setVisible(visible);
-  if (skeleton_lines_) skeleton_lines_->getSceneNode()->setVisible(visible_ && skeleton_visible_);
+  skeleton_->setVisible(visible_ && skeleton_visible_);
 }
 
 void HumanVisual::setSkeletonVisible(bool visible) {
   skeleton_visible_ = visible;
-  if (visible && !skeleton_lines_) {
-    skeleton_lines_ = std::make_unique<rviz::BillboardLine>(scene_manager_, node_);
-    skeleton_lines_->setLineWidth(0.015f);
-    // Seen through the skin and clothes: the point of showing it.
-    skeleton_lines_->getMaterial()->getTechnique(0)->setDepthCheckEnabled(false);
-    skeleton_lines_->getSceneNode()->getAttachedObject(0)->setRenderQueueGroup(Ogre::RENDER_QUEUE_OVERLAY - 1);
-  }
-  if (skeleton_lines_) skeleton_lines_->getSceneNode()->setVisible(visible_ && skeleton_visible_);
+  skeleton_->setVisible(visible_ && skeleton_visible_);
 }
 
-void HumanVisual::updateSkeleton(const std::vector<Eigen::Vector3f>& segment_ends) {
-  if (!skeleton_lines_) return;
-  const auto lines = static_cast<std::uint32_t>(segment_ends.size() / 2);
-  if (lines != skeleton_line_count_) {
-    // Resizing rebuilds the billboard chains' buffers: only when the bone count changes.
-    skeleton_lines_->setMaxPointsPerLine(2);
-    skeleton_lines_->setNumLines(lines);
-    skeleton_line_count_ = lines;
-  }
-  skeleton_lines_->clear();
-  const Ogre::ColourValue colour(1.0f, 0.85f, 0.1f, 1.0f);
-  for (std::uint32_t l = 0; l < lines; ++l) {
-    if (l > 0) skeleton_lines_->newLine();
-    for (int end = 0; end < 2; ++end) {
-      const Eigen::Vector3f& p = segment_ends[2 * l + static_cast<std::uint32_t>(end)];
-      skeleton_lines_->addPoint(Ogre::Vector3(p.x(), p.y(), p.z()), colour);
-    }
-  }
+void HumanVisual::updateSkeleton(const ForwardKinematics& kinematics,
+                                 const std::array<RigidTransform, kBoneCount>& bones) {
+  if (skeleton_visible_) skeleton_->update(kinematics, bones);
 }
 
 void HumanVisual::setReliefStrength(ReliefKind kind, float strength) {

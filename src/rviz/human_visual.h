@@ -1,6 +1,7 @@
 #pragma once
-// The Ogre side of one dressed human: a scene node with one bump-mapped mesh per surface part
-// (skin, each garment). Created and updated only from the display's update().
+// The Ogre side of one dressed human, owning every Ogre object it draws: a scene node with one
+// bump-mapped mesh per surface part (skin, each garment) and the skeleton's lines. Created and
+// updated only from the display's update().
 
 #include <memory>
 #include <string>
@@ -9,10 +10,9 @@
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
 
-#include <rviz/ogre_helpers/billboard_line.h>
-
 #include "dressed_human/core/model/human_model.h"
 #include "relief_material.h"
+#include "skeleton_visual.h"
 #include "surface_mesh_object.h"
 
 namespace dressed_human {
@@ -29,9 +29,9 @@ class HumanVisual {
   void setVisible(bool visible);
   void setReliefStrength(ReliefKind kind, float strength);
   void setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height, float tiling);
-  // Bones as lines drawn over everything (pairs of end points, fixed frame).
+  // Bones as lines drawn over everything (SkeletonVisual); updated only while shown.
   void setSkeletonVisible(bool visible);
-  void updateSkeleton(const std::vector<Eigen::Vector3f>& segment_ends);
+  void updateSkeleton(const ForwardKinematics& kinematics, const std::array<RigidTransform, kBoneCount>& bones);
 
  private:
   struct Part {
@@ -58,9 +58,8 @@ class HumanVisual {
   float cloth_relief_strength_ = 1.0f;
   NormalMap skin_map_, cloth_map_;
   bool visible_ = true;
-  std::unique_ptr<rviz::BillboardLine> skeleton_lines_;  // created when first shown
+  std::unique_ptr<SkeletonVisual> skeleton_;
   bool skeleton_visible_ = false;
-  std::uint32_t skeleton_line_count_ = 0;
 };
 
 }  // namespace dressed_human

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <QApplication>
 #include <ros/ros.h>
+#include <rviz/config.h>
 #include <rviz/display.h>
 #include <rviz/properties/status_property.h>
 #include <rviz/properties/vector_property.h>
@@ -134,7 +135,7 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
     display_->subProp("Level of Detail")->setValue(lod[(i / 2) % 2]);
     display_->subProp("Tessellation Level")->setValue(2 + i % 7);
     display_->subProp("Vertex Evaluation")->setValue(i % 3 == 2 ? "CPU" : "GPU");
-    display_->subProp("Relief Strength")->setValue(0.5 + 0.1 * (i % 10));
+    display_->subProp("Skin Relief Strength")->setValue(0.5 + 0.1 * (i % 10));
     if (i % 50 == 0) display_->subProp("Skin Seed")->setValue(1 + (i / 50) % 3);
     if (i % 10 == 0) display_->reset();
     if (i % 20 == 7) {
@@ -225,6 +226,22 @@ TEST_F(DisplayLifecycleTest, MissingBoneFrameIsReportedAloneAndRecovers) {
   // The link returns: the error goes by itself.
   EXPECT_TRUE(runUntil(true, 30.0, [&] { return status(knee) == nullptr && level() == rviz::StatusProperty::Ok; }))
       << "still reported after the frame returned:\n" << unexpectedErrors("");
+}
+
+// "Relief Strength" was renamed "Skin Relief Strength": a configuration saved before still sets
+// it; where both are saved, the new key wins.
+TEST_F(DisplayLifecycleTest, TheOldReliefStrengthKeyStillLoads) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  rviz::Config config;
+  display_->save(config);
+  config.mapRemoveChild("Skin Relief Strength");
+  config.mapSetValue("Relief Strength", 2.5);
+  display_->load(config);
+  EXPECT_FLOAT_EQ(display_->subProp("Skin Relief Strength")->getValue().toFloat(), 2.5f);
+  config.mapSetValue("Skin Relief Strength", 1.5);
+  display_->load(config);
+  EXPECT_FLOAT_EQ(display_->subProp("Skin Relief Strength")->getValue().toFloat(), 1.5f);
+  frames(2);
 }
 
 }  // namespace

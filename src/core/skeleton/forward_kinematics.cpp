@@ -18,6 +18,13 @@ Eigen::Quaterniond axisRotation(double angle, int axis) {
 
 constexpr std::array<int, kDofsPerJoint> kChainAxis = {1, 0, 2};  // y, x, z as Eigen coefficient index
 
+// A bone frame in the world from its parent's and its own in the parent (shape applied).
+void attach(const RigidTransform& parent, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation,
+            RigidTransform& world) {
+  world.translation = parent.translation + parent.rotation * translation;
+  world.rotation = parent.rotation * rotation;
+}
+
 }  // namespace
 
 ForwardKinematics::ForwardKinematics(const Skeleton& skeleton, const BodyShape& shape)
@@ -58,9 +65,20 @@ void ForwardKinematics::compute(const RigidTransform& root, const JointAngles& a
     }
     const RigidTransform& parent =
         bone.parent < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(bone.parent)];
-    RigidTransform& world = pose.bone_in_world[b];
-    world.translation = parent.translation + parent.rotation * local.translation;
-    world.rotation = parent.rotation * local.rotation;
+    attach(parent, local.translation, local.rotation, pose.bone_in_world[b]);
+  }
+}
+
+void ForwardKinematics::composeUnshaped(const RigidTransform& root,
+                                        const std::array<RigidTransform, kBoneCount>& unshaped_in_parent,
+                                        std::array<RigidTransform, kBoneCount>& bone_in_world) const {
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const int parent = skeleton_.bone(b).parent;
+    const Eigen::Vector3d parent_scale =
+        parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(parent)];
+    const RigidTransform& local = unshaped_in_parent[b];
+    attach(parent < 0 ? root : bone_in_world[static_cast<std::size_t>(parent)],
+           parent_scale.cwiseProduct(local.translation), local.rotation, bone_in_world[b]);
   }
 }
 

@@ -39,6 +39,11 @@ class ForwardKinematics {
 
   // Allocation-free; `pose` is filled completely.
   void compute(const RigidTransform& root, const JointAngles& angles, SkeletonPose& pose) const;
+  // Every bone frame in the world from `root` and each bone's frame in its parent as the URDF
+  // (and so TF) carries it, unshaped: the shape moves each joint to its parent's scaled offset,
+  // as compute() does, and leaves the rotations as they are. Allocation-free.
+  void composeUnshaped(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& unshaped_in_parent,
+                       std::array<RigidTransform, kBoneCount>& bone_in_world) const;
 
   // Where a bone frame sits in its parent, shape applied (also the fixed joints' TF).
   const Eigen::Vector3d& scaledRestTranslation(std::size_t bone) const { return scaled_rest_translation_[bone]; }

@@ -1,0 +1,73 @@
+#pragma once
+// The two relief maps a renderer of HumanModel needs, each built off the caller's thread: the
+// skin's Voronoi relief (SkinRelief, rebuilt when its parameters change) and the garments' wrinkle
+// map (once). The caller polls without ever waiting; a change requested while a map is building
+// starts the next build when that one ends.
+
+#include <array>
+#include <cstdint>
+#include <future>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/relief/relief_map.h"
+#include "dressed_human/core/relief/skin_relief.h"
+#include "dressed_human/core/relief/wrinkle_map.h"
+
+namespace dressed_human {
+
+// One finished build: the map and its normal map (encodeNormalMapRgb), or what the build threw.
+struct FinishedReliefMap {
+  ReliefKind kind = ReliefKind::kSkin;
+  std::shared_ptr<const ReliefMap> map;  // null: the build failed
+  std::vector<std::uint8_t> normal_rgb;
+  std::string error;
+};
+
+// The skin-relief fields a user sets: a change in any of them needs a new map.
+bool sameSkinParameters(const SkinReliefParameters& a, const SkinReliefParameters& b);
+
+class ReliefMapJobs {
+ public:
+  static constexpr int kSkinMapSize = 512;
+
+  ReliefMapJobs() = default;
+  ~ReliefMapJobs();  // waits for the builds still running
+  ReliefMapJobs(const ReliefMapJobs&) = delete;
+  ReliefMapJobs& operator=(const ReliefMapJobs&) = delete;
+
+  // Starts building the skin map for `parameters` (kSkinMapSize square); while one is building,
+  // the request waits and poll() starts it when that one ends (if the parameters differ).
+  void requestSkin(const SkinReliefParameters& parameters);
+  // Starts building the garments' wrinkle map (garmentWrinkleMapSpec(), transposed).
+  void startCloth();
+  // Heights of the wrinkle map per tile width (for HumanModel::setDisplacement).
+  static float clothHeightToTile();
+
+  // The builds finished since the last call, skin first; never waits.
+  std::vector<FinishedReliefMap> poll();
+  // The newest map of `kind` built without an error; null before.
+  const std::shared_ptr<const ReliefMap>& map(ReliefKind kind) const { return jobs_[index(kind)].map; }
+
+ private:
+  struct Job {
+    std::future<FinishedReliefMap> running;
+    std::shared_ptr<const ReliefMap> map;
+  };
+  static std::size_t index(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }
+  bool busy(ReliefKind kind) const;
+  void startSkin(const SkinReliefParameters& parameters);
+
+  std::array<Job, 2> jobs_;
+  SkinReliefParameters skin_started_;   // what the running (or last) skin build was started with
+  SkinReliefParameters skin_requested_;  // the newest request
+};
+
+// The garments' wrinkle texture: Y-Y chains at a strong compression (see relief_map_jobs.cpp).
+WrinkleMapSpec garmentWrinkleMapSpec();
+// The map with u and v swapped (heights and slopes).
+ReliefMap transposed(const ReliefMap& map);
+
+}  // namespace dressed_human

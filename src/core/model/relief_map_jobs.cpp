@@ -1,0 +1,110 @@
+#include "dressed_human/core/model/relief_map_jobs.h"
+
+#include <chrono>
+#include <utility>
+
+namespace dressed_human {
+namespace {
+
+// Runs `build` on its own thread; what it throws comes back as the result's error.
+template <typename Build>
+std::future<FinishedReliefMap> launch(ReliefKind kind, Build build) {
+  return std::async(std::launch::async, [kind, build] {
+    FinishedReliefMap done;
+    done.kind = kind;
+    try {
+      auto map = std::make_shared<const ReliefMap>(build());
+      done.normal_rgb = encodeNormalMapRgb(*map);
+      done.map = std::move(map);
+    } catch (const std::exception& error) {
+      done.error = error.what();
+    }
+    return done;
+  });
+}
+
+}  // namespace
+
+bool sameSkinParameters(const SkinReliefParameters& a, const SkinReliefParameters& b) {
+  return a.levels == b.levels && a.cell_size == b.cell_size && a.seed == b.seed &&
+         a.direction_angle == b.direction_angle && a.direction_stretch == b.direction_stretch &&
+         a.wobble == b.wobble && a.jitter == b.jitter && a.roundness == b.roundness &&
+         a.profile.first_inner == b.profile.first_inner && a.profile.second_inner == b.profile.second_inner;
+}
+
+ReliefMap transposed(const ReliefMap& map) {
+  ReliefMap out(map.height, map.width);
+  for (int row = 0; row < map.height; ++row) {
+    for (int column = 0; column < map.width; ++column) {
+      const std::size_t from = map.index(column, row), to = out.index(row, column);
+      out.heights[to] = map.heights[from];
+      out.slope_u[to] = map.slope_v[from];
+      out.slope_v[to] = map.slope_u[from];
+    }
+  }
+  return out;
+}
+
+WrinkleMapSpec garmentWrinkleMapSpec() {
+  // X-pattern buckling at mild compression (SPEC §4); a few large cells per patch, as cloth
+  // buckles at the scale of a hand, not of a knit. Y-Y chains: the pattern wrinkle placement
+  // picks for the default garments' patches (their surfaces turn about half a bend angle per
+  // cell; wrinkle_placement.h), at a strong compression; the per-vertex wrinkle weight from the
+  // posed garment (HumanModel) decides where and how much of it shows. The map compresses along
+  // its rows (v); knees and elbows compress garments along the limb, patch u: hence the
+  // transpose (ReliefMapJobs::startCloth).
+  WrinkleMapSpec spec;
+  spec.chain = "YY";
+  spec.cells_around = 2;
+  spec.rows = 2;
+  spec.alpha = {0.8};
+  return spec;
+}
+
+ReliefMapJobs::~ReliefMapJobs() {
+  for (Job& job : jobs_) {
+    if (job.running.valid()) job.running.wait();
+  }
+}
+
+bool ReliefMapJobs::busy(ReliefKind kind) const {
+  const Job& job = jobs_[index(kind)];
+  return job.running.valid() && job.running.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+}
+
+void ReliefMapJobs::requestSkin(const SkinReliefParameters& parameters) {
+  skin_requested_ = parameters;
+  if (!busy(ReliefKind::kSkin)) startSkin(parameters);
+}
+
+void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
+  // A 512^2 map takes a noticeable fraction of a second; a bad parameter throws inside the job.
+  jobs_[index(ReliefKind::kSkin)].running =
+      launch(ReliefKind::kSkin, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
+  skin_started_ = parameters;
+}
+
+void ReliefMapJobs::startCloth() {
+  const WrinkleMapSpec spec = garmentWrinkleMapSpec();
+  jobs_[index(ReliefKind::kCloth)].running = launch(ReliefKind::kCloth, [spec] { return transposed(makeWrinkleMap(spec)); });
+}
+
+float ReliefMapJobs::clothHeightToTile() {
+  // A tile spans cells_around cells of 2 L_x each (wrinkle_map.h): heights in L_x units.
+  const WrinkleMapSpec spec = garmentWrinkleMapSpec();
+  return static_cast<float>(1.0 / (2.0 * spec.cell.half_width_x * spec.cells_around));
+}
+
+std::vector<FinishedReliefMap> ReliefMapJobs::poll() {
+  std::vector<FinishedReliefMap> finished;
+  for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
+    Job& job = jobs_[index(kind)];
+    if (!job.running.valid() || busy(kind)) continue;
+    finished.push_back(job.running.get());
+    if (finished.back().map) job.map = finished.back().map;
+    if (kind == ReliefKind::kSkin && !sameSkinParameters(skin_requested_, skin_started_)) startSkin(skin_requested_);
+  }
+  return finished;
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,56 @@
+#include "properties/lod_properties.h"
+
+#include <OgreCamera.h>
+#include <OgreViewport.h>
+#include <rviz/properties/enum_property.h>
+#include <rviz/properties/float_property.h>
+#include <rviz/properties/int_property.h>
+
+namespace dressed_human {
+namespace {
+
+enum LodMode { kAutomatic = 0, kFixed = 1 };
+enum VertexSource { kGpuVertices = 0, kCpuVertices = 1 };
+
+}  // namespace
+
+LodProperties::LodProperties(rviz::Property* parent) {
+  mode_ = new rviz::EnumProperty(
+      "Level of Detail", "Automatic",
+      "Automatic: tessellation follows the human's size on screen. Fixed: the level below.", parent);
+  mode_->addOption("Automatic", kAutomatic);
+  mode_->addOption("Fixed", kFixed);
+  level_ = new rviz::IntProperty("Tessellation Level", 6, "Fixed level: each patch is cut n x n (1-32).", parent);
+  level_->setMin(1);
+  level_->setMax(32);
+  max_error_pixels_ =
+      new rviz::FloatProperty("Max Screen Error", 1.0, "Automatic level: largest geometric error in pixels.", parent);
+  max_error_pixels_->setMin(0.1);
+  vertex_evaluation_ = new rviz::EnumProperty(
+      "Vertex Evaluation", "GPU",
+      "GPU: the vertex shader evaluates the Bezier patches from their control points; rviz's thread only poses "
+      "the control points. CPU: every vertex is evaluated and sent each frame. Displaced geometry is always CPU.",
+      parent, SIGNAL(vertexEvaluationChanged()), this);
+  vertex_evaluation_->addOption("GPU", kGpuVertices);
+  vertex_evaluation_->addOption("CPU", kCpuVertices);
+}
+
+bool LodProperties::automatic() const { return mode_->getOptionInt() == kAutomatic; }
+
+bool LodProperties::gpuVertices() const { return vertex_evaluation_->getOptionInt() == kGpuVertices; }
+
+LevelOfDetail LodProperties::levelOfDetail(const Ogre::Camera* camera) const {
+  LevelOfDetail lod;
+  lod.level = level_->getInt();
+  lod.automatic = automatic();
+  if (lod.automatic && camera != nullptr) {
+    const Ogre::Vector3 eye = camera->getDerivedPosition();
+    lod.camera.position = {eye.x, eye.y, eye.z};
+    lod.camera.vertical_fov_radians = camera->getFOVy().valueRadians();
+    lod.camera.viewport_height_pixels = camera->getViewport() ? camera->getViewport()->getActualHeight() : 1000.0;
+    lod.max_error_pixels = max_error_pixels_->getFloat();
+  }
+  return lod;
+}
+
+}  // namespace dressed_human

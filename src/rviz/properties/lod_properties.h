@@ -1,0 +1,36 @@
+#pragma once
+// The DressedHuman display's level-of-detail properties: automatic (from the camera) or fixed
+// tessellation, and who evaluates the vertices (the GPU's vertex shader or the CPU).
+
+#include <QObject>
+
+#include "dressed_human/core/model/human_model.h"
+#include "properties/rviz_properties_fwd.h"
+
+namespace Ogre {
+class Camera;
+}  // namespace Ogre
+
+namespace dressed_human {
+
+class LodProperties : public QObject {
+  Q_OBJECT
+ public:
+  explicit LodProperties(rviz::Property* parent);
+
+  // The level of detail the properties ask for; an automatic one follows `camera` (if any).
+  LevelOfDetail levelOfDetail(const Ogre::Camera* camera) const;
+  bool automatic() const;
+  bool gpuVertices() const;
+
+ Q_SIGNALS:
+  void vertexEvaluationChanged();
+
+ private:
+  rviz::EnumProperty* mode_;
+  rviz::IntProperty* level_;
+  rviz::FloatProperty* max_error_pixels_;
+  rviz::EnumProperty* vertex_evaluation_;
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,49 @@
+#pragma once
+// The DressedHuman display's relief properties: how the relief is drawn (bump mapping, flat,
+// displaced geometry), how strong the skin's and the cloth's relief are, and the skin relief's
+// Voronoi cells (SkinReliefParameters).
+
+#include <QObject>
+
+#include "dressed_human/core/relief/skin_relief.h"
+#include "properties/rviz_properties_fwd.h"
+
+namespace dressed_human {
+
+enum class ReliefMode { kBumpMapping = 0, kFlat = 1, kDisplacedGeometry = 2 };
+
+class ReliefProperties : public QObject {
+  Q_OBJECT
+ public:
+  explicit ReliefProperties(rviz::Property* parent);
+
+  ReliefMode mode() const;
+  int displacementLevel() const;  // displaced geometry: each patch cut n x n
+  float skinStrength() const;
+  float wrinkleStrength() const;
+  void setSkinStrength(float strength);  // a configuration's old "Relief Strength"
+  SkinReliefParameters skinParameters() const;
+  // Displacement Level shows only with displaced geometry.
+  void updateVisibility();
+
+ Q_SIGNALS:
+  void appearanceChanged();  // mode, strengths, displacement level
+  void skinMapChanged();     // a skin-relief parameter: the map must be built again
+
+ private:
+  rviz::EnumProperty* mode_;
+  rviz::IntProperty* displacement_level_;
+  rviz::FloatProperty* skin_strength_;
+  rviz::FloatProperty* wrinkle_strength_;
+  rviz::IntProperty* levels_;
+  rviz::FloatProperty* cell_size_;
+  rviz::IntProperty* seed_;
+  rviz::FloatProperty* direction_;
+  rviz::FloatProperty* stretch_;
+  rviz::FloatProperty* wobble_;
+  rviz::FloatProperty* jitter_;
+  rviz::FloatProperty* slope_;
+  rviz::FloatProperty* roundness_;
+};
+
+}  // namespace dressed_human

@@ -1,0 +1,13 @@
+#pragma once
+// The rviz property classes the property groups hold (their headers only in the .cpp files).
+
+namespace rviz {
+class BoolProperty;
+class ColorProperty;
+class EnumProperty;
+class FloatProperty;
+class IntProperty;
+class Property;
+class StringProperty;
+class VectorProperty;
+}  // namespace rviz
