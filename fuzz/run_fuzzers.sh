@@ -1,28 +1,42 @@
 #!/bin/sh
-# Builds the libFuzzer targets of the motion capture parsers with clang (outside the CMake build)
-# and runs each for the given number of seconds.
+# Builds the libFuzzer targets of the file parsers (motion capture BVH and .mot, motion YAML, body
+# YAML) with clang (outside the CMake build) and runs each for the given number of seconds.
 #   fuzz/run_fuzzers.sh [seconds=60] [build-dir=build_fuzz]
-# Seeds: data/motion/*.bvh|mot and fuzz/seeds/*.bvh|mot; inputs are capped at 16 KB (large ones only
-# slow the mutations down). Crashes land in <build-dir>/<target>/crash-*; the script exits non-zero
-# when a target fails. Needs clang++ (apt-get install clang).
+# Seeds: data/motion/*.bvh|mot, config/motions/*.yaml, config/bodies/*.yaml and fuzz/seeds/;
+# inputs are capped at 16 KB (large ones only slow the mutations down; the shipped walk is 13 KB).
+# Crashes land in <build-dir>/<target>/crash-*; the script exits non-zero when a target fails.
+# Needs clang++ (apt-get install clang).
 set -eu
 seconds="${1:-60}"
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${2:-$here/build_fuzz}"
 mkdir -p "$build/bin"
 cxx="${CXX_FUZZ:-clang++}"
-flags="-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$here/include -isystem /usr/include/eigen3"
+flags="-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$here/include \
+  -isystem /usr/include/eigen3 -DDRESSED_HUMAN_SOURCE_DIR=\"$here\""
 
-build_target() {  # name, parser source
-  "$cxx" $flags "$here/fuzz/$1.cpp" "$here/src/core/$2" -o "$build/bin/$1"
+build_target() {  # name, core sources (below src/core), then libraries
+  name=$1; shift
+  sources=""; libraries=""
+  for item in "$@"; do
+    case "$item" in -l*) libraries="$libraries $item" ;; *) sources="$sources $here/src/core/$item" ;; esac
+  done
+  "$cxx" $flags "$here/fuzz/$name.cpp" $sources -o "$build/bin/$name" $libraries
 }
-build_target fuzz_bvh_parser motion/bvh_file.cpp
-build_target fuzz_mot_parser motion/opensim_motion_file.cpp
+build_target fuzz_bvh_parser motion/bvh_file.cpp io/text_file.cpp
+build_target fuzz_mot_parser motion/opensim_motion_file.cpp io/text_file.cpp
+build_target fuzz_motion_yaml motion/motion_file.cpp motion/motion.cpp motion/motion_evaluator.cpp io/text_file.cpp \
+  -lyaml-cpp
+build_target fuzz_body_yaml skeleton/body_description.cpp skeleton/skeleton.cpp skeleton/forward_kinematics.cpp \
+  surfaces/skin.cpp surfaces/bezier_patch.cpp surfaces/tessellation.cpp surfaces/tessellation_error.cpp \
+  io/text_file.cpp -lyaml-cpp -lurdfdom_model
 
-run_target() {  # name, seed glob extension
-  corpus="$build/$1/corpus"
+run_target() {  # name, seed files...
+  name=$1; shift
+  corpus="$build/$name/corpus"
   mkdir -p "$corpus"
-  cp "$here"/data/motion/*."$2" "$here"/fuzz/seeds/*."$2" "$corpus"/ 2>/dev/null || true
+  for seed in "$@"; do cp "$seed" "$corpus"/ 2>/dev/null || true; done
+  set -- "$name"
   status=0
   (cd "$build/$1" && "$build/bin/$1" -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
       -print_final_stats=1 "$corpus") > "$build/$1.log" 2>&1 || status=$?
@@ -30,8 +44,10 @@ run_target() {  # name, seed glob extension
   return $status
 }
 failed=0
-mkdir -p "$build/fuzz_bvh_parser" "$build/fuzz_mot_parser"
-run_target fuzz_bvh_parser bvh || failed=1
-run_target fuzz_mot_parser mot || failed=1
-if [ -n "$(ls "$build"/fuzz_*_parser/crash-* "$build"/fuzz_*_parser/timeout-* 2>/dev/null)" ]; then failed=1; fi
+for target in fuzz_bvh_parser fuzz_mot_parser fuzz_motion_yaml fuzz_body_yaml; do mkdir -p "$build/$target"; done
+run_target fuzz_bvh_parser "$here"/data/motion/*.bvh "$here"/fuzz/seeds/*.bvh || failed=1
+run_target fuzz_mot_parser "$here"/data/motion/*.mot "$here"/fuzz/seeds/*.mot || failed=1
+run_target fuzz_motion_yaml "$here"/config/motions/*.yaml || failed=1
+run_target fuzz_body_yaml "$here"/config/bodies/*.yaml || failed=1
+if [ -n "$(ls "$build"/fuzz_*/crash-* "$build"/fuzz_*/timeout-* 2>/dev/null)" ]; then failed=1; fi
 exit $failed
