@@ -1,6 +1,7 @@
 // The boundary of a skin cell as it owns pixels in the rasteriser (skin_relief_rasterizer.h).
 #include "dressed_human/core/relief/skin_cell_boundary.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dressed_human {
@@ -83,6 +84,83 @@ int wallOrigin(const std::vector<CellLevel>& levels, std::size_t level_index, co
   return -1;
 }
 
+// s = g . q with g . r_k = g . r_k+1 = 1 on the triangle (c, v_k, v_k+1).
+Eigen::Vector2d fanGradient(const std::vector<Eigen::Vector2d>& relative, std::size_t k) {
+  const std::size_t n = relative.size();
+  const Eigen::Vector2d& a = relative[k];
+  const Eigen::Vector2d& b = relative[(k + 1) % n];
+  const double determinant = cross(a, b);
+  return Eigen::Vector2d((b.y() - a.y()) / determinant, (a.x() - b.x()) / determinant);
+}
+
+// Folded somewhere: split the circle at every vertex direction and keep, per piece, the nearest
+// boundary crossing (largest s); the pockets behind a fold are left to the per-pixel path
+// (nothing here claims them).
+void foldedBoundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors, BoundaryFanScratch& scratch) {
+  const std::size_t n = relative.size();
+  scratch.angles.resize(n);
+  scratch.order.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    scratch.angles[k] = diamondAngle(relative[k].x(), relative[k].y());
+    scratch.order[k] = static_cast<int>(k);
+  }
+  const std::vector<double>& angles = scratch.angles;
+  std::sort(scratch.order.begin(), scratch.order.end(),
+            [&](int a, int b) { return angles[static_cast<std::size_t>(a)] < angles[static_cast<std::size_t>(b)]; });
+  // Piece j lies between the sorted vertex directions j and j + 1. An edge can only cross
+  // the pieces between its two ends' ranks, so each edge visits those (usually one) instead
+  // of every piece testing every edge; edges in index order keep the first of equal values.
+  scratch.rank.resize(n);
+  for (std::size_t j = 0; j < n; ++j) scratch.rank[static_cast<std::size_t>(scratch.order[j])] = j;
+  scratch.piece_direction.resize(n);
+  scratch.piece_best.assign(n, 0.0);
+  scratch.piece_winner.assign(n, -1);
+  scratch.piece_gradient.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double from = scratch.angles[static_cast<std::size_t>(scratch.order[j])];
+    double to = scratch.angles[static_cast<std::size_t>(scratch.order[(j + 1) % n])];
+    if (j + 1 == n) to += 4.0;
+    scratch.piece_direction[j] = diamondDirection(0.5 * (from + to));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector2d& a = relative[k];
+    const Eigen::Vector2d& b = relative[(k + 1) % n];
+    const double orientation = cross(a, b);
+    if (orientation == 0.0) continue;
+    const std::size_t first_piece = orientation > 0.0 ? scratch.rank[k] : scratch.rank[(k + 1) % n];
+    const std::size_t end_piece = orientation > 0.0 ? scratch.rank[(k + 1) % n] : scratch.rank[k];
+    const Eigen::Vector2d g = fanGradient(relative, k);
+    for (std::size_t j = first_piece; j != end_piece; j = j + 1 == n ? 0 : j + 1) {
+      const Eigen::Vector2d& direction = scratch.piece_direction[j];
+      const bool inside = orientation > 0.0 ? cross(a, direction) > 0.0 && cross(direction, b) > 0.0
+                                            : cross(b, direction) > 0.0 && cross(direction, a) > 0.0;
+      if (!inside) continue;
+      const double value = g.dot(direction);
+      if (value > scratch.piece_best[j]) {
+        scratch.piece_best[j] = value;
+        scratch.piece_winner[j] = static_cast<int>(k);
+        scratch.piece_gradient[j] = g;
+      }
+    }
+  }
+  int previous_winner = -2;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double from = scratch.angles[static_cast<std::size_t>(scratch.order[j])];
+    double to = scratch.angles[static_cast<std::size_t>(scratch.order[(j + 1) % n])];
+    if (j + 1 == n) to += 4.0;
+    if (!(to - from > 1e-12)) continue;
+    const int winner = scratch.piece_winner[j];
+    Eigen::Vector2d best_gradient = winner >= 0 ? scratch.piece_gradient[j] : Eigen::Vector2d(0.0, 0.0);
+    if (winner == previous_winner && winner >= 0) continue;  // same triangle continues
+    previous_winner = winner;
+    // No crossing at all (cannot happen for a closed boundary around the centre): nothing
+    // in this sector is claimed.
+    if (winner < 0) best_gradient = Eigen::Vector2d(INFINITY, INFINITY);
+    const Eigen::Vector2d& start = relative[static_cast<std::size_t>(scratch.order[j])];
+    sectors.push_back({start, best_gradient});
+  }
+}
+
 }  // namespace
 
 // The closed boundary of a cell as it owns pixels, counter-clockwise, in the cell's frame: each
@@ -120,6 +198,30 @@ std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels,
     if (junction_last) chain.push_back(last);
   }
   return chain;
+}
+
+void boundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors, BoundaryFanScratch& scratch) {
+  sectors.clear();
+  const std::size_t n = relative.size();
+  bool monotone = n >= 3;
+  double turned = 0.0;
+  for (std::size_t k = 0; k < n && monotone; ++k) {
+    const Eigen::Vector2d& a = relative[k];
+    const Eigen::Vector2d& b = relative[(k + 1) % n];
+    if (!(cross(a, b) > 1e-14 * a.norm() * b.norm())) monotone = false;
+    // Turn in pseudo-angle units (a half turn is 2; each step here is less than that).
+    double step = diamondAngle(b.x(), b.y()) - diamondAngle(a.x(), a.y());
+    if (step < 0.0) step += 4.0;
+    turned += step;
+  }
+  if (monotone && std::abs(turned - 4.0) < 1e-6) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const Eigen::Vector2d g = fanGradient(relative, k);
+      sectors.push_back({relative[k], g});
+    }
+  } else if (n >= 3) {
+    foldedBoundaryFan(relative, sectors, scratch);
+  }
 }
 
 }  // namespace skin_detail

@@ -187,6 +187,33 @@ struct BandLevel {
   int* run_ends;
 };
 
+// The sector holding the point (qx, dy) from the centre, walked to from `sector` (the previous
+// row's: usually the same or a neighbour).
+inline int sectorHolding(const RasterSector* sectors, int sector_count, int sector, double qx, double dy) {
+  for (int step = 0; step < 2 * sector_count; ++step) {
+    const RasterSector& a = sectors[sector];
+    const RasterSector& b = sectors[sector + 1 == sector_count ? 0 : sector + 1];
+    if (a.direction_x * dy - a.direction_y * qx < 0.0) {
+      sector = sector == 0 ? sector_count - 1 : sector - 1;
+    } else if (b.direction_x * dy - b.direction_y * qx >= 0.0) {
+      sector = sector + 1 == sector_count ? 0 : sector + 1;
+    } else {
+      break;
+    }
+  }
+  return sector;
+}
+
+// column modulo width. Cells lie within a tile's width of the tile, so mostly no integer
+// division is needed.
+inline int wrappedColumn(int column, int width) {
+  int wrapped = column;
+  if (wrapped < 0) wrapped += width;
+  if (wrapped >= width) wrapped -= width;
+  if (wrapped < 0 || wrapped >= width) wrapped = ((column % width) + width) % width;
+  return wrapped;
+}
+
 // The level's cells' pixels in the band. The hot loops of the renderer, kept together.
 void rasteriseBandLevel(const RasterLevel& level, LevelRows& rows_in, int band, const BandLevel& target) {
   const int band_first = target.band_first, band_last = target.band_last;
@@ -222,27 +249,11 @@ void rasteriseBandLevel(const RasterLevel& level, LevelRows& rows_in, int band, 
         const int column_last = span[1];
         const std::size_t row_base = static_cast<std::size_t>(row - wrap * height - band_first) * static_cast<std::size_t>(width);
         const double dy = (row + 0.5) * inverse_height - cell.centre_y;
-        // Sector of the row's first pixel: walk from the previous row's.
-        const double qx_first = (column_first + 0.5) * inverse_width - cell.centre_x;
-        for (int step = 0; step < 2 * sector_count; ++step) {
-          const RasterSector& a = sectors[sector];
-          const RasterSector& b = sectors[sector + 1 == sector_count ? 0 : sector + 1];
-          if (a.direction_x * dy - a.direction_y * qx_first < 0.0) {
-            sector = sector == 0 ? sector_count - 1 : sector - 1;
-          } else if (b.direction_x * dy - b.direction_y * qx_first >= 0.0) {
-            sector = sector + 1 == sector_count ? 0 : sector + 1;
-          } else {
-            break;
-          }
-        }
+        sector = sectorHolding(sectors, sector_count, sector, (column_first + 0.5) * inverse_width - cell.centre_x, dy);
         // Unwrapped columns map to row_base + column + shift; the shift drops by width from
         // wrap_column on, where the row crosses the tile's right edge (rows are narrower than
-        // the tile). Cells lie within a tile's width of the tile, so mostly no integer
-        // division is needed.
-        int column_wrapped_first = column_first;
-        if (column_wrapped_first < 0) column_wrapped_first += width;
-        if (column_wrapped_first >= width) column_wrapped_first -= width;
-        if (column_wrapped_first < 0 || column_wrapped_first >= width) column_wrapped_first = ((column_first % width) + width) % width;
+        // the tile).
+        const int column_wrapped_first = wrappedColumn(column_first, width);
         const int wrap_column = column_first + (width - column_wrapped_first);
         const double column_offset = cell.centre_x * width - 0.5;
         // Two passes over the row, so that no branch depends on how many of its pixels a

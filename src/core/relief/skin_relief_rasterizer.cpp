@@ -41,29 +41,14 @@ using skin_detail::CellLevel;
 using skin_detail::RasterCell;
 using skin_detail::RasterLevel;
 using skin_detail::RasterSector;
+using skin_detail::BoundarySector;
 using skin_detail::Wall;
+using skin_detail::cross;
+using skin_detail::diamondAngle;
+using skin_detail::diamondDirection;
 using skin_detail::wallPoint;
 
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// Monotone in the angle of (x, y), in [0, 4): orders directions without atan2.
-double diamondAngle(double x, double y) {
-  const double sum = std::abs(x) + std::abs(y);
-  if (!(sum > 0.0)) return 0.0;
-  const double t = y / sum;
-  return x >= 0.0 ? (t < 0.0 ? 4.0 + t : t) : 2.0 - t;
-}
-
-// Inverse of diamondAngle: a direction (not unit) of pseudo-angle a, any real a.
-Eigen::Vector2d diamondDirection(double a) {
-  a -= 4.0 * std::floor(a / 4.0);
-  if (a < 1.0) return Eigen::Vector2d(1.0 - a, a).normalized();
-  if (a < 2.0) return Eigen::Vector2d(1.0 - a, 2.0 - a).normalized();
-  if (a < 3.0) return Eigen::Vector2d(a - 3.0, 2.0 - a).normalized();
-  return Eigen::Vector2d(a - 3.0, a - 4.0).normalized();
-}
 
 // Exact comparison (the same wall segment gives the same bits); NaN, from a degenerate wall,
 // counts as equal to itself so the bisection below does not chase it.
@@ -71,12 +56,6 @@ bool sameGradient(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
   return same(a.x(), b.x()) && same(a.y(), b.y());
 }
-
-// A sector of the boundary's fan seen from the centre.
-struct ChainSector {
-  Eigen::Vector2d direction;  // start ray
-  Eigen::Vector2d boundary;   // gradient of the ray ratio to the boundary
-};
 
 struct CriticalDirection {
   double angle;  // diamondAngle, in [0, 4)
@@ -92,7 +71,7 @@ struct PrunedDirection {
 // Appends a boundary sector's sectors of the reference's s; a new one only where the gradient
 // changes.
 struct SectorEmitter {
-  const ChainSector& sector;
+  const BoundarySector& sector;
   std::vector<RasterSector>& sectors;
   Eigen::Vector2d carried = Eigen::Vector2d(0.0, 0.0);
   bool started = false;
@@ -123,8 +102,6 @@ class SectorBuilder {
   bool addCell(std::size_t level_index, const Cell& cell, RasterLevel& out);
 
  private:
-  void boundaryFan();
-  void foldedBoundaryFan();
   void collectCriticalDirections();
   void addCritical(const Eigen::Vector2d& direction, int wall_index);
   std::uint64_t candidatesIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) const;
@@ -137,15 +114,6 @@ class SectorBuilder {
   void advancePruned();
   void finishCell(RasterCell& raster, RasterLevel& out) const;
 
-  // s = g . q with g . r_k = g . r_k+1 = 1 on the triangle (c, v_k, v_k+1).
-  Eigen::Vector2d gradientOf(std::size_t k) const {
-    const std::size_t n = relative_.size();
-    const Eigen::Vector2d& a = relative_[k];
-    const Eigen::Vector2d& b = relative_[(k + 1) % n];
-    const double determinant = cross(a, b);
-    return Eigen::Vector2d((b.y() - a.y()) / determinant, (a.x() - b.x()) / determinant);
-  }
-
   const std::vector<CellLevel>& levels_;
   // The cell being built.
   const CellLevel* level_ = nullptr;
@@ -154,7 +122,7 @@ class SectorBuilder {
   // Per wall 1 / (d + e) and 1 / (d - e) (the latter +inf where d <= e: never pruned).
   std::vector<double> inverse_outer_, inverse_inner_;
   std::vector<Eigen::Vector2d> relative_;  // boundary vertices from the centre
-  std::vector<ChainSector> chain_sectors_;
+  std::vector<BoundarySector> chain_sectors_;
   std::vector<CriticalDirection> critical_, pieces_;
   std::vector<PrunedDirection> pruned_, splits_;
   std::vector<Eigen::Vector2d> candidate_gradients_;
@@ -168,13 +136,7 @@ class SectorBuilder {
   // with the set-aside directions, found by one pointer going round with the walk.
   double unwrap_ = 0.0, pruned_cycle_ = 0.0;
   std::size_t pruned_index_ = 0;
-  // Scratch of the folded fan.
-  std::vector<double> angles_;
-  std::vector<int> order_;
-  std::vector<std::size_t> rank_;
-  std::vector<Eigen::Vector2d> piece_direction_, piece_gradient_;
-  std::vector<double> piece_best_;
-  std::vector<int> piece_winner_;
+  skin_detail::BoundaryFanScratch fan_scratch_;
 };
 
 bool SectorBuilder::addCell(std::size_t level_index, const Cell& cell, RasterLevel& out) {
@@ -201,103 +163,11 @@ bool SectorBuilder::addCell(std::size_t level_index, const Cell& cell, RasterLev
   raster.high_x = high.x();
   raster.high_y = high.y();
   const bool fits = !(high.x() - low.x() >= 1.0 || high.y() - low.y() >= 1.0);
-  boundaryFan();
+  skin_detail::boundaryFan(relative_, chain_sectors_, fan_scratch_);
   collectCriticalDirections();
   walkBoundarySectors(out);
   finishCell(raster, out);
   return fits;
-}
-
-// chain_sectors_ from the boundary: one per fan triangle where the boundary is star-shaped from
-// the centre.
-void SectorBuilder::boundaryFan() {
-  chain_sectors_.clear();
-  const std::size_t n = relative_.size();
-  bool monotone = n >= 3;
-  double turned = 0.0;
-  for (std::size_t k = 0; k < n && monotone; ++k) {
-    const Eigen::Vector2d& a = relative_[k];
-    const Eigen::Vector2d& b = relative_[(k + 1) % n];
-    if (!(cross(a, b) > 1e-14 * a.norm() * b.norm())) monotone = false;
-    // Turn in pseudo-angle units (a half turn is 2; each step here is less than that).
-    double step = diamondAngle(b.x(), b.y()) - diamondAngle(a.x(), a.y());
-    if (step < 0.0) step += 4.0;
-    turned += step;
-  }
-  if (monotone && std::abs(turned - 4.0) < 1e-6) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const Eigen::Vector2d g = gradientOf(k);
-      chain_sectors_.push_back({relative_[k], g});
-    }
-  } else if (n >= 3) {
-    foldedBoundaryFan();
-  }
-}
-
-// Folded somewhere: split the circle at every vertex direction and keep, per piece, the nearest
-// boundary crossing (largest s); the pockets behind a fold are left to the per-pixel path
-// (nothing here claims them).
-void SectorBuilder::foldedBoundaryFan() {
-  const std::size_t n = relative_.size();
-  angles_.resize(n);
-  order_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    angles_[k] = diamondAngle(relative_[k].x(), relative_[k].y());
-    order_[k] = static_cast<int>(k);
-  }
-  std::sort(order_.begin(), order_.end(), [&](int a, int b) { return angles_[static_cast<std::size_t>(a)] < angles_[static_cast<std::size_t>(b)]; });
-  // Piece j lies between the sorted vertex directions j and j + 1. An edge can only cross
-  // the pieces between its two ends' ranks, so each edge visits those (usually one) instead
-  // of every piece testing every edge; edges in index order keep the first of equal values.
-  rank_.resize(n);
-  for (std::size_t j = 0; j < n; ++j) rank_[static_cast<std::size_t>(order_[j])] = j;
-  piece_direction_.resize(n);
-  piece_best_.assign(n, 0.0);
-  piece_winner_.assign(n, -1);
-  piece_gradient_.resize(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const double from = angles_[static_cast<std::size_t>(order_[j])];
-    double to = angles_[static_cast<std::size_t>(order_[(j + 1) % n])];
-    if (j + 1 == n) to += 4.0;
-    piece_direction_[j] = diamondDirection(0.5 * (from + to));
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector2d& a = relative_[k];
-    const Eigen::Vector2d& b = relative_[(k + 1) % n];
-    const double orientation = cross(a, b);
-    if (orientation == 0.0) continue;
-    const std::size_t first_piece = orientation > 0.0 ? rank_[k] : rank_[(k + 1) % n];
-    const std::size_t end_piece = orientation > 0.0 ? rank_[(k + 1) % n] : rank_[k];
-    const Eigen::Vector2d g = gradientOf(k);
-    for (std::size_t j = first_piece; j != end_piece; j = j + 1 == n ? 0 : j + 1) {
-      const Eigen::Vector2d& direction = piece_direction_[j];
-      const bool inside = orientation > 0.0 ? cross(a, direction) > 0.0 && cross(direction, b) > 0.0
-                                            : cross(b, direction) > 0.0 && cross(direction, a) > 0.0;
-      if (!inside) continue;
-      const double value = g.dot(direction);
-      if (value > piece_best_[j]) {
-        piece_best_[j] = value;
-        piece_winner_[j] = static_cast<int>(k);
-        piece_gradient_[j] = g;
-      }
-    }
-  }
-  int previous_winner = -2;
-  for (std::size_t j = 0; j < n; ++j) {
-    const double from = angles_[static_cast<std::size_t>(order_[j])];
-    double to = angles_[static_cast<std::size_t>(order_[(j + 1) % n])];
-    if (j + 1 == n) to += 4.0;
-    if (!(to - from > 1e-12)) continue;
-    const int winner = piece_winner_[j];
-    Eigen::Vector2d best_gradient = winner >= 0 ? piece_gradient_[j] : Eigen::Vector2d(0.0, 0.0);
-    if (winner == previous_winner && winner >= 0) continue;  // same triangle continues
-    previous_winner = winner;
-    // No crossing at all (cannot happen for a closed boundary around the centre): nothing
-    // in this sector is claimed.
-    if (winner < 0) best_gradient = Eigen::Vector2d(INFINITY, INFINITY);
-    const Eigen::Vector2d& start = relative_[static_cast<std::size_t>(order_[j])];
-    chain_sectors_.push_back({start, best_gradient});
-  }
 }
 
 // The reference's s inside each boundary sector: its ray hit is decided by the direction alone
@@ -483,7 +353,7 @@ void SectorBuilder::walkBoundarySectors(RasterLevel& out) {
   pruned_index_ = 0;
   double previous_from = -1.0;
   for (std::size_t k = 0; k < chain_count && chain_count >= 3; ++k) {
-    const ChainSector& sector = chain_sectors_[k];
+    const BoundarySector& sector = chain_sectors_[k];
     const Eigen::Vector2d from_direction = sector.direction.normalized();
     const Eigen::Vector2d to_direction = chain_sectors_[(k + 1) % chain_count].direction.normalized();
     // Pseudo-angles (diamondAngle, period 4) order the directions.
