@@ -90,19 +90,26 @@ namespace {
 // among the siblings, within the parent's straight polygon").
 template <typename Level, typename Hit, typename Entered>
 inline bool enterCell(const Level& level, double x, double y, const Hit& candidate, Entered& entered) {
-  entered.hit = candidate;
-  entered.cell = &level.cells[static_cast<std::size_t>(candidate.cell)];
-  entered.walls = level.walls.data() + entered.cell->first_wall;
-  entered.qx = x + candidate.offset_x - entered.cell->centre_x;
-  entered.qy = y + candidate.offset_y - entered.cell->centre_y;
+  const auto* cell = &level.cells[static_cast<std::size_t>(candidate.cell)];
+  const auto* walls = level.walls.data() + cell->first_wall;
+  // In locals: the stores to the projections could otherwise alias them.
+  const double qx = x + candidate.offset_x - cell->centre_x;
+  const double qy = y + candidate.offset_y - cell->centre_y;
+  const int wall_count = cell->wall_count;
+  double* projection = entered.projection;
   bool inside = true;
   bool near_wobble = false;
-  const auto* walls = entered.walls;
-  for (int k = 0; k < entered.cell->wall_count; ++k) {
-    entered.projection[k] = entered.qx * walls[k].normal_x + entered.qy * walls[k].normal_y;
-    inside &= entered.projection[k] <= walls[k].centre_distance;
-    near_wobble |= entered.projection[k] > walls[k].wobble_threshold;
+  for (int k = 0; k < wall_count; ++k) {
+    const double along_normal = qx * walls[k].normal_x + qy * walls[k].normal_y;
+    projection[k] = along_normal;
+    inside &= along_normal <= walls[k].centre_distance;
+    near_wobble |= along_normal > walls[k].wobble_threshold;
   }
+  entered.hit = candidate;
+  entered.cell = cell;
+  entered.walls = walls;
+  entered.qx = qx;
+  entered.qy = qy;
   entered.near_wobble = near_wobble;
   return inside;
 }
@@ -155,7 +162,7 @@ inline void packedRayHit(const Segment* level_segments, int segments, double inv
 
 // The cell (cache or search, then the wobble test). Same decisions, in the same order, as
 // findLevelZero/findChild + applyWobble.
-void SkinReliefSampler::locateCell(int level_index, double x, double y, const FastHit& parent, FastCache* cache,
+inline void SkinReliefSampler::locateCell(int level_index, double x, double y, const FastHit& parent, FastCache* cache,
                                    EnteredCell& entered) const {
   const PackedLevel& level = packed_[static_cast<std::size_t>(level_index)];
   const auto slot = static_cast<std::size_t>(level_index);
@@ -215,7 +222,7 @@ void SkinReliefSampler::locateCell(int level_index, double x, double y, const Fa
 
 // s and its gradient over the entered cell's walls: their max, or their q-norm (roundness > 0).
 // Same decisions as accumulate.
-void SkinReliefSampler::rayParameter(const PackedLevel& level, const EnteredCell& entered, LevelResult& out) const {
+inline void SkinReliefSampler::rayParameter(const PackedLevel& level, const EnteredCell& entered, LevelResult& out) const {
   const int segments = level.segment_count;
   const double inverse_segments = segments > 0 ? 1.0 / segments : 0.0;
   const PackedSegment* level_segments = level.segments.data();
