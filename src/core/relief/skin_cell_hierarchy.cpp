@@ -1,7 +1,5 @@
 #include "dressed_human/core/relief/skin_cell_hierarchy.h"
 
-#include "dressed_human/core/relief/skin_relief.h"
-
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -467,4 +465,29 @@ std::vector<CellLevel> buildCellHierarchy(const SkinReliefParameters& parameters
 }
 
 }  // namespace skin_detail
+
+SkinCellHierarchy::SkinCellHierarchy(const SkinReliefParameters& parameters) : levels_(skin_detail::buildCellHierarchy(parameters)) {}
+
+// The messages name SkinRelief: callers meet the hierarchy through it.
+const skin_detail::CellLevel& SkinCellHierarchy::levelAt(int level) const {
+  if (level < 0 || level >= levelCount()) {
+    std::ostringstream message;
+    message << "SkinRelief: level must be in 0.." << levelCount() - 1 << ", got " << level;
+    throw std::out_of_range(message.str());
+  }
+  return levels_[static_cast<std::size_t>(level)];
+}
+
+int SkinCellHierarchy::parentOf(int level, int cell) const {
+  const skin_detail::CellLevel& cells = levelAt(level);
+  if (cell < 0 || static_cast<std::size_t>(cell) >= cells.cells.size()) throw std::out_of_range("SkinRelief::parentOf: cell index out of range");
+  return cells.cells[static_cast<std::size_t>(cell)].parent;
+}
+
+const std::vector<int>& SkinCellHierarchy::childrenOf(int level, int cell) const {
+  const skin_detail::CellLevel& cells = levelAt(level);
+  if (cell < 0 || static_cast<std::size_t>(cell) >= cells.cells.size()) throw std::out_of_range("SkinRelief::childrenOf: cell index out of range");
+  return cells.cells[static_cast<std::size_t>(cell)].children;
+}
+
 }  // namespace dressed_human

@@ -219,6 +219,72 @@ WrinkleChoice chooseWrinkles(double alpha, const std::string& chain, const Buckl
   return choice;
 }
 
+namespace {
+
+// Rows of cells of about cell_length along u, cells_around along v, and how far the surface turns
+// across one cell (for the pattern rule).
+void layoutPatch(const BezierPatch& patch, const WrinklePlacementOptions& options, PatchWrinkleLayout& layout) {
+  const double length_u = curveLength(patch, true, 0.5);
+  const double length_v = curveLength(patch, false, 0.5);
+  layout.rows = std::max(1, static_cast<int>(std::lround(length_u / options.cell_length)));
+  layout.cells_around = options.cells_around;
+  layout.cell.half_length_y = length_u / layout.rows / 2.0;
+  layout.cell.half_width_x = length_v / layout.cells_around / 2.0;
+  double turn = 0.0;
+  int count = 0;
+  for (double u : {0.25, 0.5, 0.75}) {
+    for (int k = 0; k < layout.cells_around; ++k) {
+      const double dot = patch.normal(u, static_cast<double>(k) / layout.cells_around)
+                             .dot(patch.normal(u, static_cast<double>(k + 1) / layout.cells_around));
+      turn += std::acos(std::clamp(dot, -1.0, 1.0));
+      ++count;
+    }
+  }
+  layout.turn_per_cell = turn / count;
+  layout.chain = chooseChain(layout.turn_per_cell, layout.cell, options);
+}
+
+// Spans: a sample at h (span_half_length) above the joint paired with the one as far below it
+// that lies on the same line along the limb (nearest across the axis), at rest, on the region's
+// side of the limb (facing), among the n x n samples of the piece's patches. Longer than the
+// region: with r the span's distance behind the joint, the span closes at tan(theta / 2) = h / r
+// (alpha_span), so h must be well above r for the measure to keep falling through a walk's knee
+// bend.
+void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentControlNet& net, const std::string& piece, int n, double h,
+                      const Eigen::Vector3d& facing, const Eigen::Vector3d& joint, const Eigen::Vector3d& axis, CompressionRegion& region) {
+  std::vector<std::pair<SurfacePoint, Eigen::Vector3d>> upper, lower;
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    if (net.patchPiece(p) != piece) continue;
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)};
+        const PatchSample sample = patches[p].sample(at.u, at.v);
+        if (sample.normal.dot(facing) < 0.5) continue;
+        const double along = (sample.position - joint).dot(axis);
+        if (std::abs(std::abs(along) - h) > 0.2 * h) continue;
+        (along < 0.0 ? upper : lower).emplace_back(at, sample.position);
+      }
+    }
+  }
+  for (const auto& [top, top_position] : upper) {
+    double best = std::numeric_limits<double>::infinity();
+    const std::pair<SurfacePoint, Eigen::Vector3d>* match = nullptr;
+    for (const auto& candidate : lower) {
+      const Eigen::Vector3d d = candidate.second - top_position;
+      const double across = (d - d.dot(axis) * axis).norm();
+      if (across < best) {
+        best = across;
+        match = &candidate;
+      }
+    }
+    if (match && best < 0.2 * h) {
+      region.spans.push_back(MaterialSpan{top, match->first, (match->second - top_position).dot(axis)});
+    }
+  }
+}
+
+}  // namespace
+
 WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skeleton, const BodyShape& shape,
                                    const WrinklePlacementOptions& options)
     : options_(options) {
@@ -233,31 +299,8 @@ WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skele
   rest_patches_ = rest.patches();
   const GarmentControlNet& net = rest.net();
 
-  // Per patch: rows of cells of about cell_length along u, cells_around along v, and how far
-  // the surface turns across one cell (for the pattern rule).
   layouts_.resize(rest_patches_.size());
-  for (std::size_t p = 0; p < rest_patches_.size(); ++p) {
-    const BezierPatch& patch = rest_patches_[p];
-    PatchWrinkleLayout& layout = layouts_[p];
-    const double length_u = curveLength(patch, true, 0.5);
-    const double length_v = curveLength(patch, false, 0.5);
-    layout.rows = std::max(1, static_cast<int>(std::lround(length_u / options_.cell_length)));
-    layout.cells_around = options_.cells_around;
-    layout.cell.half_length_y = length_u / layout.rows / 2.0;
-    layout.cell.half_width_x = length_v / layout.cells_around / 2.0;
-    double turn = 0.0;
-    int count = 0;
-    for (double u : {0.25, 0.5, 0.75}) {
-      for (int k = 0; k < layout.cells_around; ++k) {
-        const double dot = patch.normal(u, static_cast<double>(k) / layout.cells_around)
-                               .dot(patch.normal(u, static_cast<double>(k + 1) / layout.cells_around));
-        turn += std::acos(std::clamp(dot, -1.0, 1.0));
-        ++count;
-      }
-    }
-    layout.turn_per_cell = turn / count;
-    layout.chain = chooseChain(layout.turn_per_cell, layout.cell, options_);
-  }
+  for (std::size_t p = 0; p < rest_patches_.size(); ++p) layoutPatch(rest_patches_[p], options_, layouts_[p]);
 
   // Regions from rest geometry (world = body frame at rest: x front, z up).
   auto boneOrigin = [&](const char* name) -> Eigen::Vector3d {
@@ -271,6 +314,13 @@ WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skele
     return rest_pose.bone_in_world[static_cast<std::size_t>(b)].rotation * Eigen::Vector3d::UnitZ();
   };
   const int n = options_.samples_per_side;
+  const auto addSpans = [&](const std::string& piece, const Eigen::Vector3d& facing, const Eigen::Vector3d& joint,
+                            const Eigen::Vector3d& axis, const std::string& upper_bone, const std::string& lower_bone) {
+    CompressionRegion& region = regions_.back();
+    region.upper_bone = skeleton.findBone(upper_bone);
+    region.lower_bone = skeleton.findBone(lower_bone);
+    addMaterialSpans(rest_patches_, net, piece, n, options_.span_half_length, facing, joint, axis, region);
+  };
   auto collect = [&](const std::string& name, const auto& accept) {
     CompressionRegion region;
     region.name = name;
@@ -288,47 +338,6 @@ WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skele
     for (const SurfacePoint& at : region.samples) ++count[at.patch];
     region.main_patch = static_cast<std::uint32_t>(std::max_element(count.begin(), count.end()) - count.begin());
     regions_.push_back(std::move(region));
-  };
-  // Spans: a sample at span_half_length above the joint paired with the one as far below it
-  // that lies on the same line along the limb (nearest across the axis), at rest, on the
-  // region's side of the limb. Longer than the region: with h the span's half length and r its
-  // distance behind the joint, the span closes at tan(theta / 2) = h / r (alpha_span), so h
-  // must be well above r for the measure to keep falling through a walk's knee bend.
-  auto addSpans = [&](const std::string& piece, const Eigen::Vector3d& facing, const Eigen::Vector3d& joint,
-                      const Eigen::Vector3d& axis, const std::string& upper_bone, const std::string& lower_bone) {
-    CompressionRegion& region = regions_.back();
-    region.upper_bone = skeleton.findBone(upper_bone);
-    region.lower_bone = skeleton.findBone(lower_bone);
-    const double h = options_.span_half_length;
-    std::vector<std::pair<SurfacePoint, Eigen::Vector3d>> upper, lower;
-    for (std::size_t p = 0; p < rest_patches_.size(); ++p) {
-      if (net.patchPiece(p) != piece) continue;
-      for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-          const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)};
-          const PatchSample sample = rest_patches_[p].sample(at.u, at.v);
-          if (sample.normal.dot(facing) < 0.5) continue;
-          const double along = (sample.position - joint).dot(axis);
-          if (std::abs(std::abs(along) - h) > 0.2 * h) continue;
-          (along < 0.0 ? upper : lower).emplace_back(at, sample.position);
-        }
-      }
-    }
-    for (const auto& [top, top_position] : upper) {
-      double best = std::numeric_limits<double>::infinity();
-      const std::pair<SurfacePoint, Eigen::Vector3d>* match = nullptr;
-      for (const auto& candidate : lower) {
-        const Eigen::Vector3d d = candidate.second - top_position;
-        const double across = (d - d.dot(axis) * axis).norm();
-        if (across < best) {
-          best = across;
-          match = &candidate;
-        }
-      }
-      if (match && best < 0.2 * h) {
-        region.spans.push_back(MaterialSpan{top, match->first, (match->second - top_position).dot(axis)});
-      }
-    }
   };
   for (const char* side : {"l", "r"}) {
     const std::string s(side);

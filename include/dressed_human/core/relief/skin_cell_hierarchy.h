@@ -1,6 +1,6 @@
 // The cell structure behind SkinRelief (paper 004 §3-4): Voronoi ridge cells (皮野) on a torus,
 // wobbled furrow walls, and nested levels with parent -> child links. Built once per parameter
-// set; SkinRelief evaluates heights from it.
+// set; SkinReliefSampler and SkinReliefRasterizer evaluate heights from it.
 //
 // Why half-plane clipping instead of Boost.Polygon's voronoi_builder: each level-1 cell is the
 // intersection of the bisector half-planes of the ~30 seeds in its lattice window (exact in double
@@ -9,6 +9,8 @@
 // (stretched) metric of the directionality, none of which Boost's integer-input sweepline builds.
 // The test suite checks level-1 cells against Boost.Polygon's diagram of the same seeds.
 #pragma once
+
+#include "dressed_human/core/relief/skin_relief_parameters.h"
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -19,9 +21,6 @@
 #include <vector>
 
 namespace dressed_human {
-
-struct SkinReliefParameters;
-
 namespace skin_detail {
 
 /// One straight furrow segment bounding a cell, seen from that cell, plus its midpoint-displaced
@@ -85,4 +84,24 @@ inline double outwardWobble(const CellLevel& level, const Wall& wall, double u) 
 }
 
 }  // namespace skin_detail
+
+/// The levels of one parameter set. Levels are numbered from 0; access by index is checked.
+class SkinCellHierarchy {
+ public:
+  /// Throws std::invalid_argument naming a bad parameter.
+  explicit SkinCellHierarchy(const SkinReliefParameters& parameters);
+
+  int levelCount() const { return static_cast<int>(levels_.size()); }
+  /// Throws std::out_of_range for a level outside 0..levelCount() - 1.
+  const skin_detail::CellLevel& levelAt(int level) const;
+  /// Parent index on level - 1 (-1 on level 0).
+  int parentOf(int level, int cell) const;
+  const std::vector<int>& childrenOf(int level, int cell) const;
+  /// Unchecked, for the evaluators' inner loops.
+  const std::vector<skin_detail::CellLevel>& levels() const { return levels_; }
+
+ private:
+  std::vector<skin_detail::CellLevel> levels_;
+};
+
 }  // namespace dressed_human
