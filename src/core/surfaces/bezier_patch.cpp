@@ -122,13 +122,10 @@ ControlRow contractV(const ControlNet& net, const Eigen::Vector4d& v_weights) {
          v_weights[2] * net.middleCols<4>(8) + v_weights[3] * net.middleCols<4>(12);
 }
 
-// The patch's first-order terms at (u, v) from the Bernstein weights of each direction: the net
-// contracted in v (with the weights and their derivative), then in u.
+// Position and first partials at (u, v) from the net contracted in v (with the v weights and
+// their derivative) and the u weights.
 template <typename Terms>
-void firstOrderTerms(const ControlNet& net, const BernsteinWeights& u_weights, const BernsteinWeights& v_weights,
-                     Terms& terms) {
-  const ControlRow row = contractV(net, v_weights.value);
-  const ControlRow row_dv = contractV(net, v_weights.first_derivative);
+void firstOrderTerms(const ControlRow& row, const ControlRow& row_dv, const BernsteinWeights& u_weights, Terms& terms) {
   terms.position = row * u_weights.value;
   terms.d_du = row * u_weights.first_derivative;
   terms.d_dv = row_dv * u_weights.value;
@@ -149,10 +146,12 @@ PatchDerivatives BezierPatch::derivatives(double u, double v) const {
   const ControlNet net = netOf(control_points_);
   const BernsteinWeights bu = cubicBernsteinWeights(u);
   const BernsteinWeights bv = cubicBernsteinWeights(v);
+  const ControlRow row = contractV(net, bv.value);
+  const ControlRow row_dv = contractV(net, bv.first_derivative);
   PatchDerivatives d;
-  firstOrderTerms(net, bu, bv, d);
-  d.d2_du2 = contractV(net, bv.value) * bu.second_derivative;
-  d.d2_dudv = contractV(net, bv.first_derivative) * bu.first_derivative;
+  firstOrderTerms(row, row_dv, bu, d);
+  d.d2_du2 = row * bu.second_derivative;
+  d.d2_dudv = row_dv * bu.first_derivative;
   d.d2_dv2 = contractV(net, bv.second_derivative) * bu.value;
   return d;
 }
@@ -171,7 +170,8 @@ PatchSample BezierPatch::sample(double u, double v) const {
 PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u,
                                 const BernsteinWeights& v_weights, double v) const {
   PatchSample s;
-  firstOrderTerms(netOf(control_points_), u_weights, v_weights, s);
+  const ControlNet net = netOf(control_points_);
+  firstOrderTerms(contractV(net, v_weights.value), contractV(net, v_weights.first_derivative), u_weights, s);
   s.normal = unitNormal(s.d_du, s.d_dv, u, v);
   return s;
 }
