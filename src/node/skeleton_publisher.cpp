@@ -11,7 +11,6 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kMaxRate = 10000.0;
 constexpr double kMaxSpeedFactor = 10.0;
 constexpr double kMaxOriginMetres = 1e5;  // the DressedHuman display's drawable range
@@ -53,7 +52,7 @@ SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::N
   // Physical ranges: a replay from frozen to ten times as fast; positions a map holds (and that
   // rviz can draw a human at, in float); a heading and phase in radians, not degrees.
   s.speed_factor = parameters.numberIn("speed_factor", s.speed_factor, 0.0, kMaxSpeedFactor, "(times the motion's speed)");
-  s.start_phase = parameters.numberIn("start_phase", s.start_phase, -kTwoPi, kTwoPi, "rad");
+  s.start_phase = parameters.numberIn("start_phase", s.start_phase, -2.0 * M_PI, 2.0 * M_PI, "rad");
   s.loop = parameters.boolean("loop", s.loop);
   s.body_id = parameters.text("body_id", s.body_id);
   for (unsigned char c : s.body_id) {
@@ -66,7 +65,7 @@ SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::N
   if (s.world_frame.empty()) throw ParameterError("parameter " + parameters.fullName("world_frame") + " is empty");
   s.origin_x = parameters.numberIn("origin_x", s.origin_x, -kMaxOriginMetres, kMaxOriginMetres, "m");
   s.origin_y = parameters.numberIn("origin_y", s.origin_y, -kMaxOriginMetres, kMaxOriginMetres, "m");
-  s.origin_yaw = parameters.numberIn("origin_yaw", s.origin_yaw, -kTwoPi, kTwoPi, "rad");
+  s.origin_yaw = parameters.numberIn("origin_yaw", s.origin_yaw, -2.0 * M_PI, 2.0 * M_PI, "rad");
   s.publish_joint_states = parameters.boolean("publish_joint_states", s.publish_joint_states);
   return s;
 }
@@ -155,7 +154,7 @@ void SkeletonPublisher::tick() {
   const double cycle = evaluator_->motion().period;
   double elapsed = (now - start_time_).toSec() * settings_.speed_factor;
   if (!settings_.loop) elapsed = std::min(elapsed, cycle);
-  const double time = elapsed + settings_.start_phase / kTwoPi * cycle;
+  const double time = elapsed + settings_.start_phase / (2.0 * M_PI) * cycle;
 
   RigidTransform root;
   evaluator_->evaluate(time, angles_, root, &velocities_);

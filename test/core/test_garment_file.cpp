@@ -55,6 +55,10 @@ TEST(GarmentFile, DefaultGarmentsLoadAndBuild) {
 TEST(GarmentFile, ErrorsNameFileLineColumnAndKey) {
   EXPECT_EQ(errorOf(replaced("radius: [0.115, 0.165]", "radius: [0.115, -0.1]")),
             "bad.yaml:7:60: rows[1].radius[1]: must be > 0, got -0.1");
+  EXPECT_EQ(errorOf(replaced("radius: [0.115, 0.165]", "radius: [0.115, 1e300]")),
+            "bad.yaml:7:60: rows[1].radius[1]: 1e+300 m is outside [0, 1] m");
+  EXPECT_NE(errorOf(replaced("ease: 0.015", "ease: 1e9")).find("ease: 1e+09 m is outside [0, 0.5] m"), std::string::npos)
+      << errorOf(replaced("ease: 0.015", "ease: 1e9"));
   EXPECT_EQ(errorOf(replaced("type: skirt", "type: kilt")),
             "bad.yaml:2:7: type: unknown garment type 'kilt'; expected jacket, skirt, pants or one_piece");
   EXPECT_EQ(errorOf(replaced("length: 0.3", "length: 1.5")), "bad.yaml:10:11: legs.length: must lie in [0, 1] (or be \"knee\"), got 1.5");

@@ -98,6 +98,11 @@ TEST(BodyDescription, BadFiles) {
               {"segments.head.distal_cap", "open distal end"});
   expectError(replaced(good, "    proximal_cap: 0.06    # crotch", "    proximal_cap: -0.06"),
               {"segments.body.proximal_cap", ">= 0"});
+  // Sizes no person has (issue 23): they would put the skin's control points at 1e300 m.
+  expectError(replaced(good, "    proximal_cap: 0.06    # crotch", "    proximal_cap: 1e300"),
+              {"segments.body.proximal_cap", "1e+300 m is outside [0, 1] m"});
+  expectError(replaced(good, "      - [-0.01, 0.110, 0.165]", "      - [-1e300, 0.110, 0.165]"),
+              {"sections[", "[0]: -1e+300 m (z along the bone) is outside [-1, 1]"});
   expectError(replaced(good, "    proximal_cap: 0.06    # crotch", "    joined: true"),
               {"segments.body.joined", "no parent"});
   expectError(replaced(good, "    joined: true\n    sections:\n      - [0.00, 0.050, 0.055]",

@@ -42,6 +42,11 @@ namespace {
 
 // The project's strict reader (file:line:col, key path) plus what garments need: fixed-size
 // vectors, frame names checked against the skeleton, rings.
+// Ring offsets and radii in metres: a garment around a person, not a tent (metres expected).
+constexpr double kMaxOffset = 2.0;
+constexpr double kMaxRadius = 1.0;
+constexpr double kMaxEase = 0.5;
+
 class GarmentYamlReader : public YamlReader<GarmentError> {
  public:
   GarmentYamlReader(std::string source, const Skeleton& skeleton)
@@ -75,12 +80,17 @@ class GarmentYamlReader : public YamlReader<GarmentError> {
     GarmentRing r;
     r.frame = frame(require(node, "frame", key), key + ".frame", left_only);
     r.centre = vector<3>(require(node, "centre", key), key + ".centre");
+    const YAML::Node centre = require(node, "centre", key);
+    for (int i = 0; i < 3; ++i) {  // in its bone's frame: within a body's reach of the bone
+      numberWithin(centre[i], key + ".centre[" + std::to_string(i) + "]", -kMaxOffset, kMaxOffset, " m");
+    }
     const YAML::Node radius = require(node, "radius", key);
     r.radius = vector<2>(radius, key + ".radius");
     for (int i = 0; i < 2; ++i) {
       if (r.radius[i] <= 0.0) {
         fail(radius[i], key + ".radius[" + std::to_string(i) + "]", "must be > 0, got " + radius[i].Scalar());
       }
+      numberWithin(radius[i], key + ".radius[" + std::to_string(i) + "]", 0.0, kMaxRadius, " m");
     }
     return r;
   }
@@ -131,6 +141,7 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
   if (document["ease"]) {
     g.ease = reader.number(document["ease"], "ease");
     if (g.ease < 0.0) reader.fail(document["ease"], "ease", "must be >= 0 metres, got " + document["ease"].Scalar());
+    reader.numberWithin(document["ease"], "ease", 0.0, kMaxEase, " m");
   }
   g.rows = reader.rings(reader.require(document, "rows", ""), "rows", garmentRowCount(g.type), false);
 
@@ -195,12 +206,16 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
       reader.fail(crotch["frame"], "crotch.frame", "must be a frame on the body's midline (body, waist, ...)");
     }
     g.crotch = reader.vector<3>(reader.require(crotch, "point", "crotch"), "crotch.point");
+    for (int i = 0; i < 3; ++i) {
+      reader.numberWithin(crotch["point"][i], "crotch.point[" + std::to_string(i) + "]", -kMaxOffset, kMaxOffset, " m");
+    }
     auto radius = [&](const char* key, Eigen::Vector2d& out) {
       if (!crotch[key]) return;
       const std::string path = std::string("crotch.") + key;
       out = reader.vector<2>(crotch[key], path);
       for (int i = 0; i < 2; ++i) {
         if (!(out[i] > 0.0)) reader.fail(crotch[key][i], path + "[" + std::to_string(i) + "]", "must be > 0, got " + crotch[key][i].Scalar());
+        reader.numberWithin(crotch[key][i], path + "[" + std::to_string(i) + "]", 0.0, kMaxRadius, " m");
       }
     };
     radius("radius", g.crotch_radius);

@@ -7,9 +7,7 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-double phaseAngle(const FourierSeries& s, double time) { return kTwoPi * time / s.period + s.phase; }
+double phaseAngle(const FourierSeries& s, double time) { return 2.0 * M_PI * time / s.period + s.phase; }
 
 }  // namespace
 
@@ -29,7 +27,7 @@ double FourierSeries::derivativeBySummation(double time) const {
     const double k = static_cast<double>(n);
     value += k * (-a[n - 1] * std::sin(k * t) + b[n - 1] * std::cos(k * t));
   }
-  return value * kTwoPi / period;
+  return value * (2.0 * M_PI) / period;
 }
 
 const std::array<const char*, kJointCount>& humanJointNames() {

@@ -3,11 +3,6 @@
 #include <cmath>
 
 namespace dressed_human {
-namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-}  // namespace
 
 MotionEvaluator::MotionEvaluator(const Motion& motion) : motion_(motion) {
   motion_.validate();
@@ -38,7 +33,7 @@ void MotionEvaluator::evaluate(double time, JointAngles& angles, RigidTransform&
     // Reduce to one cycle first (fmod is exact) so that long runs keep full precision in the phase.
     double cycle_time = std::fmod(time, clock.period);
     if (cycle_time < 0.0) cycle_time += clock.period;
-    const double t = kTwoPi * cycle_time / clock.period + clock.phase;
+    const double t = 2.0 * M_PI * cycle_time / clock.period + clock.phase;
     double s1 = 0.0;
     double c1 = 0.0;
     ::sincos(t, &s1, &c1);
@@ -67,7 +62,7 @@ void MotionEvaluator::evaluate(double time, JointAngles& angles, RigidTransform&
       for (std::size_t n = 0; n < s.order; ++n) {
         derivative += static_cast<double>(n + 1) * (b[n] * cn[n] - a[n] * sn[n]);
       }
-      derivatives_[i] = derivative * kTwoPi / clock.period;
+      derivatives_[i] = derivative * (2.0 * M_PI) / clock.period;
     }
   }
   for (std::size_t i = 0; i < kDofCount; ++i) angles[i] = values_[i];

@@ -14,6 +14,8 @@ namespace {
 
 // A joined child's joint must lie on the parent's z axis to this tolerance (metres).
 constexpr double kAxisTolerance = 1e-6;
+// Section heights and cap lengths along a bone, metres: no bone of a person is longer.
+constexpr double kMaxLength = 1.0;
 
 using BodyYamlReader = YamlReader<BodyDescriptionError>;
 
@@ -102,6 +104,11 @@ SkinSegmentSpec readSegment(const BodyYamlReader& reader, const YAML::Node& node
   if (node["proximal_cap"]) spec.proximal_cap = reader.number(node["proximal_cap"], key + ".proximal_cap");
   if (node["distal_cap"]) spec.distal_cap = reader.number(node["distal_cap"], key + ".distal_cap");
   for (const char* cap : {"proximal_cap", "distal_cap"}) {
+    if (node[cap] && reader.number(node[cap], key + "." + cap) > kMaxLength) {
+      reader.numberWithin(node[cap], key + "." + cap, 0.0, kMaxLength, " m");
+    }
+  }
+  for (const char* cap : {"proximal_cap", "distal_cap"}) {
     if (node[cap] && reader.number(node[cap], key + "." + cap) < 0.0) {
       reader.fail(node[cap], key + "." + cap, "must be >= 0 metres");
     }
@@ -117,6 +124,7 @@ SkinSegmentSpec readSegment(const BodyYamlReader& reader, const YAML::Node& node
     const std::vector<double> v = reader.numbers(sections[k], section_key, 3, "[z, radius_x, radius_y] in metres");
     if (!(v[1] > 0.0) || !(v[2] > 0.0)) reader.fail(sections[k], section_key, "radii must be > 0");
     if (v[1] > 1.0 || v[2] > 1.0) reader.fail(sections[k], section_key, "radii above 1 m: metres expected");
+    reader.numberWithin(sections[k][0], section_key + "[0]", -kMaxLength, kMaxLength, " m (z along the bone)");
     if (k > 0 && !(v[0] > spec.sections.back().z)) {
       reader.fail(sections[k], section_key, "z " + format(v[0]) + " must be greater than the previous section's " +
                                                 format(spec.sections.back().z));

@@ -102,6 +102,19 @@ class YamlReader {
     return value;
   }
 
+  // A number in [low, high] (`unit` after each figure of the message, e.g. " m"): sizes and
+  // positions a person or a garment can have, so that no absurd value reaches the geometry.
+  double numberWithin(const YAML::Node& node, const std::string& key, double low, double high,
+                      const std::string& unit) const {
+    const double value = number(node, key);
+    if (!(value >= low && value <= high)) {
+      std::ostringstream range;
+      range << value << unit << " is outside [" << low << ", " << high << "]" << unit;
+      fail(node, key, range.str());
+    }
+    return value;
+  }
+
   // A list of numbers; `count` > 0 demands exactly that many (`what` says what they mean).
   // `first_index` is how the message numbers the elements (1 for a_1..a_m).
   std::vector<double> numbers(const YAML::Node& node, const std::string& key, std::size_t count = 0,

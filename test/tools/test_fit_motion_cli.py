@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""fit_motion refuses absurd options and unwritable outputs at once, naming what is wrong (issue 23).
+
+Usage: test_fit_motion_cli.py <fit_motion binary> <repository root>
+"""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+FIT_MOTION = sys.argv[1] if len(sys.argv) > 1 else "build/devel/lib/dressed_human/fit_motion"
+ROOT = sys.argv[2] if len(sys.argv) > 2 else "."
+CAPTURE = os.path.join(ROOT, "data", "motion", "cmu_02_01_walk.bvh")
+URDF = os.path.join(ROOT, "urdf", "human.urdf")
+
+
+def run(*arguments):
+    result = subprocess.run([FIT_MOTION, CAPTURE, "--urdf", URDF, *arguments], capture_output=True, text=True,
+                            timeout=120)
+    return result.returncode, result.stderr
+
+
+class FitMotionRefusesAbsurdInput(unittest.TestCase):
+    def assertRefused(self, expected_message, *arguments):
+        code, stderr = run(*arguments)
+        self.assertNotEqual(code, 0, stderr)
+        self.assertIn(expected_message, stderr)
+        # Refused before fitting: the fit's report (its accuracy against the capture) never came.
+        self.assertNotIn("joint positions vs", stderr)
+
+    def test_sweep_orders_are_capped(self):
+        self.assertRefused("--sweep-max is at most 64", "--sweep-max", "100000", "--sweep-csv", "/tmp/sweep.csv")
+        self.assertRefused("--max-order is at most 64", "--max-order", "1000")
+        self.assertRefused("--timing-calls is at most 10000000", "--timing-calls", "1e12")
+
+    def test_period_in_the_range_of_a_gait(self):
+        self.assertRefused("--period expects a number >= 0.1", "--period", "1e-300")
+        self.assertRefused("--period expects a number in [0.1, 60] s", "--period", "1e9")
+
+    def test_output_checked_before_the_fit(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.assertRefused("cannot write the motion file: no such directory '%s/missing'" % directory,
+                               "-o", os.path.join(directory, "missing", "walk.yaml"))
+            self.assertRefused("%s: cannot write the motion file: is a directory" % directory, "-o", directory)
+            self.assertRefused("cannot write the sweep CSV: no such directory", "--sweep-csv",
+                               os.path.join(directory, "missing", "sweep.csv"))
+            if os.geteuid() != 0:  # root writes anywhere
+                os.chmod(directory, 0o500)
+                self.assertRefused("is not writable", "-o", os.path.join(directory, "walk.yaml"))
+
+    def test_a_good_output_is_written(self):
+        with tempfile.TemporaryDirectory() as directory:
+            output = os.path.join(directory, "walk.yaml")
+            code, stderr = run("-o", output, "--max-order", "2", "-q")
+            self.assertEqual(code, 0, stderr)
+            self.assertTrue(os.path.getsize(output) > 0)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0]])
