@@ -5,14 +5,19 @@ URDF, in one run (bench/rviz_display_scaling.cpp does the rviz side).
 
 Every human stays in view for the whole measurement: each is its own skeleton_publisher
 (namespace human_<i>, frames suffixed _<i>) walking in place (a copy of walk.yaml with
-forward_speed 0), the humans 1 m apart in a row, the camera 12 m in front of the row's middle.
-Each point saves a screenshot when its measurement starts and one when it ends, and fails unless
-every one of its N humans is drawn in both (figure pixels inside the box its position projects
-to). Reports fps (rviz's cap is 30), rviz CPU, and rviz CPU per human per frame: (rviz CPU per
-frame - the empty scene's) / N; also what the DressedHuman display measures of its own update().
+forward_speed 0). Up to 10 humans stand in one row 1 m apart, the camera 12 m (--distances) in
+front of the row's middle, pitched down 0.25 rad; more stand in rows of 10, each row 3 m behind
+the previous and shifted 0.5 m sideways, seen from 0.7 rad above so that the rows do not hide
+one another. Each point saves a screenshot when its measurement starts and one when it ends, and
+fails unless every one of its N humans is drawn in both (figure pixels inside the box its
+position projects to). Reports fps (rviz's cap is 30), rviz CPU, and rviz CPU per human per
+frame: (rviz CPU per frame - the empty scene's) / N; also what the DressedHuman display measures
+of its own update(). With several --distances, the --distance-count humans are also measured at
+each distance (cost against distance).
 
-Usage: bench/rviz_scaling.py [--seconds 15] [--counts 1 5 10] [--markdown docs/rviz_scaling.md]
-       [--csv out.csv] [--chart docs/rviz_scaling.png] [--screenshots docs/rviz_scaling]
+Usage: bench/rviz_scaling.py [--seconds 15] [--counts 1 5 10] [--distances 12]
+       [--distance-count 10] [--markdown docs/rviz_scaling.md] [--csv out.csv]
+       [--chart docs/rviz_scaling.png] [--screenshots docs/rviz_scaling]
 Needs the package built in build/ and xvfb-run. Exits 1 if a point did not draw all its humans.
 """
 import argparse
@@ -37,29 +42,47 @@ DEVEL = os.path.join(ROOT, "build", "devel")
 SUBJECTS = [("DressedHuman (GPU vertices)", "dressed_human/DressedHuman", []),
             ("DressedHuman (CPU vertices)", "dressed_human/DressedHuman", ["--set", "Vertex Evaluation=CPU"]),
             ("RobotModel", "rviz/RobotModel", [])]
-DISTANCE, YAW, PITCH, FOCAL_Z = 12.0, 0.0, 0.25, 0.9
-# rviz_display_scaling's render panel; rviz's default vertical field of view.
-VIEW = OrbitView(DISTANCE, YAW, PITCH, (0.0, 0.0, FOCAL_Z))
-MIN_FIGURE_PIXELS = 150  # a human at 12 m covers about 2,000 (DressedHuman) or 700 (RobotModel)
+YAW, FOCAL_Z = 0.0, 0.9
+ROW_LENGTH, ROW_SPACING, ROW_SHIFT = 10, 3.0, 0.5
+MIN_FIGURE_PIXELS = 60  # a human at 12 m covers about 1,500 (DressedHuman) or 600 (RobotModel); at 30 m a sixth
 
 
-def row_offsets(count):
-    """y of each human: 1 m apart, centred on the view."""
-    return [i - (count - 1) / 2.0 for i in range(count)]
+def positions(count):
+    """(x, y) of each human: rows of ROW_LENGTH, 1 m apart, centred on the view."""
+    rows = (count + ROW_LENGTH - 1) // ROW_LENGTH
+    result = []
+    for i in range(count):
+        row, column = divmod(i, ROW_LENGTH)
+        in_row = min(ROW_LENGTH, count - row * ROW_LENGTH)
+        x = -ROW_SPACING * (row - (rows - 1) / 2.0)
+        y = column - (in_row - 1) / 2.0 + (ROW_SHIFT if row % 2 else 0.0)
+        result.append((x, y))
+    return result
 
 
-def drawn(path, offsets):
-    """How many of the humans at `offsets` show in the screenshot at `path`."""
+def pitch(count):
+    return 0.25 if count <= ROW_LENGTH else 0.7
+
+
+def view(count, distance):
+    # rviz_display_scaling's render panel; rviz's default vertical field of view.
+    return OrbitView(distance, YAW, pitch(count), (0.0, 0.0, FOCAL_Z))
+
+
+def drawn(path, places, orbit):
+    """How many of the humans at `places` show in the screenshot at `path`."""
     image = numpy.asarray(Image.open(path).convert("RGB")).astype(numpy.float64)
-    return sum(1 for y in offsets
-               if figure_pixels_in_box(image, VIEW, (-0.5, y - 0.45, -0.05), (0.5, y + 0.45, 1.9)) >= MIN_FIGURE_PIXELS)
+    return sum(1 for x, y in places
+               if figure_pixels_in_box(image, orbit, (x - 0.5, y - 0.45, -0.05), (x + 0.5, y + 0.45, 1.9))
+               >= MIN_FIGURE_PIXELS)
 
 
-def harness(display_class, count, seconds, extra, screenshot, env):
+def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0):
     command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", os.path.join(DEVEL, "env.sh"),
                os.path.join(DEVEL, "lib", "dressed_human", "rviz_display_scaling"), display_class, str(count),
-               str(seconds), "--distance", str(DISTANCE), "--focal", "0;0;%g" % FOCAL_Z, "--view", "Yaw=%g" % YAW,
-               "--view", "Pitch=%g" % PITCH, "--view", "Target Frame=<Fixed Frame>", "--screenshot", screenshot] + extra
+               str(seconds), "--distance", str(distance), "--focal", "0;0;%g" % FOCAL_Z, "--view", "Yaw=%g" % YAW,
+               "--view", "Pitch=%g" % pitch(count), "--view", "Target Frame=<Fixed Frame>", "--screenshot",
+               screenshot] + extra
     output = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             universal_newlines=True, timeout=seconds + 180).stdout
     match = re.search(r"fps=([\d.]+) cpu_percent=([\d.]+) cpu_ms_per_frame=([\d.]+) display_ms=([-\d.]+)", output)
@@ -71,34 +94,73 @@ def harness(display_class, count, seconds, extra, screenshot, env):
     return dict(zip(("fps", "cpu_percent", "cpu_ms_per_frame", "display_ms"), (float(v) for v in match.groups())))
 
 
-def chart(results, counts, path):
+def chart(results, counts, distances, distance_count, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    figure, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    panels = 3 if len(distances) > 1 else 2
+    figure, axes = plt.subplots(1, panels, figsize=(6 * panels, 4.5))
+    near = distances[0]
     for label, _, _ in SUBJECTS:
-        points = [results[(label, n)] for n in counts]
+        points = [results[(label, n, near)] for n in counts]
         axes[0].plot(counts, [p["fps"] for p in points], "o-", label=label)
         axes[1].plot(counts, [p["per_human_ms"] for p in points], "o-", label=label)
+        if panels == 3:
+            axes[2].plot(distances, [results[(label, distance_count, d)]["per_human_ms"] for d in distances], "o-",
+                         label=label)
     axes[0].axhline(30.0, color="grey", lw=0.8, ls="--")
     axes[0].set_ylabel("frames per second (rviz caps at 30)")
     axes[1].set_ylabel("rviz CPU per human per frame (ms)\n(rviz CPU per frame - empty scene) / N")
-    for ax in axes:
-        ax.set_xlabel("humans in view")
+    for ax in axes[:2]:
+        ax.set_xlabel("humans in view (camera at %g m)" % near)
         ax.set_xticks(counts)
+    if panels == 3:
+        axes[2].set_ylabel("rviz CPU per human per frame (ms)")
+        axes[2].set_xlabel("camera distance (m), %d humans" % distance_count)
+        axes[2].set_xticks(distances)
+    for ax in axes:
         ax.grid(True, alpha=0.3)
+        ax.set_ylim(bottom=0)
         ax.legend(fontsize=8)
-    figure.suptitle("Walking humans in view at 12 m, rviz on Mesa llvmpipe, %d cores (bench/rviz_scaling.py)"
-                    % os.cpu_count())
+    figure.suptitle("Walking humans in view, rviz on Mesa llvmpipe, %d cores (bench/rviz_scaling.py)" % os.cpu_count())
     figure.tight_layout()
     figure.savefig(path, dpi=100)
     plt.close(figure)
+
+
+def start_humans(count, node, motion, urdf, master, env):
+    """One skeleton_publisher per human at positions(count); returns the processes."""
+    nodes = []
+    for i, (x, y) in enumerate(positions(count)):
+        text = subprocess.run([os.path.join(ROOT, "scripts", "suffix_urdf.py"), urdf, str(i)], check=True,
+                              stdout=subprocess.PIPE, universal_newlines=True).stdout
+        master.setParam("/human_%d/robot_description" % i, text)
+        nodes.append(start([node, "__ns:=/human_%d" % i, "_motion_file:=" + motion, "_origin_x:=%g" % x,
+                            "_origin_y:=%g" % y, "_publish_joint_states:=false"], env))
+    time.sleep(2 + 0.1 * count)
+    return nodes
+
+
+def measure(results, count, distance, args, baseline, shots, env):
+    for label, display_class, extra in SUBJECTS:
+        name = re.sub(r"[^a-z]+", "_", label.lower()).strip("_")
+        screenshot = os.path.join(shots, "%s_%d_%gm.png" % (name, count, distance))
+        point = harness(display_class, count, args.seconds, extra, screenshot, env, distance)
+        start_shot = screenshot[:-4] + "_start.png"
+        orbit = view(count, distance)
+        point["drawn"] = min(drawn(start_shot, positions(count), orbit), drawn(screenshot, positions(count), orbit))
+        point["per_human_ms"] = (point["cpu_ms_per_frame"] - baseline["cpu_ms_per_frame"]) / count
+        point["screenshot"] = os.path.relpath(screenshot, ROOT)
+        results[(label, count, distance)] = point
+        print(label, count, distance, point, file=sys.stderr)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--seconds", type=float, default=15.0)
     parser.add_argument("--counts", type=int, nargs="+", default=[1, 5, 10])
+    parser.add_argument("--distances", type=float, nargs="+", default=[12.0])
+    parser.add_argument("--distance-count", type=int, default=10)
     parser.add_argument("--markdown", default="")
     parser.add_argument("--csv", default="")
     parser.add_argument("--chart", default="")
@@ -118,7 +180,10 @@ def main():
     with open(motion, "w") as f:
         f.write(in_place)
     urdf = os.path.join(ROOT, "urdf", "human.urdf")
-    most = max(args.counts)
+    near = args.distances[0]
+    points = [(n, near) for n in args.counts]
+    if len(args.distances) > 1:
+        points += [(args.distance_count, d) for d in args.distances[1:]]
     processes = [start(["roscore", "-p", "11911"], env)]
     results = {}
     try:
@@ -126,28 +191,12 @@ def main():
         import rosgraph  # after ROS_MASTER_URI is known to this process
         master = rosgraph.Master("/rviz_scaling", master_uri=env["ROS_MASTER_URI"])
         baseline = harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "empty.png"), env)
-        for count in args.counts:
-            # Humans 0..count-1 of a row centred on the view: restarted per count, so that
-            # display i always finds human i at its place in this count's row.
-            nodes = []
-            for i, y in enumerate(row_offsets(count)):
-                text = subprocess.run([os.path.join(ROOT, "scripts", "suffix_urdf.py"), urdf, str(i)], check=True,
-                                      stdout=subprocess.PIPE, universal_newlines=True).stdout
-                master.setParam("/human_%d/robot_description" % i, text)
-                nodes.append(start([node, "__ns:=/human_%d" % i, "_motion_file:=" + motion, "_origin_y:=%g" % y,
-                                    "_publish_joint_states:=false"], env))
-            time.sleep(2)
+        for count in sorted(set(n for n, _ in points)):
+            # Restarted per count, so that display i always finds human i at its place.
+            nodes = start_humans(count, node, motion, urdf, master, env)
             try:
-                for label, display_class, extra in SUBJECTS:
-                    name = re.sub(r"[^a-z]+", "_", label.lower()).strip("_")
-                    screenshot = os.path.join(shots, "%s_%d.png" % (name, count))
-                    point = harness(display_class, count, args.seconds, extra, screenshot, env)
-                    start_shot = screenshot[:-4] + "_start.png"
-                    point["drawn"] = min(drawn(start_shot, row_offsets(count)), drawn(screenshot, row_offsets(count)))
-                    point["per_human_ms"] = (point["cpu_ms_per_frame"] - baseline["cpu_ms_per_frame"]) / count
-                    point["screenshot"] = os.path.relpath(screenshot, ROOT)
-                    results[(label, count)] = point
-                    print(label, count, point, file=sys.stderr)
+                for distance in [d for n, d in points if n == count]:
+                    measure(results, count, distance, args, baseline, shots, env)
             finally:
                 for process in nodes:
                     stop(process)
@@ -155,35 +204,37 @@ def main():
         for process in reversed(processes):
             stop(process)
 
-    failed = [(label, n) for (label, n), p in results.items() if p["drawn"] < n]
-    lines = ["| humans | display | drawn | fps | rviz CPU | rviz CPU per human per frame | display's own update per "
-             "human per frame |", "|---|---|---|---|---|---|---|"]
-    rows = ["display,humans,drawn,fps,cpu_percent,cpu_ms_per_frame,per_human_ms,display_ms,screenshot"]
-    for count in args.counts:
+    failed = [(label, n, d) for (label, n, d), p in results.items() if p["drawn"] < n]
+    lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per human per frame | display's own "
+             "update per human per frame |", "|---|---|---|---|---|---|---|---|"]
+    rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,per_human_ms,display_ms,screenshot"]
+    for count, distance in points:
         for label, _, _ in SUBJECTS:
-            p = results[(label, count)]
+            p = results[(label, count, distance)]
             own = "%.3f ms" % p["display_ms"] if p["display_ms"] >= 0 else "—"
             drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")
-            lines.append("| %d | %s | %s | %.1f | %.0f %% | %.2f ms | %s |" % (
-                count, label, drawn_text, p["fps"], p["cpu_percent"], p["per_human_ms"], own))
-            rows.append("%s,%d,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%s" % (label, count, p["drawn"], p["fps"], p["cpu_percent"],
-                                                                p["cpu_ms_per_frame"], p["per_human_ms"],
-                                                                p["display_ms"], p["screenshot"]))
+            lines.append("| %d | %g m | %s | %s | %.1f | %.0f %% | %.2f ms | %s |" % (
+                count, distance, label, drawn_text, p["fps"], p["cpu_percent"], p["per_human_ms"], own))
+            rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%s" % (
+                label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"],
+                p["per_human_ms"], p["display_ms"], p["screenshot"]))
     lines.append("")
-    lines.append("Empty scene: %.1f fps, %.0f %% CPU, %.2f ms per frame. Humans walking in place 1 m apart, camera "
-                 "%g m in front of the row; %g s per point after 5 s of warm-up; rviz CPU in %% of one core, Mesa "
-                 "llvmpipe (software rendering) on %d cores; \"drawn\": humans visible in both the screenshot at the "
-                 "start and at the end of the point (`%s/`); `bench/rviz_scaling.py`."
-                 % (baseline["fps"], baseline["cpu_percent"], baseline["cpu_ms_per_frame"], DISTANCE, args.seconds,
-                    os.cpu_count(), os.path.relpath(shots, ROOT)))
+    lines.append("Empty scene: %.1f fps, %.0f %% CPU, %.2f ms per frame. Humans walking in place, up to %d in a row 1 m "
+                 "apart (camera pitched 0.25 rad), more in rows %g m apart (camera pitched 0.7 rad); %g s per point "
+                 "after 5 s of warm-up; rviz CPU in %% of one core, Mesa llvmpipe (software rendering) on %d cores; "
+                 "\"drawn\": humans visible in both the screenshot at the start and at the end of the point (`%s/`); "
+                 "`bench/rviz_scaling.py`."
+                 % (baseline["fps"], baseline["cpu_percent"], baseline["cpu_ms_per_frame"], ROW_LENGTH, ROW_SPACING,
+                    args.seconds, os.cpu_count(), os.path.relpath(shots, ROOT)))
     if args.csv:
         with open(args.csv, "w") as f:
             f.write("\n".join(rows) + "\n")
     if args.chart:
-        chart(results, args.counts, args.chart)
+        chart(results, args.counts, args.distances, args.distance_count, args.chart)
     report("\n".join(lines), args.markdown)
     if failed:
-        print("rviz_scaling.py: not every human drawn in %s" % ", ".join("%s x %d" % f for f in failed), file=sys.stderr)
+        print("rviz_scaling.py: not every human drawn in %s" % ", ".join("%s x %d at %g m" % f for f in failed),
+              file=sys.stderr)
         sys.exit(1)
 
 

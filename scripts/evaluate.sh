@@ -53,7 +53,8 @@ source build/devel/setup.bash
 set -u
 $PY bench/node_cpu.py --markdown docs/node_cpu.md
 rm -rf docs/rviz_scaling
-$PY bench/rviz_scaling.py --markdown docs/rviz_scaling.md --csv "$RESULTS/rviz_scaling.csv" \
+$PY bench/rviz_scaling.py --counts 1 5 10 20 30 --distances 12 18 30 --markdown docs/rviz_scaling.md \
+  --csv "$RESULTS/rviz_scaling.csv" \
   --chart docs/rviz_scaling.png --screenshots docs/rviz_scaling
 $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
 

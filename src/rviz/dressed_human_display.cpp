@@ -156,6 +156,7 @@ void DressedHumanDisplay::rebuildModel() {
     model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
     kinematics_ = std::make_unique<ForwardKinematics>(*skeleton_, shape_);
     status_.clear("Model");
+    resetReliefVisibility();
     updateVertexEvaluation();
   } catch (const std::exception& error) {
     model_.reset();
@@ -218,6 +219,37 @@ void DressedHumanDisplay::applyDisplacement() {
 void DressedHumanDisplay::regenerateSkinRelief() {
   // Built off rviz's thread; a change meanwhile is built when the running map is done.
   relief_jobs_.requestSkin(relief_properties_->skinParameters());
+  resetReliefVisibility();
+}
+
+void DressedHumanDisplay::resetReliefVisibility() {
+  if (!model_) return;
+  // Both reliefs are tiled once per patch: skin cells at the cell size's fraction of a tile,
+  // cloth folds about half a buckling cell apart (cells_around cells per tile).
+  const double skin = model_->reliefTileSize(ReliefKind::kSkin) * relief_properties_->skinParameters().cell_size;
+  const double cloth = model_->reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around);
+  relief_visibility_[0] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
+  relief_visibility_[1] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
+  if (visual_) {
+    visual_->setReliefShown(ReliefKind::kSkin, true);
+    visual_->setReliefShown(ReliefKind::kCloth, true);
+  }
+}
+
+void DressedHumanDisplay::updateReliefVisibility(const Ogre::Camera* camera) {
+  const Eigen::AlignedBox3f bounds = model_->bounds();
+  const bool judged = camera != nullptr && lod_properties_->hideUnseenRelief() && !bounds.isEmpty() &&
+                      relief_properties_->mode() == ReliefMode::kBumpMapping;
+  double pixels_per_metre = 0.0;  // at the human's nearest point
+  if (judged) {
+    const CameraView view = LodProperties::cameraView(*camera);
+    const Eigen::Vector3d nearest = view.position.cwiseMax(bounds.min().cast<double>()).cwiseMin(bounds.max().cast<double>());
+    pixels_per_metre = pixelsPerMetre(view, (nearest - view.position).norm());
+  }
+  for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
+    std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
+    if (visibility) visual_->setReliefShown(kind, judged ? visibility->update(pixels_per_metre) : true);
+  }
 }
 
 void DressedHumanDisplay::pollReliefMaps() {
@@ -257,15 +289,16 @@ void DressedHumanDisplay::updateSurfaces() {
   kinematics_->composeUnshaped(bone_source_->root(), bone_source_->bonesInParent(), bones_);
   if (!posesDrawable()) return;
   LevelOfDetail lod;
+  const rviz::ViewController* view = context_->getViewManager()->getCurrent();
   if (relief_properties_->mode() == ReliefMode::kDisplacedGeometry) {
     lod.level = relief_properties_->displacementLevel();  // relief in the geometry needs vertices at its scale
   } else {
-    const rviz::ViewController* view = context_->getViewManager()->getCurrent();
     lod = lod_properties_->levelOfDetail(view ? view->getCamera() : nullptr);
   }
   try {
     model_->update(bone_source_->root(), bones_, lod);
     visual_->update(model_->parts());
+    updateReliefVisibility(view ? view->getCamera() : nullptr);
     visual_->updateSkeleton(*kinematics_, bones_);
     const std::array<std::size_t, 2> surfaces{model_->parts().size(), model_->triangleCount()};
     if (surfaces != surfaces_reported_) {

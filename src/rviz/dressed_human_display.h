@@ -12,7 +12,12 @@
 
 #include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/model/relief_map_jobs.h"
+#include "dressed_human/core/model/relief_visibility.h"
 #include "display_status.h"
+
+namespace Ogre {
+class Camera;
+}  // namespace Ogre
 
 namespace dressed_human {
 
@@ -55,6 +60,11 @@ class DressedHumanDisplay : public rviz::Display {
   // Whether every bone pose TF gave can be drawn; if not, hides the human and names the frame.
   bool posesDrawable();
   void reportUpdateCost(double cpu_seconds);
+  // Feature sizes of the two reliefs on this model (ReliefVisibility), after a model or skin
+  // relief change.
+  void resetReliefVisibility();
+  // Per frame: the plain material for a relief whose features are under two pixels.
+  void updateReliefVisibility(const Ogre::Camera* camera);
 
   // The properties, by concern; each group owns its rviz properties (children of this display).
   std::unique_ptr<BodyProperties> body_properties_;
@@ -77,6 +87,7 @@ class DressedHumanDisplay : public rviz::Display {
   ReliefMapJobs relief_jobs_;
   std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
   std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
+  std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts
   // (parts, triangles) the "Surfaces" status says: the text is rebuilt only when they change.
   static constexpr std::size_t kNotReported = static_cast<std::size_t>(-1);
   std::array<std::size_t, 2> surfaces_reported_{kNotReported, kNotReported};

@@ -32,6 +32,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.relief = source.relief;
       part.bezier_vertices = bezier_vertices;
       part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices);
+      part.material->setBackFacesCulled(source.closed);
       part.mesh = std::make_unique<SurfaceMeshObject>(scene_manager_, node_, part.material->name());
       part.mesh->setVisible(visible_);
       applyMaps(part);
@@ -80,8 +81,15 @@ void HumanVisual::setReliefStrength(ReliefKind kind, float strength) {
   }
 }
 
-void HumanVisual::setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height,
-                               float tiling) {
+void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
+  relief_shown_[kind == ReliefKind::kSkin ? 0 : 1] = shown;
+  for (Part& part : parts_) {
+    if (part.relief == kind) part.material->setReliefShown(shown);
+  }
+}
+
+void HumanVisual::setNormalMap(ReliefKind kind, const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width,
+                               int height, float tiling) {
   NormalMap& map = kind == ReliefKind::kSkin ? skin_map_ : cloth_map_;
   map.rgb = rgb;
   map.width = width;
@@ -95,6 +103,7 @@ void HumanVisual::setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>&
 void HumanVisual::applyMaps(Part& part) const {
   const NormalMap& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
   part.material->setReliefStrength(part.relief == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_);
+  part.material->setReliefShown(relief_shown_[part.relief == ReliefKind::kSkin ? 0 : 1]);
   if (map.width > 0) {
     part.material->setNormalMap(map.rgb, map.width, map.height);
     part.material->setReliefTiling(map.tiling);

@@ -3,6 +3,7 @@
 // bump-mapped mesh per surface part (skin, each garment) and the skeleton's lines. Created and
 // updated only from the display's update().
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,7 +29,10 @@ class HumanVisual {
   void update(const std::vector<SurfacePart>& parts);
   void setVisible(bool visible);
   void setReliefStrength(ReliefKind kind, float strength);
-  void setNormalMap(ReliefKind kind, const std::vector<std::uint8_t>& rgb, int width, int height, float tiling);
+  // false: parts of `kind` drawn with the plain material (ReliefMaterial::setReliefShown).
+  void setReliefShown(ReliefKind kind, bool shown);
+  void setNormalMap(ReliefKind kind, const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width,
+                    int height, float tiling);
   // Bones as lines drawn over everything (SkeletonVisual); updated only while shown.
   void setSkeletonVisible(bool visible);
   void updateSkeleton(const ForwardKinematics& kinematics, const std::array<RigidTransform, kBoneCount>& bones);
@@ -44,7 +48,7 @@ class HumanVisual {
     std::unique_ptr<SurfaceMeshObject> mesh;
   };
   struct NormalMap {
-    std::vector<std::uint8_t> rgb;
+    std::shared_ptr<const std::vector<std::uint8_t>> rgb;
     int width = 0, height = 0;
     float tiling = 1.0f;
   };
@@ -56,6 +60,7 @@ class HumanVisual {
   std::vector<Part> parts_;
   float skin_relief_strength_ = 1.0f;
   float cloth_relief_strength_ = 1.0f;
+  std::array<bool, 2> relief_shown_{{true, true}};  // by ReliefKind
   NormalMap skin_map_, cloth_map_;
   bool visible_ = true;
   std::unique_ptr<SkeletonVisual> skeleton_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <stdexcept>
 
 #include <GL/gl.h>
@@ -23,6 +24,8 @@ namespace {
 const char* const kGroup = "dressed_human";
 const char* const kBaseMaterial = "dressed_human/ReliefSurface";
 const char* const kBezierMaterial = "dressed_human/ReliefBezierSurface";
+const char* const kReliefFragment = "dressed_human/ReliefSurfaceFragment";
+const char* const kPlainFragment = "dressed_human/PlainSurfaceFragment";
 
 std::string mediaDirectory() {
   const std::string package = ros::package::getPath("dressed_human");
@@ -51,6 +54,22 @@ std::string programProblem(const std::string& material_name) {
   }
   return "";
 }
+
+}  // namespace
+
+// One Ogre texture per normal map of the process, alive while a material uses it.
+struct ReliefMaterial::SharedTexture {
+  std::shared_ptr<const std::vector<std::uint8_t>> rgb;  // the key; kept so its address stays unique
+  Ogre::TexturePtr texture;
+  ~SharedTexture() {
+    if (texture) Ogre::TextureManager::getSingleton().remove(texture);
+  }
+};
+
+namespace {
+
+std::map<const void*, std::weak_ptr<ReliefMaterial::SharedTexture>> shared_textures;  // rviz's thread only
+std::size_t texture_count = 0;  // for unique Ogre names
 
 }  // namespace
 
@@ -117,16 +136,31 @@ ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_verti
   material_ = Ogre::MaterialManager::getSingleton()
                   .getByName(bezier_vertices ? kBezierMaterial : kBaseMaterial, kGroup)
                   ->clone(name_);
-  setNormalMap({128, 128, 255}, 1, 1);  // flat until a relief map arrives
+  static const auto flat = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 255});
+  setNormalMap(flat, 1, 1);  // flat until a relief map arrives
 }
 
 ReliefMaterial::~ReliefMaterial() {
   if (material_) Ogre::MaterialManager::getSingleton().remove(material_);
-  if (texture_) Ogre::TextureManager::getSingleton().remove(texture_);
+  texture_.reset();
+}
+
+void ReliefMaterial::applyFragmentParameters() {
+  const Ogre::GpuProgramParametersSharedPtr parameters = fragmentParameters(material_);
+  parameters->setNamedConstant("diffuseColour", colour_);
+  if (relief_shown_) parameters->setNamedConstant("reliefStrength", relief_strength_);
+}
+
+void ReliefMaterial::setReliefShown(bool shown) {
+  if (shown == relief_shown_) return;
+  relief_shown_ = shown;
+  material_->getTechnique(0)->getPass(0)->setFragmentProgram(shown ? kReliefFragment : kPlainFragment);
+  applyFragmentParameters();
 }
 
 void ReliefMaterial::setColour(float r, float g, float b, float a) {
-  fragmentParameters(material_)->setNamedConstant("diffuseColour", Ogre::ColourValue(r, g, b, a));
+  colour_ = Ogre::ColourValue(r, g, b, a);
+  applyFragmentParameters();
   Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
   if (a < 1.0f) {
     pass->setSceneBlending(Ogre::SBT_TRANSPARENT_ALPHA);
@@ -137,8 +171,13 @@ void ReliefMaterial::setColour(float r, float g, float b, float a) {
   }
 }
 
+void ReliefMaterial::setBackFacesCulled(bool culled) {
+  material_->getTechnique(0)->getPass(0)->setCullingMode(culled ? Ogre::CULL_CLOCKWISE : Ogre::CULL_NONE);
+}
+
 void ReliefMaterial::setReliefStrength(float strength) {
-  fragmentParameters(material_)->setNamedConstant("reliefStrength", strength);
+  relief_strength_ = strength;
+  applyFragmentParameters();
 }
 
 void ReliefMaterial::setReliefTiling(float repeats_per_patch) {
@@ -187,18 +226,28 @@ void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constant
   parameters->setNamedConstant("wrinkleInverseSaturation", constants->inverse_saturation);
 }
 
-void ReliefMaterial::setNormalMap(const std::vector<std::uint8_t>& rgb, int width, int height) {
-  if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {
-    throw std::invalid_argument("normal map of " + std::to_string(rgb.size()) + " bytes does not match " +
+void ReliefMaterial::setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width, int height) {
+  if (!rgb || width <= 0 || height <= 0 ||
+      rgb->size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {
+    throw std::invalid_argument("normal map of " + std::to_string(rgb ? rgb->size() : 0) + " bytes does not match " +
                                 std::to_string(width) + " x " + std::to_string(height) + " RGB");
   }
-  if (texture_) Ogre::TextureManager::getSingleton().remove(texture_);
-  Ogre::Image image;
-  image.loadDynamicImage(const_cast<Ogre::uchar*>(rgb.data()), static_cast<Ogre::uint32>(width),
-                         static_cast<Ogre::uint32>(height), Ogre::PF_BYTE_RGB);
-  texture_ = Ogre::TextureManager::getSingleton().loadImage(name_ + "/normal_map", kGroup, image,
-                                                             Ogre::TEX_TYPE_2D, Ogre::MIP_DEFAULT);
-  material_->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTexture(texture_);
+  std::shared_ptr<SharedTexture> shared = shared_textures[rgb.get()].lock();
+  if (!shared) {
+    shared = std::make_shared<SharedTexture>();
+    shared->rgb = rgb;
+    Ogre::Image image;
+    image.loadDynamicImage(const_cast<Ogre::uchar*>(rgb->data()), static_cast<Ogre::uint32>(width),
+                           static_cast<Ogre::uint32>(height), Ogre::PF_BYTE_RGB);
+    shared->texture = Ogre::TextureManager::getSingleton().loadImage(
+        "dressed_human/normal_map_" + std::to_string(++texture_count), kGroup, image, Ogre::TEX_TYPE_2D, Ogre::MIP_DEFAULT);
+    for (auto entry = shared_textures.begin(); entry != shared_textures.end();) {
+      entry = entry->second.expired() && entry->first != rgb.get() ? shared_textures.erase(entry) : std::next(entry);
+    }
+    shared_textures[rgb.get()] = shared;
+  }
+  texture_ = shared;
+  material_->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTexture(texture_->texture);
 }
 
 }  // namespace dressed_human

@@ -5,6 +5,7 @@
 // control points set here.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,23 +40,36 @@ class ReliefMaterial {
 
   const std::string& name() const { return name_; }
   void setColour(float r, float g, float b, float a = 1.0f);
+  // Closed surfaces: back faces culled (SurfacePart::closed). Open ones are drawn two-sided.
+  void setBackFacesCulled(bool culled);
   // 0 shades with the geometric normal only (flat), 1 with the full relief.
   void setReliefStrength(float strength);
+  // false: the plain fragment program (geometric normal, no normal-map fetch) replaces the relief
+  // one, for a relief too small to see (ReliefVisibility). Colour and strength carry over.
+  void setReliefShown(bool shown);
+  bool reliefShown() const { return relief_shown_; }
   void setReliefTiling(float repeats_per_patch);
-  // RGB8 tangent-space normals (n * 0.5 + 0.5), width * height * 3 bytes, with mipmaps.
-  void setNormalMap(const std::vector<std::uint8_t>& rgb, int width, int height);
+  // RGB8 tangent-space normals (n * 0.5 + 0.5), width * height * 3 bytes, with mipmaps. One
+  // texture per map in the process: every material given the same bytes shares it.
+  void setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width, int height);
   // Bezier vertices only: the posed patches (at most kMaxPatches, else std::invalid_argument)
   // and, for garments, the wrinkle strength's constants (null: the relief shows everywhere).
   void setPatches(const std::vector<BezierPatch>& patches);
   void setWrinkleStrength(const WrinkleStrengthConstants* constants);
 
+  struct SharedTexture;  // one normal-map texture and its bytes (relief_material.cpp)
+
  private:
   std::string name_;
   Ogre::MaterialPtr material_;
-  Ogre::TexturePtr texture_;
+  std::shared_ptr<SharedTexture> texture_;
   bool bezier_vertices_;
   WrinkleStrengthConstants wrinkle_strength_;  // as last set (zeros: none)
   bool wrinkle_strength_set_ = false;
+  bool relief_shown_ = true;
+  Ogre::ColourValue colour_{0.8f, 0.7f, 0.6f, 1.0f};  // as last set, for a fragment program swap
+  float relief_strength_ = 1.0f;
+  void applyFragmentParameters();
 };
 
 }  // namespace dressed_human

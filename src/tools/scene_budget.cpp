@@ -4,7 +4,7 @@
 //
 // Each configuration poses the model over `poses` walk phases (config/motions/walk.yaml), twice,
 // and reports for the second cycle the median update time (pose + tessellate, one core), the triangle count and the
-// tessellation error: per patch the conservative bound geometricErrorBound(patch, level) in mm,
+// tessellation error: per patch the calibrated bound (HumanModel::partErrorBound) in mm,
 // and that bound projected to pixels at the patch's nearest distance to the camera (fov 0.8 rad,
 // 1000 px viewport, as rviz's default view at that window height). The human's own settings:
 // jacket + skirt. Automatic level of detail is measured twice: with the CPU evaluating every
@@ -89,7 +89,7 @@ Measurement measure(const Scene& scene, const HumanModelSettings& settings, int 
         const std::vector<BezierPatch>& patches = model->partPatches(part);
         const std::vector<int>& levels = model->partLevels(part);
         for (std::size_t p = 0; p < patches.size(); ++p) {
-          const double bound = geometricErrorBound(patches[p], levels[p]);
+          const double bound = model->partErrorBound(part).bound(p, patches[p], levels[p]);
           result.max_error_mm = std::max(result.max_error_mm, 1e3 * bound);
           result.max_error_pixels = std::max(
               result.max_error_pixels, bound * pixelsPerMetreAt(lod.camera, nearestDistance(patches[p], lod.camera.position)));

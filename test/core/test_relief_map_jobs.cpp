@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <memory>
 #include <thread>
+#include <vector>
 
 #include "dressed_human/core/model/relief_map_jobs.h"
 
@@ -30,7 +32,8 @@ TEST(ReliefMapJobs, BuildsBothMapsOffThisThread) {
   ASSERT_EQ(done.size(), 2u);
   for (const FinishedReliefMap& map : done) {
     ASSERT_TRUE(map.map) << map.error;
-    EXPECT_EQ(map.normal_rgb, encodeNormalMapRgb(*map.map));
+    ASSERT_TRUE(map.normal_rgb);
+    EXPECT_EQ(*map.normal_rgb, encodeNormalMapRgb(*map.map));
     EXPECT_EQ(jobs.map(map.kind), map.map);
   }
   EXPECT_EQ(jobs.map(ReliefKind::kSkin)->width, ReliefMapJobs::kSkinMapSize);
@@ -39,6 +42,41 @@ TEST(ReliefMapJobs, BuildsBothMapsOffThisThread) {
   EXPECT_EQ(jobs.map(ReliefKind::kCloth)->heights, transposed(wrinkles).heights);
   EXPECT_GT(ReliefMapJobs::clothHeightToTile(), 0.0f);
   EXPECT_TRUE(jobs.poll().empty());
+}
+
+// Ten displays of ten humans: the maps are built once, running or done, and shared.
+TEST(ReliefMapJobs, JobsAskingForTheSameMapShareOneBuild) {
+  const std::size_t before = ReliefMapJobs::buildCount();
+  std::vector<std::unique_ptr<ReliefMapJobs>> humans;
+  for (int h = 0; h < 10; ++h) {
+    humans.push_back(std::make_unique<ReliefMapJobs>());
+    humans.back()->requestSkin(SkinReliefParameters());
+    humans.back()->startCloth();
+  }
+  EXPECT_EQ(ReliefMapJobs::buildCount() - before, 2u) << "one skin and one cloth build for ten humans";
+  std::vector<std::vector<FinishedReliefMap>> done;
+  for (auto& jobs : humans) done.push_back(pollFor(*jobs, 2));
+  for (const auto& maps : done) {
+    ASSERT_EQ(maps.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_EQ(maps[k].map, done[0][k].map);  // the same map, not a copy
+      EXPECT_EQ(maps[k].normal_rgb, done[0][k].normal_rgb);
+    }
+  }
+  // An eleventh human, after the builds ended, gets them at once without a new build.
+  ReliefMapJobs late;
+  late.requestSkin(SkinReliefParameters());
+  late.startCloth();
+  EXPECT_EQ(late.poll().size(), 2u);
+  EXPECT_EQ(late.map(ReliefKind::kSkin), done[0][0].map);
+  EXPECT_EQ(ReliefMapJobs::buildCount() - before, 2u);
+  // Other parameters are another map; once nobody holds a map, asking again builds it again.
+  SkinReliefParameters other;
+  other.seed = 7;
+  late.requestSkin(other);
+  ASSERT_EQ(pollFor(late, 1).size(), 1u);
+  EXPECT_NE(late.map(ReliefKind::kSkin), done[0][0].map);
+  EXPECT_EQ(ReliefMapJobs::buildCount() - before, 3u);
 }
 
 TEST(ReliefMapJobs, ARequestDuringABuildIsBuiltNextAndOnlyTheLastOne) {

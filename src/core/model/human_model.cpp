@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/model/relief_visibility.h"
 
 namespace dressed_human {
 namespace {
@@ -80,8 +81,9 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 }
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
-    : settings_(settings), skin_(skeleton, body) {
+    : settings_(settings), skin_(skeleton, body), skin_error_bound_(skin_.patches()) {
   parts_.push_back(surfacePart("skin", ReliefKind::kSkin, settings_.skin_colour));
+  parts_.back().closed = true;  // every skin part is a closed surface (skin.h)
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
     GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
     const bool has_skirt = description.type == GarmentType::kSkirt || description.type == GarmentType::kOnePiece;
@@ -102,16 +104,31 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
                                                        static_cast<float>(description.colour.z()), 1.0f);
     parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
+  relief_tile_size_[0] = typicalPatchSize(skin_.patches());
+  std::vector<BezierPatch> cloth;
+  for (const DressedGarment& dressed : garments_) {
+    cloth.insert(cloth.end(), dressed.rest_patches.begin(), dressed.rest_patches.end());
+  }
+  if (!cloth.empty()) relief_tile_size_[1] = typicalPatchSize(cloth);
+}
+
+Eigen::AlignedBox3f HumanModel::bounds() const {
+  Eigen::AlignedBox3f box;
+  for (const SurfacePart& part : parts_) {
+    if (part.mesh != nullptr && !part.bounds.isEmpty()) box.extend(part.bounds);
+  }
+  return box;
 }
 
 HumanModel::DressedGarment::DressedGarment(const GarmentDescription& description, const Skeleton& skeleton,
                                            const BodyShape& shape)
     : garment(description, skeleton, shape),
       tessellator(std::make_unique<Tessellator>()),
-      rest_patches(garment.patches()) {}
+      rest_patches(garment.patches()),
+      error_bound(rest_patches) {}
 
-const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
-                                              const LevelOfDetail& lod) {
+const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const CalibratedErrorBound& error_bound,
+                                              const std::vector<BezierPatch>& patches, const LevelOfDetail& lod) {
   if (lod.automatic) {
     // Levels from the screen-space error, with hysteresis: a level drops only when two below
     // the current one would do. Otherwise a walking human flickers between levels and the
@@ -121,7 +138,7 @@ const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, co
     levels.resize(patches.size(), 0);
     automatic.frames_below.resize(patches.size(), 0);
     const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kRenderer;
-    levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
+    error_bound.levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
     for (std::size_t p = 0; p < patches.size(); ++p) {
       const int wanted = wanted_levels_[p];
       if (coarse_steps) {
@@ -172,7 +189,7 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displacement.map;
     Tessellator& tessellator = tessellatorOf(p);
     const std::vector<BezierPatch>& patches = partPatches(p);
-    const std::vector<int>& levels = levelsFor(tessellator, patches, lod);
+    const std::vector<int>& levels = levelsFor(tessellator, partErrorBound(p), patches, lod);
     part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(p), levels)
                          : &tessellator.layout(patches, topologyOf(p), levels);
     part.evaluated = evaluate;
@@ -222,6 +239,10 @@ void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMa
 
 const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
   return part == 0 ? skin_.patches() : garments_.at(part - 1).garment.patches();
+}
+
+const CalibratedErrorBound& HumanModel::partErrorBound(std::size_t part) const {
+  return part == 0 ? skin_error_bound_ : garments_.at(part - 1).error_bound;
 }
 
 const std::vector<int>& HumanModel::partLevels(std::size_t part) const {

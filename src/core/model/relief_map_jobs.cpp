@@ -1,26 +1,57 @@
 #include "dressed_human/core/model/relief_map_jobs.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <mutex>
 #include <utility>
 
 namespace dressed_human {
+
+struct ReliefMapJobs::SharedBuild {
+  ReliefKind kind;
+  SkinReliefParameters skin;  // the key, with kind (unused for cloth)
+  std::shared_future<FinishedReliefMap> result;
+};
+
 namespace {
 
-// Runs `build` on its own thread; what it throws comes back as the result's error.
+// Every build of the process that someone still holds, by kind and parameters.
+std::mutex registry_mutex;
+std::vector<std::weak_ptr<ReliefMapJobs::SharedBuild>> registry;
+std::atomic<std::size_t> builds{0};
+
+// The build of (kind, skin) in the registry, or a new one running `build` on its own thread;
+// what it throws comes back as the result's error.
 template <typename Build>
-std::future<FinishedReliefMap> launch(ReliefKind kind, Build build) {
-  return std::async(std::launch::async, [kind, build] {
-    FinishedReliefMap done;
-    done.kind = kind;
-    try {
-      auto map = std::make_shared<const ReliefMap>(build());
-      done.normal_rgb = encodeNormalMapRgb(*map);
-      done.map = std::move(map);
-    } catch (const std::exception& error) {
-      done.error = error.what();
+std::shared_ptr<ReliefMapJobs::SharedBuild> obtain(ReliefKind kind, const SkinReliefParameters& skin, Build build) {
+  std::lock_guard<std::mutex> lock(registry_mutex);
+  registry.erase(std::remove_if(registry.begin(), registry.end(), [](const auto& entry) { return entry.expired(); }),
+                 registry.end());
+  for (const std::weak_ptr<ReliefMapJobs::SharedBuild>& entry : registry) {
+    std::shared_ptr<ReliefMapJobs::SharedBuild> shared = entry.lock();
+    if (shared && shared->kind == kind && (kind == ReliefKind::kCloth || sameSkinParameters(shared->skin, skin))) {
+      return shared;
     }
-    return done;
-  });
+  }
+  auto shared = std::make_shared<ReliefMapJobs::SharedBuild>();
+  shared->kind = kind;
+  shared->skin = skin;
+  shared->result = std::async(std::launch::async, [kind, build] {
+                     FinishedReliefMap done;
+                     done.kind = kind;
+                     try {
+                       auto map = std::make_shared<const ReliefMap>(build());
+                       done.normal_rgb = std::make_shared<const std::vector<std::uint8_t>>(encodeNormalMapRgb(*map));
+                       done.map = std::move(map);
+                     } catch (const std::exception& error) {
+                       done.error = error.what();
+                     }
+                     return done;
+                   }).share();
+  ++builds;
+  registry.push_back(shared);
+  return shared;
 }
 
 }  // namespace
@@ -62,14 +93,18 @@ WrinkleMapSpec garmentWrinkleMapSpec() {
 }
 
 ReliefMapJobs::~ReliefMapJobs() {
+  // A build another ReliefMapJobs shares goes on for it; one only this object holds is waited
+  // for here, so that no thread outlives what it was started for.
   for (Job& job : jobs_) {
-    if (job.running.valid()) job.running.wait();
+    if (job.running && job.running.use_count() == 1) job.running->result.wait();
   }
 }
 
+std::size_t ReliefMapJobs::buildCount() { return builds.load(); }
+
 bool ReliefMapJobs::busy(ReliefKind kind) const {
   const Job& job = jobs_[index(kind)];
-  return job.running.valid() && job.running.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+  return job.running && job.running->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
 }
 
 void ReliefMapJobs::requestSkin(const SkinReliefParameters& parameters) {
@@ -79,14 +114,15 @@ void ReliefMapJobs::requestSkin(const SkinReliefParameters& parameters) {
 
 void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
   // A 512^2 map takes a noticeable fraction of a second; a bad parameter throws inside the job.
-  jobs_[index(ReliefKind::kSkin)].running =
-      launch(ReliefKind::kSkin, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
+  jobs_[index(ReliefKind::kSkin)].running = obtain(
+      ReliefKind::kSkin, parameters, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
   skin_started_ = parameters;
 }
 
 void ReliefMapJobs::startCloth() {
   const WrinkleMapSpec spec = garmentWrinkleMapSpec();
-  jobs_[index(ReliefKind::kCloth)].running = launch(ReliefKind::kCloth, [spec] { return transposed(makeWrinkleMap(spec)); });
+  jobs_[index(ReliefKind::kCloth)].running =
+      obtain(ReliefKind::kCloth, SkinReliefParameters(), [spec] { return transposed(makeWrinkleMap(spec)); });
 }
 
 float ReliefMapJobs::clothHeightToTile() {
@@ -99,9 +135,13 @@ std::vector<FinishedReliefMap> ReliefMapJobs::poll() {
   std::vector<FinishedReliefMap> finished;
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
     Job& job = jobs_[index(kind)];
-    if (!job.running.valid() || busy(kind)) continue;
-    finished.push_back(job.running.get());
-    if (finished.back().map) job.map = finished.back().map;
+    if (!job.running || busy(kind)) continue;
+    finished.push_back(job.running->result.get());
+    if (finished.back().map) {
+      job.map = finished.back().map;
+      job.held = job.running;
+    }
+    job.running.reset();
     if (kind == ReliefKind::kSkin && !sameSkinParameters(skin_requested_, skin_started_)) startSkin(skin_requested_);
   }
   return finished;

@@ -1,9 +1,11 @@
 #include "dressed_human/core/surfaces/tessellation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 // How fine a patch must be tessellated: the a-priori error bound of a level and the level a
 // geometric or screen-space error asks for.
@@ -124,6 +126,97 @@ void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraV
   levels.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
     levels[p] = screenErrorLevel(patches[p], camera.position, error_per_distance, max_level);
+  }
+}
+
+
+// ------------------------------------------------------------------------- measured, calibrated
+
+double measuredTessellationError(const BezierPatch& patch, int level) {
+  if (level < 1) throw std::invalid_argument("measuredTessellationError: level must be >= 1");
+  constexpr int kSub = 4;  // samples per cell side: every triangle's points at barycentric steps of 1/4
+  const int samples = kSub * level + 1;
+  std::vector<Eigen::Vector3d> grid(static_cast<std::size_t>(samples) * samples);
+  for (int j = 0; j < samples; ++j) {
+    for (int i = 0; i < samples; ++i) {
+      grid[static_cast<std::size_t>(j) * samples + i] =
+          patch.position(static_cast<double>(i) / (samples - 1), static_cast<double>(j) / (samples - 1));
+    }
+  }
+  const auto at = [&](int i, int j) -> const Eigen::Vector3d& { return grid[static_cast<std::size_t>(j) * samples + i]; };
+  double worst = 0.0;
+  for (int cj = 0; cj < level; ++cj) {
+    for (int ci = 0; ci < level; ++ci) {
+      const Eigen::Vector3d& f00 = at(kSub * ci, kSub * cj);
+      const Eigen::Vector3d& f10 = at(kSub * (ci + 1), kSub * cj);
+      const Eigen::Vector3d& f01 = at(kSub * ci, kSub * (cj + 1));
+      const Eigen::Vector3d& f11 = at(kSub * (ci + 1), kSub * (cj + 1));
+      for (int t = 0; t <= kSub; ++t) {
+        for (int s = 0; s <= kSub; ++s) {
+          const double a = static_cast<double>(s) / kSub, b = static_cast<double>(t) / kSub;
+          const Eigen::Vector3d& f = at(kSub * ci + s, kSub * cj + t);
+          // Split along (0,0)-(1,1), as the tessellator's inner grid, and along (1,0)-(0,1).
+          const Eigen::Vector3d main = a >= b ? Eigen::Vector3d(f00 + a * (f10 - f00) + b * (f11 - f10))
+                                              : Eigen::Vector3d(f00 + b * (f01 - f00) + a * (f11 - f01));
+          const Eigen::Vector3d other = a + b <= 1.0
+                                            ? Eigen::Vector3d(f00 + a * (f10 - f00) + b * (f01 - f00))
+                                            : Eigen::Vector3d(f11 + (1.0 - a) * (f01 - f11) + (1.0 - b) * (f10 - f11));
+          worst = std::max({worst, (f - main).norm(), (f - other).norm()});
+        }
+      }
+    }
+  }
+  return worst;
+}
+
+CalibratedErrorBound::CalibratedErrorBound(const std::vector<BezierPatch>& reference) {
+  scale_.resize(reference.size());
+  for (std::size_t p = 0; p < reference.size(); ++p) {
+    const double constant = errorBoundConstant(reference[p]);
+    const auto scaleAt = [&](int level) {
+      const double bound = constant / (static_cast<double>(level) * level);
+      // A flat patch has neither error nor bound.
+      return bound > 0.0 ? std::min(1.0, measuredTessellationError(reference[p], level) / bound) : 1.0;
+    };
+    for (int level = 1; level < kCalibratedLevels; ++level) scale_[p][level - 1] = scaleAt(level);
+    // Finer levels: error * n^2 still changes between 4 and 8 on some patches; the larger holds.
+    scale_[p][kCalibratedLevels - 1] = std::max(scaleAt(kCalibratedLevels - 1), scaleAt(kFineReferenceLevel));
+  }
+}
+
+double CalibratedErrorBound::bound(std::size_t index, const BezierPatch& live, int level) const {
+  if (level < 1) throw std::invalid_argument("CalibratedErrorBound: level must be >= 1");
+  const double scale = scale_.at(index)[static_cast<std::size_t>(std::min(level, kCalibratedLevels) - 1)];
+  return std::min(1.0, kMargin * scale) * errorBoundConstant(live) / (static_cast<double>(level) * level);
+}
+
+int CalibratedErrorBound::smallestLevel(std::size_t index, double constant, double allowed, int max_level) const {
+  if (!(allowed > 0.0)) return max_level;
+  const std::array<double, kCalibratedLevels>& scale = scale_[index];
+  for (int level = 1; level <= std::min(kCalibratedLevels, max_level); ++level) {
+    const double factor = std::min(1.0, kMargin * scale[static_cast<std::size_t>(level - 1)]);
+    if (factor * constant / (static_cast<double>(level) * level) <= allowed) return level;
+  }
+  if (max_level <= kCalibratedLevels) return max_level;
+  const double finest = std::min(1.0, kMargin * scale[kCalibratedLevels - 1]);
+  return std::max(kCalibratedLevels + 1, smallestLevelFor(finest * constant, allowed, max_level));
+}
+
+void CalibratedErrorBound::levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
+                                                double max_error_pixels, int max_level,
+                                                std::vector<int>& levels) const {
+  if (patches.size() != scale_.size()) {
+    throw std::invalid_argument("CalibratedErrorBound: calibrated on " + std::to_string(scale_.size()) +
+                                " patches, asked for " + std::to_string(patches.size()));
+  }
+  const double error_per_distance = max_error_pixels / focalPixels(camera, max_error_pixels, max_level);
+  levels.resize(patches.size());
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    const BezierPatch& patch = patches[p];
+    const Eigen::Vector3d nearest = camera.position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
+    const double distance = (nearest - camera.position).norm();
+    levels[p] = distance > 0.0 ? smallestLevel(p, errorBoundConstant(patch), error_per_distance * distance, max_level)
+                               : max_level;
   }
 }
 

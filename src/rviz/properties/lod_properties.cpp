@@ -2,6 +2,7 @@
 
 #include <OgreCamera.h>
 #include <OgreViewport.h>
+#include <rviz/properties/bool_property.h>
 #include <rviz/properties/enum_property.h>
 #include <rviz/properties/float_property.h>
 #include <rviz/properties/int_property.h>
@@ -33,6 +34,19 @@ LodProperties::LodProperties(rviz::Property* parent) {
       parent, SIGNAL(vertexEvaluationChanged()), this);
   vertex_evaluation_->addOption("GPU", kGpuVertices);
   vertex_evaluation_->addOption("CPU", kCpuVertices);
+  hide_unseen_relief_ = new rviz::BoolProperty(
+      "Hide Unseen Relief", true,
+      "Draw a relief (skin cells, cloth folds) with the plain material, without its normal map, while its features "
+      "cover under 2 pixels on screen (again above 2.5 pixels): it cannot be seen there, only paid for.",
+      parent);
+}
+
+bool LodProperties::hideUnseenRelief() const { return hide_unseen_relief_->getBool(); }
+
+CameraView LodProperties::cameraView(const Ogre::Camera& camera) {
+  const Ogre::Vector3 eye = camera.getDerivedPosition();
+  return CameraView{Eigen::Vector3d(eye.x, eye.y, eye.z), camera.getFOVy().valueRadians(),
+                    camera.getViewport() ? static_cast<double>(camera.getViewport()->getActualHeight()) : 1000.0};
 }
 
 bool LodProperties::automatic() const { return mode_->getOptionInt() == kAutomatic; }
@@ -44,10 +58,7 @@ LevelOfDetail LodProperties::levelOfDetail(const Ogre::Camera* camera) const {
   lod.level = level_->getInt();
   lod.automatic = automatic();
   if (lod.automatic && camera != nullptr) {
-    const Ogre::Vector3 eye = camera->getDerivedPosition();
-    lod.camera.position = {eye.x, eye.y, eye.z};
-    lod.camera.vertical_fov_radians = camera->getFOVy().valueRadians();
-    lod.camera.viewport_height_pixels = camera->getViewport() ? camera->getViewport()->getActualHeight() : 1000.0;
+    lod.camera = cameraView(*camera);
     lod.max_error_pixels = max_error_pixels_->getFloat();
   }
   return lod;

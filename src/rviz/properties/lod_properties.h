@@ -22,6 +22,10 @@ class LodProperties : public QObject {
   LevelOfDetail levelOfDetail(const Ogre::Camera* camera) const;
   bool automatic() const;
   bool gpuVertices() const;
+  // Whether a relief too small to see is drawn with the plain material (ReliefVisibility).
+  bool hideUnseenRelief() const;
+  // What screen-space decisions need of `camera`.
+  static CameraView cameraView(const Ogre::Camera& camera);
 
  Q_SIGNALS:
   void vertexEvaluationChanged();
@@ -31,6 +35,7 @@ class LodProperties : public QObject {
   rviz::IntProperty* level_;
   rviz::FloatProperty* max_error_pixels_;
   rviz::EnumProperty* vertex_evaluation_;
+  rviz::BoolProperty* hide_unseen_relief_;
 };
 
 }  // namespace dressed_human

@@ -29,6 +29,10 @@ struct SurfacePart {
   ReliefKind relief;
   Eigen::Vector4f colour;     // RGBA, 0..1
   const TriangleMesh* mesh;   // owned by the HumanModel, valid until its next update()
+  // A closed surface with outward, counter-clockwise triangles (the skin): its inside never
+  // shows, so a renderer may cull back faces -- half the triangles it rasterizes. Garments are
+  // open (hems, sleeves, collar) and show their inside.
+  bool closed = false;
   // Per vertex of `mesh`, how much of the relief shows there, in [0, 1]; null: all of it. For
   // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
   // wrinkles behind a bent knee, none on a straight leg.
@@ -106,11 +110,21 @@ class HumanModel {
   // (for error budgets: geometricErrorBound(patch, level)).
   const std::vector<BezierPatch>& partPatches(std::size_t part) const;
   const std::vector<int>& partLevels(std::size_t part) const;
+  // The error bound automatic level of detail chooses part `part`'s levels by: calibrated on the
+  // part at rest (CalibratedErrorBound, about 2x tighter than geometricErrorBound, so about half
+  // the triangles for the same screen error).
+  const CalibratedErrorBound& partErrorBound(std::size_t part) const;
   const Skin& skin() const { return skin_; }
+  // The size (m) of one relief tile on the parts of `kind`: the reliefs are tiled once per patch,
+  // so this is the typical patch size at rest (typicalPatchSize); 0 for cloth without garments.
+  // A relief's features are a fraction of it (ReliefVisibility).
+  double reliefTileSize(ReliefKind kind) const { return relief_tile_size_[kind == ReliefKind::kSkin ? 0 : 1]; }
+  // Encloses every part as posed by the last update() (empty before).
+  Eigen::AlignedBox3f bounds() const;
 
  private:
-  const std::vector<int>& levelsFor(const Tessellator& tessellator, const std::vector<BezierPatch>& patches,
-                                    const LevelOfDetail& lod);
+  const std::vector<int>& levelsFor(const Tessellator& tessellator, const CalibratedErrorBound& error_bound,
+                                    const std::vector<BezierPatch>& patches, const LevelOfDetail& lod);
   Tessellator& tessellatorOf(std::size_t part);
   const PatchTopology& topologyOf(std::size_t part) const;
 
@@ -118,17 +132,20 @@ class HumanModel {
   Skin skin_;
   SkeletonPose pose_;
   Tessellator skin_tessellator_;
+  CalibratedErrorBound skin_error_bound_;
   // One garment of the outfit and what the model keeps of it between updates.
   struct DressedGarment {
     DressedGarment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape);
     Garment garment;
     std::unique_ptr<Tessellator> tessellator;  // by pointer: automatic_levels_ is keyed by it
     std::vector<BezierPatch> rest_patches;     // built in the rest pose
+    CalibratedErrorBound error_bound;          // calibrated on rest_patches
     VertexCompression compression;             // the per-vertex compression measure
     std::uint64_t compressed_layout = 0;       // Tessellator::layoutId() `compression` was prepared for
     std::vector<float> wrinkle_weights;        // per vertex, last levels used
   };
   std::vector<DressedGarment> garments_;
+  std::array<double, 2> relief_tile_size_{{0.0, 0.0}};  // by ReliefKind
   std::vector<SurfacePart> parts_;
   struct AutomaticLevels {
     std::vector<int> levels;        // per patch, the level in use

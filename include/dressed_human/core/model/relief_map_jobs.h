@@ -2,7 +2,10 @@
 // The two relief maps a renderer of HumanModel needs, each built off the caller's thread: the
 // skin's Voronoi relief (SkinRelief, rebuilt when its parameters change) and the garments' wrinkle
 // map (once). The caller polls without ever waiting; a change requested while a map is building
-// starts the next build when that one ends.
+// starts the next build when that one ends. Builds are shared by the whole process: every
+// ReliefMapJobs asking for the same map (kind and parameters) gets the one build, running or
+// done, and the same map and normal-map bytes, for as long as any of them holds it -- ten humans
+// in one rviz build their maps once, and the tenth appears at once.
 
 #include <array>
 #include <cstdint>
@@ -22,7 +25,8 @@ namespace dressed_human {
 struct FinishedReliefMap {
   ReliefKind kind = ReliefKind::kSkin;
   std::shared_ptr<const ReliefMap> map;  // null: the build failed
-  std::vector<std::uint8_t> normal_rgb;
+  // encodeNormalMapRgb(*map), shared like the map (a renderer may key its texture by it).
+  std::shared_ptr<const std::vector<std::uint8_t>> normal_rgb;
   std::string error;
 };
 
@@ -51,9 +55,15 @@ class ReliefMapJobs {
   // The newest map of `kind` built without an error; null before.
   const std::shared_ptr<const ReliefMap>& map(ReliefKind kind) const { return jobs_[index(kind)].map; }
 
+  // Maps built in this process so far (each shared build counts once).
+  static std::size_t buildCount();
+
+  struct SharedBuild;  // one build and who waits for it (relief_map_jobs.cpp)
+
  private:
   struct Job {
-    std::future<FinishedReliefMap> running;
+    std::shared_ptr<SharedBuild> running;  // null: none since the last poll() delivered it
+    std::shared_ptr<SharedBuild> held;     // the build whose map is in use: keeps it shared
     std::shared_ptr<const ReliefMap> map;
   };
   static std::size_t index(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }

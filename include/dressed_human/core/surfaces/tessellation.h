@@ -104,6 +104,39 @@ int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
 void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
                           double max_error_pixels, int max_level, std::vector<int>& levels);
 
+// The largest distance between the patch and its level-n grid triangulation at the same (u, v),
+// sampled on a 4x finer grid in every cell and taken over both diagonals: what
+// geometricErrorBound bounds, measured. About (4n + 1)^2 patch evaluations.
+double measuredTessellationError(const BezierPatch& patch, int level);
+
+// geometricErrorBound is safe but loose: on the body it is up to 10x the error a triangulation
+// really has (the control net's differences overstate the derivatives, and it adds both second
+// partials and the twist at their worst), so a level of detail chosen from it draws several
+// times the triangles a screen error needs. This bound is calibrated once per patch against the
+// measured error on a reference pose (levels 1..4 each; finer levels the larger of levels 4
+// and 8) and follows the live patch the way the a-priori bound does: measured / a-priori at the
+// reference, times the a-priori bound of the live patch, times kMargin for what posing changes.
+class CalibratedErrorBound {
+ public:
+  static constexpr int kCalibratedLevels = 5;  // levels 1..4, then one scale for all finer
+  static constexpr int kFineReferenceLevel = 8;
+  static constexpr double kMargin = 1.35;
+
+  CalibratedErrorBound() = default;  // no patches: callers fall back to the a-priori bound
+  explicit CalibratedErrorBound(const std::vector<BezierPatch>& reference);
+
+  std::size_t patchCount() const { return scale_.size(); }
+  // Patch `index` (of the reference) as `live` is now, at `level` >= 1.
+  double bound(std::size_t index, const BezierPatch& live, int level) const;
+  // levelsForScreenError with this bound; `patches` must be the reference's patches, posed.
+  void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
+                            double max_error_pixels, int max_level, std::vector<int>& levels) const;
+
+ private:
+  int smallestLevel(std::size_t index, double constant, double allowed, int max_level) const;
+  std::vector<std::array<double, kCalibratedLevels>> scale_;  // per patch: levels 1..4, finer
+};
+
 class Tessellator {
  public:
   static constexpr int kDefaultLevel = 8;

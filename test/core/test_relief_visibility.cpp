@@ -1,0 +1,71 @@
+// ReliefVisibility (model/relief_visibility.h): a relief is drawn while its features cover at
+// least two pixels, switched off and on again with hysteresis as a human walks away and back,
+// and the feature sizes the display derives from the model are those of its patches.
+#include "dressed_human/core/model/relief_visibility.h"
+
+#include <gtest/gtest.h>
+
+#include "dressed_human/core/model/human_model.h"
+#include "garment_test_support.h"
+
+namespace dressed_human {
+namespace {
+
+BezierPatch flatSquare(double side) {
+  BezierPatch::ControlPoints points;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) points[static_cast<std::size_t>(4 * j + i)] = Eigen::Vector3d(side * i / 3.0, side * j / 3.0, 0.0);
+  }
+  return BezierPatch(points);
+}
+
+TEST(ReliefVisibility, TypicalPatchSizeIsTheMedianLargerSide) {
+  EXPECT_NEAR(typicalPatchSize({flatSquare(0.1)}), 0.1, 1e-12);
+  EXPECT_NEAR(typicalPatchSize({flatSquare(0.1), flatSquare(0.3), flatSquare(0.2)}), 0.2, 1e-12);
+  EXPECT_THROW(typicalPatchSize({}), std::invalid_argument);
+}
+
+TEST(ReliefVisibility, HidesBelowTwoPixelsAndShowsAgainWithHysteresis) {
+  const CameraView camera{Eigen::Vector3d::Zero(), 0.8, 700.0};
+  ReliefVisibility visibility(0.01);  // 1 cm features
+  const double hide = visibility.hideDistance(camera);
+  EXPECT_NEAR(0.01 * pixelsPerMetre(camera, hide), ReliefVisibility::kHidePixels, 1e-9);
+  // Walking away: shown until just beyond the hide distance.
+  EXPECT_TRUE(visibility.update(pixelsPerMetre(camera, 0.99 * hide)));
+  EXPECT_FALSE(visibility.update(pixelsPerMetre(camera, 1.01 * hide)));
+  // Walking back: still hidden inside the hysteresis band, shown once the features are 2.5 px.
+  EXPECT_FALSE(visibility.update(pixelsPerMetre(camera, 0.9 * hide)));
+  const double show = hide * ReliefVisibility::kHidePixels / ReliefVisibility::kShowPixels;
+  EXPECT_FALSE(visibility.update(pixelsPerMetre(camera, 1.01 * show)));
+  EXPECT_TRUE(visibility.update(pixelsPerMetre(camera, 0.99 * show)));
+  // Jitter around the hide distance (a walking human's nearest point moves) does not toggle.
+  int toggles = 0;
+  bool last = visibility.update(pixelsPerMetre(camera, hide * 1.05));
+  for (int i = 0; i < 100; ++i) {
+    const bool now = visibility.update(pixelsPerMetre(camera, hide * (i % 2 == 0 ? 0.95 : 1.05)));
+    toggles += now != last ? 1 : 0;
+    last = now;
+  }
+  EXPECT_EQ(toggles, 0);
+  EXPECT_THROW(ReliefVisibility(0.0), std::invalid_argument);
+  EXPECT_THROW(ReliefVisibility(std::nan("")), std::invalid_argument);
+}
+
+TEST(ReliefVisibility, TheModelsTileSizesAreItsPatchSizes) {
+  using namespace garment_test;
+  HumanModelSettings settings;
+  settings.outfit = Outfit::kJacketSkirt;
+  settings.garment_directory = sourcePath("config/garments");
+  const HumanModel model(skeleton(), body(), settings);
+  const double skin = model.reliefTileSize(ReliefKind::kSkin);
+  const double cloth = model.reliefTileSize(ReliefKind::kCloth);
+  EXPECT_GT(skin, 0.03);  // limb patches a quarter of a limb around, trunk patches larger
+  EXPECT_LT(skin, 0.3);
+  EXPECT_GT(cloth, skin);  // garments have few, large patches
+  EXPECT_LT(cloth, 0.8);
+  settings.outfit = Outfit::kNone;
+  EXPECT_EQ(HumanModel(skeleton(), body(), settings).reliefTileSize(ReliefKind::kCloth), 0.0);
+}
+
+}  // namespace
+}  // namespace dressed_human
