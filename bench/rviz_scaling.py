@@ -39,7 +39,7 @@ from on_screen import OrbitView, figure_pixels_in_box  # noqa: E402
 
 DEVEL = os.path.join(ROOT, "build", "devel")
 # (label, display class, extra harness arguments)
-SUBJECTS = [("DressedHuman (GPU vertices)", "dressed_human/DressedHuman", []),
+SUBJECTS = [("DressedHuman (GPU vertices)", "dressed_human/DressedHuman", ["--set", "Vertex Evaluation=GPU"]),
             ("DressedHuman (CPU vertices)", "dressed_human/DressedHuman", ["--set", "Vertex Evaluation=CPU"]),
             ("RobotModel", "rviz/RobotModel", [])]
 YAW, FOCAL_Z = 0.0, 0.9

@@ -74,6 +74,7 @@ void DressedHumanDisplay::onInitialize() {
                                                                            "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
     status_.clear("Material");
     ReliefMaterial::bezierEvaluationAvailable(&gpu_vertices_problem_);
+    software_renderer_ = ReliefMaterial::softwareRenderer();
   } catch (const std::exception& error) {
     status_.error("Material", error.what());
   }
@@ -168,23 +169,18 @@ void DressedHumanDisplay::rebuildModel() {
 
 void DressedHumanDisplay::updateVertexEvaluation() {
   if (!model_) return;
-  std::string problem = gpu_vertices_problem_;
-  for (std::size_t p = 0; problem.empty() && p < model_->parts().size(); ++p) {
-    if (model_->partPatches(p).size() > ReliefMaterial::kMaxPatches) {
-      problem = model_->parts()[p].name + " has " + std::to_string(model_->partPatches(p).size()) +
-                " patches, the vertex shader holds " + std::to_string(ReliefMaterial::kMaxPatches);
+  const LodProperties::VertexChoice choice =
+      lod_properties_->chooseVertexEvaluation(*model_, gpu_vertices_problem_, software_renderer_);
+  if (choice.status.empty()) {
+    deleteStatus("Vertex Evaluation");
+  } else {
+    setStatusStd(choice.warn ? rviz::StatusProperty::Warn : rviz::StatusProperty::Ok, "Vertex Evaluation", choice.status);
+    if (choice.warn) {
+      ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': Vertex Evaluation: %s", getName().toStdString().c_str(),
+                     choice.status.c_str());
     }
   }
-  const bool gpu = lod_properties_->gpuVertices();
-  if (gpu && !problem.empty()) {
-    const std::string text = problem + "; the CPU evaluates the vertices";
-    setStatusStd(rviz::StatusProperty::Warn, "Vertex Evaluation", text);
-    ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': Vertex Evaluation: %s", getName().toStdString().c_str(),
-                   text.c_str());
-  } else {
-    deleteStatus("Vertex Evaluation");
-  }
-  model_->setVertexEvaluation(gpu && problem.empty() ? VertexEvaluation::kRenderer : VertexEvaluation::kCpu);
+  model_->setVertexEvaluation(choice.evaluation);
   context_->queueRender();
 }
 

@@ -75,6 +75,7 @@ class DressedHumanDisplay : public rviz::Display {
   DisplayStatus status_{*this};
   // Why the Bezier vertex shader cannot run here (empty: it can).
   std::string gpu_vertices_problem_ = "the relief material did not load";
+  std::string software_renderer_;  // the GL renderer if it rasterizes on the CPU (llvmpipe)
 
   std::unique_ptr<Skeleton> skeleton_;
   std::unique_ptr<TfBoneSource> bone_source_;  // the skeleton's frames in TF

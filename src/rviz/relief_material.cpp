@@ -130,6 +130,15 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   return problem.empty();
 }
 
+std::string ReliefMaterial::softwareRenderer() {
+  const GLubyte* text = glGetString(GL_RENDERER);
+  const std::string renderer = text ? reinterpret_cast<const char*>(text) : "";
+  for (const char* software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer", "SwiftShader"}) {
+    if (renderer.find(software) != std::string::npos) return renderer;
+  }
+  return "";
+}
+
 ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_vertices)
     : name_(unique_name), bezier_vertices_(bezier_vertices) {
   loadMediaOnce();

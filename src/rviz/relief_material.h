@@ -30,6 +30,9 @@ class ReliefMaterial {
   // Whether this GL can run the Bezier vertex shader; if not, `why` says what is missing.
   // Loads the media first (may throw like loadMediaOnce).
   static bool bezierEvaluationAvailable(std::string* why);
+  // The GL renderer's name if it rasterizes on the CPU (Mesa llvmpipe, softpipe, swrast), else
+  // empty. rviz's GL context must be current (it is on rviz's thread).
+  static std::string softwareRenderer();
 
   // bezier_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
   // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout).

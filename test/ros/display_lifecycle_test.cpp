@@ -1,7 +1,9 @@
 // The DressedHuman display in a real rviz VisualizationManager (on the test's X server): 1000
 // enable/disable cycles with resets and property changes, without a crash, an error status or
 // resident memory growing by more than 5 %; and a bone frame that goes missing from TF is
-// reported on its own and recovers by itself.
+// reported on its own and recovers by itself; unseen relief is drawn with the plain material;
+// automatic vertex evaluation picks the CPU on this software renderer.
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -14,6 +16,8 @@
 #include <rviz/display.h>
 #include <rviz/properties/status_property.h>
 #include <rviz/properties/vector_property.h>
+#include <OgreMaterialManager.h>
+#include <OgreTechnique.h>
 #include <rviz/render_panel.h>
 #include <rviz/visualization_manager.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -163,6 +167,73 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
               100.0 * static_cast<double>(after - before) / static_cast<double>(before));
   EXPECT_LE(after, before + before / 20);
   EXPECT_EQ(level(), rviz::StatusProperty::Ok);
+}
+
+// Fragment programs of the display's materials ("dressed_human/<display>/.../<part>"), by part.
+std::vector<std::string> fragmentPrograms() {
+  std::vector<std::string> names;
+  auto materials = Ogre::MaterialManager::getSingleton().getResourceIterator();
+  while (materials.hasMoreElements()) {
+    Ogre::ResourcePtr resource = materials.getNext();
+    const std::string name = resource->getName();
+    const auto endsWith = [&](const std::string& end) {
+      return name.size() > end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
+    };
+    if (name.rfind("dressed_human/", 0) != 0 || !(endsWith("/skin") || endsWith("/skirt") || endsWith("/jacket"))) continue;
+    auto material = Ogre::static_pointer_cast<Ogre::Material>(resource);
+    names.push_back(material->getTechnique(0)->getPass(0)->getFragmentProgramName());
+  }
+  return names;
+}
+
+// The relief is drawn with the plain material where its features are under two pixels on
+// screen: the same view (about 9 m away) in a window 60 pixels high (every relief under a pixel),
+// 1200 pixels high (the garments' folds about 12 px: relief; the skin's cells about 1.3 px:
+// plain), and back; "Hide Unseen Relief" off keeps the relief whatever the size.
+TEST_F(DisplayLifecycleTest, UnseenReliefIsDrawnWithThePlainMaterial) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  display_->subProp("Relief")->setValue("Bump mapping");
+  display_->subProp("Hide Unseen Relief")->setValue(true);
+  auto count = [](const std::vector<std::string>& programs, const std::string& name) {
+    return std::count(programs.begin(), programs.end(), name);
+  };
+  const std::string plain = "dressed_human/PlainSurfaceFragment", relief = "dressed_human/ReliefSurfaceFragment";
+  for (const int height : {60, 1200, 60}) {
+    panel_->resize(height * 4 / 3, height);
+    frames(10);
+    const std::vector<std::string> programs = fragmentPrograms();
+    std::string listed;
+    for (const std::string& program : programs) listed += program + " ";
+    ASSERT_EQ(programs.size(), 3u) << "skin, skirt and jacket";
+    if (height < 100) {
+      EXPECT_EQ(count(programs, plain), 3) << height << " px: " << listed;
+    } else {  // the skin's cells (8 mm) stay under 2 px from this view's ~9 m: plain
+      EXPECT_EQ(count(programs, relief), 2) << height << " px: " << listed;
+    }
+  }
+  display_->subProp("Hide Unseen Relief")->setValue(false);
+  frames(5);
+  EXPECT_EQ(count(fragmentPrograms(), relief), 3) << "Hide Unseen Relief off";
+  display_->subProp("Hide Unseen Relief")->setValue(true);
+  panel_->resize(320, 240);
+  frames(5);
+}
+
+// Under Xvfb the GL is Mesa's llvmpipe: "Automatic" (the default) evaluates the vertices on the
+// CPU and says why; "GPU" asked for explicitly is obeyed.
+TEST_F(DisplayLifecycleTest, AutomaticVertexEvaluationPicksTheCpuOnASoftwareRenderer) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  display_->subProp("Vertex Evaluation")->setValue("Automatic");
+  frames(3);
+  const rviz::StatusProperty* automatic = status("Vertex Evaluation");
+  ASSERT_NE(automatic, nullptr) << allStatuses();
+  const std::string text = automatic->getValue().toString().toStdString();
+  EXPECT_NE(text.find("CPU (Automatic)"), std::string::npos) << text;
+  EXPECT_NE(text.find("llvmpipe"), std::string::npos) << text;
+  display_->subProp("Vertex Evaluation")->setValue("GPU");
+  frames(3);
+  EXPECT_EQ(status("Vertex Evaluation"), nullptr) << allStatuses();
+  display_->subProp("Vertex Evaluation")->setValue("Automatic");
 }
 
 // The test publishes the TF of a second human itself (frames suffixed _9, all joints at zero),
