@@ -20,7 +20,7 @@ import time
 import numpy
 from PIL import Image
 
-from ros_processes import report, ros_environment, start, stop
+from ros_processes import report, ros_environment, start, start_frozen_human, stop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEVEL = os.path.join(ROOT, "build", "devel")
@@ -78,20 +78,11 @@ def main():
     images = args.images or tempfile.mkdtemp()
     os.makedirs(images, exist_ok=True)
     env = ros_environment(11913)
-    urdf = os.path.join(ROOT, "urdf", "human.urdf")
     processes = [start(["roscore", "-p", "11913"], env)]
     results = {}
     try:
         time.sleep(4)
-        import rosgraph  # after ROS_MASTER_URI is known to this process
-        master = rosgraph.Master("/relief_modes", master_uri=env["ROS_MASTER_URI"])
-        text = subprocess.run([os.path.join(ROOT, "scripts", "suffix_urdf.py"), urdf, "0"], check=True,
-                              stdout=subprocess.PIPE, universal_newlines=True).stdout
-        master.setParam("/human_0/robot_description", text)
-        processes.append(start([os.path.join(DEVEL, "lib", "dressed_human", "skeleton_publisher"), "__ns:=/human_0",
-                                "_motion_file:=" + os.path.join(ROOT, "config", "motions", "walk.yaml"),
-                                "_speed_factor:=0.0", "_start_phase:=1.0", "_publish_joint_states:=false"], env))
-        time.sleep(2)
+        processes.append(start_frozen_human(ROOT, env, "/relief_modes"))
         for distance in args.distances:
             for mode in MODES:
                 costs = []

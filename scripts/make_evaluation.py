@@ -257,11 +257,13 @@ def rviz_scaling_verdict(results):
         sentences.append("%d humans at %g m: DressedHuman %.1f fps, %.2f ms rviz CPU per human; RobotModel %.1f fps, "
                          "%.2f ms" % (count, distance, float(gpu["fps"]), float(gpu["per_human_ms"]),
                                       float(robot["fps"]), float(robot["per_human_ms"])))
-    if (names[0], 10, near) in by:
-        gpu, robot = by[(names[0], 10, near)], by[(names[2], 10, near)]
-        fps, ratio, cost = float(gpu["fps"]), float(gpu["fps"]) / float(robot["fps"]), float(gpu["per_human_ms"])
-        sentences.append("Goals for 10 humans at %g m (issue 19): ≥ 29 fps: %.1f (%s); ≥ 1.5× RobotModel's fps: %.2f× "
-                         "(%s); ≤ 3 ms rviz CPU per human: %.2f ms (%s)" % (
+    if (names[1], 10, near) in by:
+        # Mesa llvmpipe renders here: "Vertex Evaluation: Automatic", the default, picks the CPU.
+        human, robot = by[(names[1], 10, near)], by[(names[2], 10, near)]
+        fps, ratio, cost = float(human["fps"]), float(human["fps"]) / float(robot["fps"]), float(human["per_human_ms"])
+        sentences.append("Goals for 10 humans at %g m (issue 19), DressedHuman as configured by default here (CPU "
+                         "vertices, Automatic's choice on llvmpipe): ≥ 29 fps: %.1f (%s); ≥ 1.5× RobotModel's fps: "
+                         "%.2f× (%s); ≤ 3 ms rviz CPU per human: %.2f ms (%s)" % (
                              near, fps, "met" if fps >= 29 else "not met", ratio, "met" if ratio >= 1.5 else "not met",
                              cost, "met" if cost <= 3 else "not met"))
     return "\n".join("- " + s + "." for s in sentences)
@@ -290,7 +292,8 @@ def readme_speed_section(results, machine, skeleton_lines, rviz_verdict):
     return README_SPEED.format(
         machine=machine, skeleton_table="\n".join(skeleton_lines), skin_default=in_us(default), skin_fine=in_us(fine),
         node_cpu=read_text(os.path.join(DOCS, "node_cpu.md")), node_verdict=node_cpu_verdict(),
-        rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")), rviz_verdict=rviz_verdict)
+        rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")), rviz_verdict=rviz_verdict,
+        relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")))
 
 
 README_BEGIN = "<!-- Written by scripts/make_evaluation.py from one run of scripts/evaluate.sh: edit it there. -->"
@@ -335,6 +338,7 @@ def main():
         skin_table="\n".join(skin_lines), skin_verdict=skin_verdict,
         rviz_verdict=rviz_verdict,
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")),
+        relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")),
         stability=stability)
     with open(os.path.join(DOCS, "EVALUATION.md"), "w") as f:
         f.write(text)
@@ -419,6 +423,17 @@ on the skin it aliases into noise and is no reference; the whole-figure column s
 {relief_table}
 
 Images: `docs/relief_modes/`.
+
+### What hiding an unseen relief changes
+
+![Relief switch](relief_switch.png)
+
+`bench/relief_switch.py`: one frozen human drawn with `Hide Unseen Relief` on and off from 2 to
+32 m. Where a relief's features cover under 2 pixels the display draws it with the plain material
+(no normal-map fetch); the difference is what the relief still added there. Images and their
+difference (×8): `docs/relief_switch/`.
+
+{relief_switch}
 
 ## Skin relief map: levels and resolution against time
 
