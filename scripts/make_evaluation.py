@@ -399,7 +399,7 @@ alone at 1, 5 and 20 m from the camera and as rows of 5 and 10 humans 1 m apart 
 automatic level of detail (1 px screen-space error bound, rviz's default 0.8 rad field of view on
 a 1000 px viewport; the display's default) against the fixed levels 4 (the core's default,
 Skin::kDefaultLevel) and 8. Error columns are the
-conservative bound per patch, in mm and projected to pixels at the patch's nearest point. The
+error bound the level of detail uses per patch (CalibratedErrorBound: calibrated on the measured error, within 2× of it), in mm and projected to pixels at the patch's nearest point. The
 "GPU vertices" rows are what rviz's thread pays when the vertex shader evaluates the patches
 (the display's default): posing the control points and choosing levels, plus a new mesh layout
 when the levels change; their levels sit on a coarse ladder that only drops after 2 s, hence
