@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """rviz with N walking humans in view: DressedHuman displays (vertices evaluated by the vertex
-shader, the default, and by the CPU) against the same number of RobotModel displays of the same
+shader and by the CPU, the default's choice on a software renderer) against the same number of RobotModel displays of the same
 URDF, in one run (bench/rviz_display_scaling.cpp does the rviz side).
 
 Every human stays in view for the whole measurement: each is its own skeleton_publisher

@@ -401,7 +401,7 @@ a 1000 px viewport; the display's default) against the fixed levels 4 (the core'
 Skin::kDefaultLevel) and 8. Error columns are the
 error bound the level of detail uses per patch (CalibratedErrorBound: calibrated on the measured error, within 2× of it), in mm and projected to pixels at the patch's nearest point. The
 "GPU vertices" rows are what rviz's thread pays when the vertex shader evaluates the patches
-(the display's default): posing the control points and choosing levels, plus a new mesh layout
+(the display's choice on a graphics card): posing the control points and choosing levels, plus a new mesh layout
 when the levels change; their levels sit on a coarse ladder that only drops after 2 s, hence
 somewhat more triangles for the same error bound.
 
@@ -463,7 +463,8 @@ piecewise-planar fold, per number of Gaussians; each term costs one exp() per pi
 `bench/rviz_scaling.py`: 1 to 30 humans walking in place (rows of 10, 1 m apart; rows 3 m behind
 one another, seen from higher up, beyond 10), all in view of a camera 12 m away, and 10 humans at
 several distances; DressedHuman displays (jacket + skirt, automatic level of detail; vertices evaluated by
-the vertex shader, the default, and by the CPU) against the same number of RobotModel displays of
+the vertex shader and by the CPU, which `Vertex Evaluation: Automatic`, the default, picks on this
+software renderer) against the same number of RobotModel displays of
 the URDF, in one run. Each point saves a screenshot as its measurement starts and as it ends
 (`docs/rviz_scaling/`) and counts only if every human is drawn in both.
 
