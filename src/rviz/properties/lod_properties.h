@@ -28,8 +28,8 @@ class LodProperties : public QObject {
   // status says (empty text: no status). `gpu_problem`: why the Bezier vertex shader cannot run
   // here (empty: it can). `software_renderer`: the GL renderer's name when it rasterizes on the
   // CPU (llvmpipe), empty on a GPU. Automatic picks the GPU's vertex shader on a GPU and the CPU
-  // on a software renderer, whose vertex shader runs on one thread of rviz (issue 19: 11.7 fps
-  // against 20.6 fps for ten humans on llvmpipe).
+  // on a software renderer, whose vertex shader runs on one thread of rviz (bench/rviz_scaling.py
+  // measures both).
   struct VertexChoice {
     VertexEvaluation evaluation = VertexEvaluation::kCpu;
     bool warn = false;
