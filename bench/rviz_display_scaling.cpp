@@ -1,7 +1,7 @@
 // ROS-side benchmark harness: an rviz VisualizationManager (as in rviz itself, render panel on the
 // X server) with N displays of one class, one per human (human_<i>/robot_description), driven at
-// rviz's 30 Hz for a while. Prints one line: class, N, achieved fps, process CPU (% of one core)
-// and CPU per frame. bench/rviz_scaling.py runs it for DressedHuman and RobotModel side by side.
+// rviz's 30 Hz for a while. Prints one line: class, N, achieved fps, process CPU (% of one core),
+// CPU per frame, resident memory at the end and when every human was first drawn. bench/rviz_scaling.py runs it for DressedHuman and RobotModel side by side.
 //
 // Usage: rviz_display_scaling <display class> <count> <seconds> [options]
 //   --set <property>=<value>  set a property of every display (repeatable), e.g. Relief=Flat
@@ -12,6 +12,7 @@
 //                             _start before its extension) and when it ends (<path>)
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <ctime>
 #include <string>
 #include <thread>
@@ -37,6 +38,14 @@ rviz::Property* childNamed(rviz::Property* parent, const QString& name) {
   return nullptr;
 }
 
+double residentMegabytes() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return -1.0;
+}
+
 double processCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
@@ -46,6 +55,7 @@ double processCpuSeconds() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const auto program_start = std::chrono::steady_clock::now();
   ros::init(argc, argv, "rviz_display_scaling", ros::init_options::AnonymousName);
   QApplication application(argc, argv);
   const char* usage =
@@ -149,6 +159,20 @@ int main(int argc, char** argv) {
       }
     }
   };
+  // Seconds from the program's start until every display has drawn its human once (DressedHuman:
+  // its "Surfaces" status exists); -1 for displays that do not say, or if one never did.
+  double first_frame_seconds = -1.0;
+  const auto allDrawn = [&] {
+    for (rviz::Display* display : displays) {
+      bool drawn = false;
+      for (int c = 0; !drawn && c < display->numChildren(); ++c) {
+        auto* statuses = dynamic_cast<rviz::StatusProperty*>(display->childAt(c));
+        drawn = statuses != nullptr && childNamed(statuses, "Surfaces") != nullptr;
+      }
+      if (!drawn) return false;
+    }
+    return true;
+  };
   const auto period = std::chrono::microseconds(33333);  // rviz's default 30 fps
   auto run = [&](double duration, int& frames) {
     frames = 0;
@@ -157,6 +181,9 @@ int main(int argc, char** argv) {
     while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < duration) {
       frame();
       ++frames;
+      if (first_frame_seconds < 0.0 && allDrawn()) {
+        first_frame_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - program_start).count();
+      }
       if (sampling && frames % 30 == 0) sampleDisplays();
       next += period;
       std::this_thread::sleep_until(next);
@@ -192,8 +219,10 @@ int main(int argc, char** argv) {
     }
   }
   if (!screenshot.isEmpty()) panel.getRenderWindow()->writeContentsToFile(screenshot.toStdString());
-  std::printf("class=%s count=%d fps=%.2f cpu_percent=%.1f cpu_ms_per_frame=%.3f display_ms=%.3f measured=%d\n",
+  std::printf("class=%s count=%d fps=%.2f cpu_percent=%.1f cpu_ms_per_frame=%.3f display_ms=%.3f measured=%d "
+              "rss_mb=%.1f first_frame_s=%.2f\n",
               argv[1], count, frames / wall, 100.0 * cpu / wall, 1000.0 * cpu / frames,
-              display_samples ? display_ms_sum / display_samples : -1.0, measured);
+              display_samples ? display_ms_sum / display_samples : -1.0, measured, residentMegabytes(),
+              first_frame_seconds);
   return 0;
 }

@@ -88,10 +88,13 @@ def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0
     match = re.search(r"fps=([\d.]+) cpu_percent=([\d.]+) cpu_ms_per_frame=([\d.]+) display_ms=([-\d.]+)", output)
     if not match:
         raise RuntimeError("harness failed for %s x %d:\n%s" % (display_class, count, output[-2000:]))
+    point = dict(zip(("fps", "cpu_percent", "cpu_ms_per_frame", "display_ms"), (float(v) for v in match.groups())))
+    extra = re.search(r"rss_mb=([-\d.]+) first_frame_s=([-\d.]+)", output)
+    point["rss_mb"], point["first_frame_s"] = (float(v) for v in extra.groups()) if extra else (-1.0, -1.0)
     for line in output.splitlines():
         if line.startswith("status "):
             print("  %s x %d: %s" % (display_class, count, line), file=sys.stderr)
-    return dict(zip(("fps", "cpu_percent", "cpu_ms_per_frame", "display_ms"), (float(v) for v in match.groups())))
+    return point
 
 
 def chart(results, counts, distances, distance_count, path):
@@ -206,23 +209,29 @@ def main():
 
     failed = [(label, n, d) for (label, n, d), p in results.items() if p["drawn"] < n]
     lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per human per frame | display's own "
-             "update per human per frame |", "|---|---|---|---|---|---|---|---|"]
-    rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,per_human_ms,display_ms,screenshot"]
+             "update per human per frame | rviz resident memory | all drawn after |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,per_human_ms,display_ms,rss_mb,"
+            "first_frame_s,screenshot"]
     for count, distance in points:
         for label, _, _ in SUBJECTS:
             p = results[(label, count, distance)]
             own = "%.3f ms" % p["display_ms"] if p["display_ms"] >= 0 else "—"
             drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")
-            lines.append("| %d | %g m | %s | %s | %.1f | %.0f %% | %.2f ms | %s |" % (
-                count, distance, label, drawn_text, p["fps"], p["cpu_percent"], p["per_human_ms"], own))
-            rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%s" % (
+            first = "%.2f s" % p["first_frame_s"] if p["first_frame_s"] >= 0 else "—"
+            lines.append("| %d | %g m | %s | %s | %.1f | %.0f %% | %.2f ms | %s | %.0f MB | %s |" % (
+                count, distance, label, drawn_text, p["fps"], p["cpu_percent"], p["per_human_ms"], own, p["rss_mb"],
+                first))
+            rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%.1f,%.2f,%s" % (
                 label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"],
-                p["per_human_ms"], p["display_ms"], p["screenshot"]))
+                p["per_human_ms"], p["display_ms"], p["rss_mb"], p["first_frame_s"], p["screenshot"]))
     lines.append("")
     lines.append("Empty scene: %.1f fps, %.0f %% CPU, %.2f ms per frame. Humans walking in place, up to %d in a row 1 m "
                  "apart (camera pitched 0.25 rad), more in rows %g m apart (camera pitched 0.7 rad); %g s per point "
                  "after 5 s of warm-up; rviz CPU in %% of one core, Mesa llvmpipe (software rendering) on %d cores; "
                  "\"drawn\": humans visible in both the screenshot at the start and at the end of the point (`%s/`); "
+                 "resident memory of the rviz process at the end of the point; \"all drawn after\": seconds from the "
+                 "rviz process's start until every DressedHuman display had drawn its human (RobotModel does not say); "
                  "`bench/rviz_scaling.py`."
                  % (baseline["fps"], baseline["cpu_percent"], baseline["cpu_ms_per_frame"], ROW_LENGTH, ROW_SPACING,
                     args.seconds, os.cpu_count(), os.path.relpath(shots, ROOT)))
