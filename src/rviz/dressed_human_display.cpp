@@ -239,8 +239,7 @@ void DressedHumanDisplay::updateReliefVisibility(const Ogre::Camera* camera) {
   double pixels_per_metre = 0.0;  // at the human's nearest point
   if (judged) {
     const CameraView view = LodProperties::cameraView(*camera);
-    const Eigen::Vector3d nearest = view.position.cwiseMax(bounds.min().cast<double>()).cwiseMin(bounds.max().cast<double>());
-    pixels_per_metre = pixelsPerMetre(view, (nearest - view.position).norm());
+    pixels_per_metre = pixelsPerMetre(view, bounds.cast<double>().exteriorDistance(view.position));
   }
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
     std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];

@@ -42,15 +42,6 @@ struct Measurement {
   double max_error_pixels = 0.0;
 };
 
-double pixelsPerMetreAt(const CameraView& camera, double distance) {
-  return camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians) * std::max(distance, 1e-3));
-}
-
-double nearestDistance(const BezierPatch& patch, const Eigen::Vector3d& eye) {
-  const Eigen::Vector3d nearest = eye.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
-  return (nearest - eye).norm();
-}
-
 // `humans` models side by side along y, 1 m apart, centred on the origin; the camera looks at
 // them from `distance` along x.
 Measurement measure(const Scene& scene, const HumanModelSettings& settings, int humans, double distance,
@@ -92,7 +83,7 @@ Measurement measure(const Scene& scene, const HumanModelSettings& settings, int 
           const double bound = model->partErrorBound(part).bound(p, patches[p], levels[p]);
           result.max_error_mm = std::max(result.max_error_mm, 1e3 * bound);
           result.max_error_pixels = std::max(
-              result.max_error_pixels, bound * pixelsPerMetreAt(lod.camera, nearestDistance(patches[p], lod.camera.position)));
+              result.max_error_pixels, bound * pixelsPerMetre(lod.camera, distanceToPatchBounds(patches[p], lod.camera.position)));
         }
       }
     }

@@ -95,5 +95,27 @@ TEST(CalibratedErrorBound, GarmentBoundsHoldAndAreTightOverAWalk) {
   }
 }
 
+TEST(CalibratedErrorBound, BadQueriesThrowAndEqualBodiesShareOneCalibration) {
+  Skin skin(skeleton(), body());
+  const std::vector<BezierPatch> rest = skin.patches();
+  const CalibratedErrorBound calibrated(rest);
+  EXPECT_THROW(calibrated.bound(0, rest[0], 0), std::invalid_argument);
+  EXPECT_THROW(calibrated.bound(rest.size(), rest[0], 1), std::out_of_range);
+  EXPECT_THROW(measuredTessellationError(rest[0], 0), std::invalid_argument);
+  std::vector<int> levels;
+  const CameraView camera{Eigen::Vector3d(5.0, 0.0, 1.0), 0.8, 700.0};
+  const std::vector<BezierPatch> fewer(rest.begin(), rest.begin() + 3);
+  EXPECT_THROW(calibrated.levelsForScreenError(fewer, camera, 1.0, 16, levels), std::invalid_argument);
+  EXPECT_NO_THROW(calibrated.levelsForScreenError(rest, camera, 1.0, 16, levels));
+  EXPECT_EQ(levels.size(), rest.size());
+
+  // Two humans of one body: one calibration; another body: another one.
+  const std::shared_ptr<const CalibratedErrorBound> first = CalibratedErrorBound::shared(rest);
+  EXPECT_EQ(CalibratedErrorBound::shared(Skin(skeleton(), body()).patches()), first);
+  BodyShape wider = body().shape;
+  for (Eigen::Vector3d& factors : wider.scale) factors.x() *= 1.1;
+  EXPECT_NE(CalibratedErrorBound::shared(Skin(skeleton(), body(), wider).patches()), first);
+}
+
 }  // namespace
 }  // namespace dressed_human

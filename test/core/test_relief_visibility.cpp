@@ -28,7 +28,7 @@ TEST(ReliefVisibility, TypicalPatchSizeIsTheMedianLargerSide) {
 TEST(ReliefVisibility, HidesBelowTwoPixelsAndShowsAgainWithHysteresis) {
   const CameraView camera{Eigen::Vector3d::Zero(), 0.8, 700.0};
   ReliefVisibility visibility(0.01);  // 1 cm features
-  const double hide = visibility.hideDistance(camera);
+  const double hide = 0.01 * pixelsPerMetre(camera, 1.0) / ReliefVisibility::kHidePixels;  // metres
   EXPECT_NEAR(0.01 * pixelsPerMetre(camera, hide), ReliefVisibility::kHidePixels, 1e-9);
   // Walking away: shown until just beyond the hide distance.
   EXPECT_TRUE(visibility.update(pixelsPerMetre(camera, 0.99 * hide)));

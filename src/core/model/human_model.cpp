@@ -81,7 +81,7 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 }
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
-    : settings_(settings), skin_(skeleton, body), skin_error_bound_(skin_.patches()) {
+    : settings_(settings), skin_(skeleton, body), skin_error_bound_(CalibratedErrorBound::shared(skin_.patches())) {
   parts_.push_back(surfacePart("skin", ReliefKind::kSkin, settings_.skin_colour));
   parts_.back().closed = true;  // every skin part is a closed surface (skin.h)
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
@@ -125,7 +125,7 @@ HumanModel::DressedGarment::DressedGarment(const GarmentDescription& description
     : garment(description, skeleton, shape),
       tessellator(std::make_unique<Tessellator>()),
       rest_patches(garment.patches()),
-      error_bound(rest_patches) {}
+      error_bound(CalibratedErrorBound::shared(rest_patches)) {}
 
 const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const CalibratedErrorBound& error_bound,
                                               const std::vector<BezierPatch>& patches, const LevelOfDetail& lod) {
@@ -242,7 +242,7 @@ const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const 
 }
 
 const CalibratedErrorBound& HumanModel::partErrorBound(std::size_t part) const {
-  return part == 0 ? skin_error_bound_ : garments_.at(part - 1).error_bound;
+  return part == 0 ? *skin_error_bound_ : *garments_.at(part - 1).error_bound;
 }
 
 const std::vector<int>& HumanModel::partLevels(std::size_t part) const {

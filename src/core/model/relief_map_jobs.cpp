@@ -92,13 +92,9 @@ WrinkleMapSpec garmentWrinkleMapSpec() {
   return spec;
 }
 
-ReliefMapJobs::~ReliefMapJobs() {
-  // A build another ReliefMapJobs shares goes on for it; one only this object holds is waited
-  // for here, so that no thread outlives what it was started for.
-  for (Job& job : jobs_) {
-    if (job.running && job.running.use_count() == 1) job.running->result.wait();
-  }
-}
+// A build another ReliefMapJobs shares goes on for it; the last holder of a build waits for its
+// thread when it lets go (the shared state of std::async), so no thread outlives its users.
+ReliefMapJobs::~ReliefMapJobs() = default;
 
 std::size_t ReliefMapJobs::buildCount() { return builds.load(); }
 

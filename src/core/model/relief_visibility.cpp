@@ -37,11 +37,6 @@ double typicalPatchSize(const std::vector<BezierPatch>& patches) {
   return sizes[sizes.size() / 2];
 }
 
-double pixelsPerMetre(const CameraView& camera, double distance) {
-  const double focal = camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
-  return distance > 0.0 ? focal / distance : focal * 1e6;
-}
-
 ReliefVisibility::ReliefVisibility(double feature_size) : feature_size_(feature_size) {
   if (!(feature_size > 0.0) || !std::isfinite(feature_size)) {
     throw std::invalid_argument("ReliefVisibility: feature size " + std::to_string(feature_size) +
@@ -54,10 +49,6 @@ bool ReliefVisibility::update(double pixels_per_metre) {
   if (shown_ && pixels < kHidePixels) shown_ = false;
   if (!shown_ && pixels > kShowPixels) shown_ = true;
   return shown_;
-}
-
-double ReliefVisibility::hideDistance(const CameraView& camera) const {
-  return feature_size_ * pixelsPerMetre(camera, 1.0) / kHidePixels;
 }
 
 }  // namespace dressed_human

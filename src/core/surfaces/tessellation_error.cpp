@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -101,18 +103,25 @@ double focalPixels(const CameraView& camera, double max_error_pixels, int max_le
   if (!(max_error_pixels > 0.0) || !std::isfinite(max_error_pixels)) {
     throw std::invalid_argument("levelForScreenError: max_error_pixels must be finite and > 0");
   }
-  return camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
+  return pixelsPerMetre(camera, 1.0);
 }
 
 int screenErrorLevel(const BezierPatch& patch, const Eigen::Vector3d& camera_position, double error_per_distance,
                      int max_level) {
-  const Eigen::Vector3d nearest = camera_position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
-  const double distance = (nearest - camera_position).norm();
+  const double distance = distanceToPatchBounds(patch, camera_position);
   if (!(distance > 0.0)) return max_level;
   return smallestLevelFor(errorBoundConstant(patch), error_per_distance * distance, max_level);
 }
 
 }  // namespace
+
+double pixelsPerMetre(const CameraView& camera, double distance) {
+  return camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians) * std::max(distance, 1e-3));
+}
+
+double distanceToPatchBounds(const BezierPatch& patch, const Eigen::Vector3d& eye) {
+  return (eye.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax()) - eye).norm();
+}
 
 int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
                            double max_error_pixels, int max_level) {
@@ -184,6 +193,32 @@ CalibratedErrorBound::CalibratedErrorBound(const std::vector<BezierPatch>& refer
   }
 }
 
+std::shared_ptr<const CalibratedErrorBound> CalibratedErrorBound::shared(const std::vector<BezierPatch>& reference) {
+  struct Entry {
+    std::vector<BezierPatch> reference;
+    std::weak_ptr<const CalibratedErrorBound> calibration;
+  };
+  static std::mutex mutex;
+  static std::vector<Entry> entries;
+  const auto same = [&](const std::vector<BezierPatch>& other) {
+    return other.size() == reference.size() &&
+           std::equal(other.begin(), other.end(), reference.begin(), [](const BezierPatch& a, const BezierPatch& b) {
+             return a.controlPoints() == b.controlPoints();
+           });
+  };
+  std::lock_guard<std::mutex> lock(mutex);
+  entries.erase(std::remove_if(entries.begin(), entries.end(), [](const Entry& e) { return e.calibration.expired(); }),
+                entries.end());
+  for (const Entry& entry : entries) {
+    if (same(entry.reference)) {
+      if (std::shared_ptr<const CalibratedErrorBound> calibration = entry.calibration.lock()) return calibration;
+    }
+  }
+  auto calibration = std::make_shared<const CalibratedErrorBound>(reference);
+  entries.push_back(Entry{reference, calibration});
+  return calibration;
+}
+
 double CalibratedErrorBound::bound(std::size_t index, const BezierPatch& live, int level) const {
   if (level < 1) throw std::invalid_argument("CalibratedErrorBound: level must be >= 1");
   const double scale = scale_.at(index)[static_cast<std::size_t>(std::min(level, kCalibratedLevels) - 1)];
@@ -212,10 +247,8 @@ void CalibratedErrorBound::levelsForScreenError(const std::vector<BezierPatch>& 
   const double error_per_distance = max_error_pixels / focalPixels(camera, max_error_pixels, max_level);
   levels.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
-    const BezierPatch& patch = patches[p];
-    const Eigen::Vector3d nearest = camera.position.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax());
-    const double distance = (nearest - camera.position).norm();
-    levels[p] = distance > 0.0 ? smallestLevel(p, errorBoundConstant(patch), error_per_distance * distance, max_level)
+    const double distance = distanceToPatchBounds(patches[p], camera.position);
+    levels[p] = distance > 0.0 ? smallestLevel(p, errorBoundConstant(patches[p]), error_per_distance * distance, max_level)
                                : max_level;
   }
 }

@@ -132,14 +132,14 @@ class HumanModel {
   Skin skin_;
   SkeletonPose pose_;
   Tessellator skin_tessellator_;
-  CalibratedErrorBound skin_error_bound_;
+  std::shared_ptr<const CalibratedErrorBound> skin_error_bound_;  // shared by humans of the same body
   // One garment of the outfit and what the model keeps of it between updates.
   struct DressedGarment {
     DressedGarment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape);
     Garment garment;
     std::unique_ptr<Tessellator> tessellator;  // by pointer: automatic_levels_ is keyed by it
     std::vector<BezierPatch> rest_patches;     // built in the rest pose
-    CalibratedErrorBound error_bound;          // calibrated on rest_patches
+    std::shared_ptr<const CalibratedErrorBound> error_bound;  // calibrated on rest_patches, shared
     VertexCompression compression;             // the per-vertex compression measure
     std::uint64_t compressed_layout = 0;       // Tessellator::layoutId() `compression` was prepared for
     std::vector<float> wrinkle_weights;        // per vertex, last levels used

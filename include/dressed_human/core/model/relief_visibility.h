@@ -20,9 +20,6 @@ namespace dressed_human {
 // features at a fraction of it. Throws std::invalid_argument for no patches.
 double typicalPatchSize(const std::vector<BezierPatch>& patches);
 
-// Pixels per metre at `distance` from `camera` (the focal length in pixels over the distance).
-double pixelsPerMetre(const CameraView& camera, double distance);
-
 class ReliefVisibility {
  public:
   static constexpr double kHidePixels = 2.0;
@@ -31,12 +28,11 @@ class ReliefVisibility {
   // `feature_size`: metres on the surface between neighbouring features of the relief (> 0).
   explicit ReliefVisibility(double feature_size);
 
-  // With `pixels_per_metre` at the human (pixelsPerMetre at its nearest point); returns shown().
+  // With `pixels_per_metre` at the human (pixelsPerMetre, tessellation.h, at its nearest point);
+  // returns shown().
   bool update(double pixels_per_metre);
   bool shown() const { return shown_; }
   double featureSize() const { return feature_size_; }
-  // Beyond this distance from `camera` the relief is hidden (for figures and documentation).
-  double hideDistance(const CameraView& camera) const;
 
  private:
   double feature_size_;

@@ -90,6 +90,13 @@ struct CameraView {
   double viewport_height_pixels;
 };
 
+// Pixels one metre covers at `distance` from `camera`, at the centre of the view: the focal length
+// in pixels, viewport height / (2 tan(fov / 2)), over the distance (at least 1 mm).
+double pixelsPerMetre(const CameraView& camera, double distance);
+// Distance from `eye` to the nearest point of the patch's control-net bounding box, which holds
+// the patch (0 inside it).
+double distanceToPatchBounds(const BezierPatch& patch, const Eigen::Vector3d& eye);
+
 // Conservative bound on the distance between the patch and its level-n triangulation (any
 // triangulation whose triangles span at most 1/n in u and in v, which ours guarantees). From the
 // control net's second differences, see the .cpp.
@@ -124,6 +131,9 @@ class CalibratedErrorBound {
 
   CalibratedErrorBound() = default;  // no patches: callers fall back to the a-priori bound
   explicit CalibratedErrorBound(const std::vector<BezierPatch>& reference);
+  // The calibration of `reference`, built once for as long as someone holds it: every human of
+  // the same body and outfit shares one (building it measures ~350,000 surface points).
+  static std::shared_ptr<const CalibratedErrorBound> shared(const std::vector<BezierPatch>& reference);
 
   std::size_t patchCount() const { return scale_.size(); }
   // Patch `index` (of the reference) as `live` is now, at `level` >= 1.
