@@ -26,6 +26,8 @@ cmake -S . -B build_sanitize -DDRESSED_HUMAN_CORE_ONLY=ON -DDRESSED_HUMAN_SANITI
 cmake --build build_sanitize -j"$jobs"
 
 status=0
+# A failure list left by an earlier run would be digested again at the end.
+rm -f build/Testing/Temporary/LastTestsFailed.log build_sanitize/Testing/Temporary/LastTestsFailed.log
 echo "== core tests under ASan+UBSan"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build_sanitize --output-on-failure -j"$jobs" || status=1
@@ -38,6 +40,8 @@ echo "== all tests (core gtests and rostests)"
 ctest --test-dir build --output-on-failure || status=1
 
 if [ "$status" -ne 0 ]; then
+  scripts/failure_digest.py build_sanitize || true
+  scripts/failure_digest.py build || true
   echo "scripts/test.sh: SOME TESTS FAILED" >&2
 fi
 exit "$status"
