@@ -186,6 +186,32 @@ TEST(SkeletonSuffix, IsDetectedFromTheRootLink) {
   EXPECT_EQ(skeleton.findBone("l_knee"), Skeleton::fromUrdf(urdfText()).findBone("l_knee"));
 }
 
+TEST(SkeletonSuffix, AnotherHumanOfTheTreeIsTheSuffixedUrdfsSkeleton) {
+  const Skeleton plain = Skeleton::fromUrdf(urdfText());
+  const std::string suffixed = std::regex_replace(urdfText(), std::regex("(link|name)=\"([a-z_]+)\""), "$1=\"$2_7\"");
+  const Skeleton parsed = Skeleton::fromUrdf(suffixed);
+  for (const Skeleton& renamed : {plain.withSuffix("_7"), parsed.withSuffix("_7")}) {
+    EXPECT_EQ(renamed.rootFrame(), "body_7");
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      EXPECT_EQ(renamed.joint(j).urdf_joints, parsed.joint(j).urdf_joints);
+      EXPECT_EQ(renamed.joint(j).intermediate_links, parsed.joint(j).intermediate_links);
+    }
+  }
+  const Skeleton back = parsed.withSuffix("");
+  EXPECT_EQ(back.frameName("l_knee"), "l_knee");
+  EXPECT_EQ(back.joint(3).urdf_joints, plain.joint(3).urdf_joints);
+  for (const char* bad : {"7", "_", "_a-b", "_7/x"}) {
+    EXPECT_THROW(plain.withSuffix(bad), SkeletonError) << bad;
+  }
+}
+
+TEST(SkeletonSuffix, HumansAmongFramesNeedTheirRootAndFirstBone) {
+  const std::vector<std::string> frames = {"world", "body", "waist", "body_3", "waist_3", "body_12",
+                                           "waist_12", "body_link", "body_9", "waist_x9", "body_-1", "waist_-1"};
+  EXPECT_EQ(humanSuffixesAmong(frames), (std::vector<std::string>{"", "_12", "_3"}));
+  EXPECT_TRUE(humanSuffixesAmong({"world", "map"}).empty());
+}
+
 TEST(SkeletonErrors, NameWhatDoesNotFit) {
   EXPECT_NE(skeletonErrorOf("").find("the URDF text is empty"), std::string::npos);
   EXPECT_NE(skeletonErrorOf("<robot name='x'><link name='a'/>").find("could not be parsed"), std::string::npos);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
 
 #include <urdf_model/model.h>
 #include <urdf_parser/urdf_parser.h>
@@ -89,6 +90,12 @@ urdf::LinkConstSharedPtr readArticulatedChain(const urdf::ModelInterface& model,
   return nullptr;  // unreachable: the loop returns at dof 0
 }
 
+bool validSuffix(const std::string& suffix) {
+  return suffix.empty() || (suffix.size() > 1 && suffix[0] == '_' &&
+                            std::all_of(suffix.begin() + 1, suffix.end(),
+                                        [](unsigned char c) { return std::isalnum(c) != 0; }));
+}
+
 void readBoneCylinder(const urdf::Link& link, Bone& bone) {
   for (const urdf::VisualSharedPtr& visual : link.visual_array) {
     if (!visual || !visual->geometry || visual->geometry->type != urdf::Geometry::CYLINDER) continue;
@@ -152,10 +159,7 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
   Skeleton skeleton;
   skeleton.suffix_ = root->name.substr(4);
   const std::string& suffix = skeleton.suffix_;
-  const bool suffix_ok = suffix.empty() || (suffix.size() > 1 && suffix[0] == '_' &&
-                                            std::all_of(suffix.begin() + 1, suffix.end(),
-                                                        [](unsigned char c) { return std::isalnum(c) != 0; }));
-  if (!suffix_ok) {
+  if (!validSuffix(suffix)) {
     throw SkeletonError("the URDF root link '" + root->name + "' must be 'body' or 'body_<id>' with an alphanumeric id");
   }
 
@@ -200,6 +204,32 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
     skeleton.bones_.push_back(bone);
   }
   return skeleton;
+}
+
+Skeleton Skeleton::withSuffix(const std::string& suffix) const {
+  if (!validSuffix(suffix)) {
+    throw SkeletonError("the frame suffix '" + suffix + "' must be empty or '_<id>' with an alphanumeric id");
+  }
+  Skeleton renamed = *this;
+  const auto rename = [&](std::string& name) { name = name.substr(0, name.size() - suffix_.size()) + suffix; };
+  for (ArticulatedJoint& joint : renamed.joints_) {
+    for (std::string& name : joint.urdf_joints) rename(name);
+    for (std::string& name : joint.intermediate_links) rename(name);
+  }
+  renamed.suffix_ = suffix;
+  return renamed;
+}
+
+std::vector<std::string> humanSuffixesAmong(const std::vector<std::string>& frames) {
+  const std::set<std::string> known(frames.begin(), frames.end());
+  const std::string first_bone = humanBoneLayout()[0].name;
+  std::vector<std::string> suffixes;
+  for (const std::string& frame : known) {
+    if (frame.rfind("body", 0) != 0) continue;
+    const std::string suffix = frame.substr(4);
+    if (validSuffix(suffix) && known.count(first_bone + suffix) != 0) suffixes.push_back(suffix);
+  }
+  return suffixes;  // sorted: the set is
 }
 
 int Skeleton::findBone(const std::string& name) const {

@@ -66,6 +66,10 @@ class Skeleton {
   const std::string& suffix() const { return suffix_; }            // "" or "_<id>"
   std::string frameName(const std::string& plain) const { return plain + suffix_; }
   std::string rootFrame() const { return frameName("body"); }
+  // The same skeleton for another human of one TF tree: every frame and URDF joint name with
+  // `suffix` ("" or "_<id>", id alphanumeric) instead of this one's. Throws SkeletonError for
+  // any other suffix.
+  Skeleton withSuffix(const std::string& suffix) const;
 
  private:
   std::vector<Bone> bones_;               // parents before children
@@ -80,5 +84,10 @@ struct BoneLayoutEntry {
   bool articulated;
 };
 const std::array<BoneLayoutEntry, kBoneCount>& humanBoneLayout();
+
+// The suffixes ("" or "_<id>") of every human among `frames` (e.g. every frame TF knows): a root
+// frame "body" or "body_<id>" with the first bone of the same suffix ("waist_<id>") beside it,
+// so that another robot's "body_link" is not taken for a human. Sorted, each once.
+std::vector<std::string> humanSuffixesAmong(const std::vector<std::string>& frames);
 
 }  // namespace dressed_human
