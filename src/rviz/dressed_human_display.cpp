@@ -2,33 +2,35 @@
 
 #include <cstdio>
 #include <ctime>
+#include <sstream>
 
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/package.h>
 #include <rviz/display_context.h>
+#include <rviz/frame_manager.h>
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
+#include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
-#include "human_visual.h"
+#include "drawn_human.h"
 #include "properties/body_properties.h"
+#include "properties/crowd_properties.h"
 #include "properties/debug_properties.h"
 #include "properties/garment_properties.h"
 #include "properties/lod_properties.h"
 #include "properties/relief_properties.h"
-#include "tf_bone_source.h"
 
 namespace dressed_human {
 namespace {
 
-// Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
-// (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
-constexpr double kMaxDrawableCoordinate = 1e5;
-
-bool drawable(const RigidTransform& pose) {
-  return pose.translation.allFinite() && pose.translation.cwiseAbs().maxCoeff() <= kMaxDrawableCoordinate &&
-         pose.rotation.coeffs().allFinite();
-}
+// A crowd display looks for new humans in TF this often, and drops a human whose TF has been
+// missing or stale this long (a stopped publisher, a pedestrian gone from the simulation).
+constexpr float kRosterSeconds = 1.0f;
+constexpr double kLostSeconds = 5.0;
+// A root frame this much older than now is not a walking human (TF keeps the last transform of a
+// stopped publisher for ever).
+constexpr double kFreshSeconds = 1.0;
 
 double threadCpuSeconds() {
   timespec t{};
@@ -36,18 +38,39 @@ double threadCpuSeconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// Every frame tf2 knows, from its public listing ("Frame <child> exists with parent <parent>.").
+std::vector<std::string> framesInTf(const tf2_ros::Buffer& buffer) {
+  std::vector<std::string> frames;
+  std::istringstream listing(buffer.allFramesAsString());
+  for (std::string word, frame; listing >> word;) {
+    if (word == "Frame" && listing >> frame) frames.push_back(frame);
+  }
+  return frames;
+}
+
+bool freshInTf(const tf2_ros::Buffer& buffer, const std::string& fixed, const std::string& frame) {
+  try {
+    const ros::Time stamp = buffer.lookupTransform(fixed, frame, ros::Time(0)).header.stamp;
+    return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= kFreshSeconds;
+  } catch (const tf2::TransformException&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 DressedHumanDisplay::DressedHumanDisplay()
     : body_properties_(new BodyProperties(this)),
+      crowd_properties_(new CrowdProperties(this)),
       garment_properties_(new GarmentProperties(this)),
       relief_properties_(new ReliefProperties(this)),
       lod_properties_(new LodProperties(this)),
       debug_properties_(new DebugProperties(this)) {
   connect(body_properties_.get(), SIGNAL(descriptionChanged()), this, SLOT(loadRobotDescription()));
   connect(body_properties_.get(), SIGNAL(shapeChanged()), this, SLOT(updateBodyShape()));
-  connect(body_properties_.get(), SIGNAL(skinColourChanged()), this, SLOT(rebuildModel()));
-  connect(garment_properties_.get(), SIGNAL(changed()), this, SLOT(rebuildModel()));
+  connect(body_properties_.get(), SIGNAL(skinColourChanged()), this, SLOT(rebuildHumans()));
+  connect(crowd_properties_.get(), SIGNAL(changed()), this, SLOT(loadCrowdFile()));
+  connect(garment_properties_.get(), SIGNAL(changed()), this, SLOT(rebuildHumans()));
   connect(relief_properties_.get(), SIGNAL(appearanceChanged()), this, SLOT(updateAppearance()));
   connect(relief_properties_.get(), SIGNAL(skinMapChanged()), this, SLOT(regenerateSkinRelief()));
   connect(lod_properties_.get(), SIGNAL(vertexEvaluationChanged()), this, SLOT(updateVertexEvaluation()));
@@ -69,9 +92,8 @@ void DressedHumanDisplay::load(const rviz::Config& config) {
 }
 
 void DressedHumanDisplay::onInitialize() {
+  ogre_ready_ = true;
   try {
-    visual_ = std::make_unique<HumanVisual>(scene_manager_, scene_node_, "dressed_human/" + getName().toStdString() +
-                                                                           "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
     status_.clear("Material");
     ReliefMaterial::bezierEvaluationAvailable(&gpu_vertices_problem_);
     software_renderer_ = ReliefMaterial::softwareRenderer();
@@ -79,133 +101,204 @@ void DressedHumanDisplay::onInitialize() {
     status_.error("Material", error.what());
   }
   garment_properties_->updateVisibility();
-  loadRobotDescription();
+  crowd_properties_->updateVisibility();
   regenerateSkinRelief();
   relief_jobs_.startCloth();
+  loadCrowdFile();  // and the robot description, and every human
 }
 
 void DressedHumanDisplay::onEnable() {
-  if (visual_) visual_->setVisible(true);
+  for (auto& human : humans_) human.second->visual().setVisible(true);
 }
 
 void DressedHumanDisplay::onDisable() {
-  if (visual_) visual_->setVisible(false);
+  for (auto& human : humans_) human.second->visual().setVisible(false);
 }
 
 void DressedHumanDisplay::reset() {
   rviz::Display::reset();  // clears the statuses; TF problems report themselves again
   status_.forget();
-  surfaces_reported_ = {kNotReported, kNotReported};
-  undrawable_frame_.clear();  // judged again, and reported again, at the next frame
-  if (visual_) visual_->setVisible(isEnabled());
-  loadRobotDescription();
+  surfaces_reported_ = {};
+  loadRobotDescription();  // every human again, judged and reported again at the next frame
 }
 
 void DressedHumanDisplay::fixedFrameChanged() { context_->queueRender(); }
 
 void DressedHumanDisplay::loadRobotDescription() {
-  model_.reset();
   body_.reset();
-  bone_source_.reset();
   skeleton_.reset();
   const std::string parameter = body_properties_->descriptionParameter();
   std::string urdf;
   if (parameter.empty() || !update_nh_.getParam(parameter, urdf)) {
     status_.error("URDF", "parameter '" + parameter + "' is not set");
-    return;
+    return rebuildHumans();
   }
   try {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
-    bone_source_ = std::make_unique<TfBoneSource>(*skeleton_);
     setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones");
   } catch (const std::exception& error) {
     status_.error("URDF", "parameter '" + parameter + "': " + error.what());
-    return;
+    return rebuildHumans();
   }
   try {
     body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_properties_->bodyFile(), *skeleton_));
+    shape_ = body_->shape;
     status_.clear("Body Description");
   } catch (const std::exception& error) {
     status_.error("Body Description", error.what());
-    return;
   }
   updateBodyShape();
 }
 
 void DressedHumanDisplay::updateBodyShape() {
-  if (!body_ || !skeleton_) return;
-  try {
-    shape_ = scaleBodyShapeGroups(body_->shape, *skeleton_, body_properties_->shapeGroups());
-  } catch (const ShapeGroupScaleError& error) {
-    status_.error("Body Shape", body_properties_->shapeGroupLabel(error.entry) + ": " + error.what() +
-                                    "; keeping the previous shape");
-    return;
+  if (body_ && skeleton_) {
+    try {
+      shape_ = scaleBodyShapeGroups(body_->shape, *skeleton_, body_properties_->shapeGroups());
+      status_.clear("Body Shape");
+    } catch (const ShapeGroupScaleError& error) {
+      status_.error("Body Shape", body_properties_->shapeGroupLabel(error.entry) + ": " + error.what() +
+                                      "; keeping the previous shape");
+      return;
+    }
   }
-  status_.clear("Body Shape");
-  rebuildModel();
+  rebuildHumans();
 }
 
-void DressedHumanDisplay::rebuildModel() {
-  if (!skeleton_ || !body_) return;
+void DressedHumanDisplay::loadCrowdFile() {
+  crowd_file_.clear();
+  const std::string path = crowd_properties_->crowdFile();
+  if (crowd_properties_->everyHumanInTf() && !path.empty()) {
+    try {
+      crowd_file_ = dressed_human::loadCrowdFile(path);
+      status_.clear("Crowd File");
+    } catch (const CrowdFileError& error) {
+      status_.error("Crowd File", std::string(error.what()) + "; humans wear what the display's properties say");
+    }
+  } else {
+    status_.clear("Crowd File");
+  }
+  loadRobotDescription();
+}
+
+void DressedHumanDisplay::rebuildHumans() {
+  while (!humans_.empty()) removeHuman(humans_.begin());
+  deleteStatus("Humans");
+  if (!skeleton_ || !body_ || !ogre_ready_) return context_->queueRender();
+  if (crowd_properties_->everyHumanInTf()) {
+    lookForHumans();
+  } else {
+    addHuman(skeleton_->suffix());
+  }
+  context_->queueRender();
+}
+
+HumanModelSettings DressedHumanDisplay::settingsFor(const std::string& suffix) const {
   HumanModelSettings settings;
   settings.skin_colour = body_properties_->skinColour();
   settings.garment_directory = ros::package::getPath("dressed_human") + "/config/garments";
+  garment_properties_->apply(settings);
+  if (crowd_properties_->everyHumanInTf()) {
+    const std::string id = suffix.empty() ? std::string() : suffix.substr(1);
+    const auto listed = crowd_file_.find(id);
+    if (crowd_properties_->varyUnlisted()) variedAppearance(id).applyTo(settings);
+    if (listed != crowd_file_.end()) listed->second.applyTo(settings);
+  }
+  return settings;
+}
+
+void DressedHumanDisplay::addHuman(const std::string& suffix) {
+  const bool crowd = crowd_properties_->everyHumanInTf();
+  const std::string label = crowd ? "body" + suffix : std::string();
+  const std::string model_status = crowd ? "Model " + label : "Model";
   try {
-    garment_properties_->apply(settings);
     BodyDescription shaped = *body_;
     shaped.shape = shape_;
-    model_ = std::make_unique<HumanModel>(*skeleton_, shaped, settings);
-    kinematics_ = std::make_unique<ForwardKinematics>(*skeleton_, shape_);
-    status_.clear("Model");
-    resetReliefVisibility();
-    updateVertexEvaluation();
+    auto human = std::make_unique<DrawnHuman>(
+        skeleton_->withSuffix(suffix), shaped, settingsFor(suffix), scene_manager_, scene_node_,
+        "dressed_human/" + getName().toStdString() + "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
+            "/" + std::to_string(humans_created_++),
+        label);
+    DrawnHuman& added = *(humans_[suffix] = std::move(human));
+    configure(added, humans_.size() == 1);
+    status_.clear(model_status);
   } catch (const std::exception& error) {
-    model_.reset();
-    status_.error("Model", error.what());
+    status_.error(model_status, error.what());
   }
-  applyDisplacement();
-  context_->queueRender();
+}
+
+void DressedHumanDisplay::configure(DrawnHuman& human, bool report) {
+  human.visual().setVisible(isEnabled());
+  for (const FinishedReliefMap& done : normal_maps_) {
+    if (done.map) human.visual().setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
+  }
+  human.resetReliefVisibility(relief_properties_->skinParameters().cell_size);
+  applyVertexEvaluation(human, report);
+  applyAppearance(human);
+}
+
+void DressedHumanDisplay::lookForHumans() {
+  seconds_since_roster_ = 0.0f;
+  if (!skeleton_ || !body_) return;
+  const std::shared_ptr<tf2_ros::Buffer> buffer = context_->getFrameManager()->getTF2BufferPtr();
+  const std::string& fixed = context_->getFrameManager()->getFixedFrame();
+  for (const std::string& suffix : humanSuffixesAmong(framesInTf(*buffer))) {
+    if (humans_.count(suffix) == 0 && freshInTf(*buffer, fixed, "body" + suffix)) addHuman(suffix);
+  }
+  setStatusStd(rviz::StatusProperty::Ok, "Humans", std::to_string(humans_.size()) + " in TF");
+}
+
+void DressedHumanDisplay::dropLostHumans() {
+  const ros::WallTime now = ros::WallTime::now();
+  for (auto human = humans_.begin(); human != humans_.end();) {
+    const auto next = std::next(human);
+    if ((now - human->second->lastSeen()).toSec() > kLostSeconds) removeHuman(human);
+    human = next;
+  }
+}
+
+void DressedHumanDisplay::removeHuman(std::map<std::string, std::unique_ptr<DrawnHuman>>::iterator human) {
+  human->second->clearStatuses(status_);
+  humans_.erase(human);
 }
 
 void DressedHumanDisplay::updateVertexEvaluation() {
-  if (!model_) return;
+  for (auto& human : humans_) applyVertexEvaluation(*human.second, human.first == humans_.begin()->first);
+  context_->queueRender();
+}
+
+void DressedHumanDisplay::applyVertexEvaluation(DrawnHuman& human, bool report) {
   const LodProperties::VertexChoice choice =
-      lod_properties_->chooseVertexEvaluation(*model_, gpu_vertices_problem_, software_renderer_);
+      lod_properties_->chooseVertexEvaluation(human.model(), gpu_vertices_problem_, software_renderer_);
+  human.model().setVertexEvaluation(choice.evaluation);
+  if (!report) return;  // every human makes the same choice: one status says it
   if (choice.status.empty()) {
     deleteStatus("Vertex Evaluation");
   } else {
-    setStatusStd(choice.warn ? rviz::StatusProperty::Warn : rviz::StatusProperty::Ok, "Vertex Evaluation", choice.status);
+    setStatusStd(choice.warn ? rviz::StatusProperty::Warn : rviz::StatusProperty::Ok, "Vertex Evaluation",
+                 choice.status);
     if (choice.warn) {
-      ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': Vertex Evaluation: %s", getName().toStdString().c_str(),
-                     choice.status.c_str());
+      ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': Vertex Evaluation: %s",
+                     getName().toStdString().c_str(), choice.status.c_str());
     }
   }
-  model_->setVertexEvaluation(choice.evaluation);
-  context_->queueRender();
 }
 
 void DressedHumanDisplay::updateAppearance() {
-  applyDisplacement();
-  if (!visual_) return;
-  const bool bump = relief_properties_->mode() == ReliefMode::kBumpMapping;
   relief_properties_->updateVisibility();
-  // Displaced geometry carries its relief in the mesh normals: the shader must not add it again.
-  visual_->setReliefStrength(ReliefKind::kSkin, bump ? relief_properties_->skinStrength() : 0.0f);
-  visual_->setReliefStrength(ReliefKind::kCloth, bump ? relief_properties_->wrinkleStrength() : 0.0f);
-  visual_->setSkeletonVisible(debug_properties_->showSkeleton());
+  for (auto& human : humans_) applyAppearance(*human.second);
   context_->queueRender();
 }
 
-void DressedHumanDisplay::applyDisplacement() {
-  if (!model_) return;
-  const bool displaced = relief_properties_->mode() == ReliefMode::kDisplacedGeometry;
+void DressedHumanDisplay::applyAppearance(DrawnHuman& human) {
+  const bool bump = relief_properties_->mode() == ReliefMode::kBumpMapping;
+  // Displaced geometry carries its relief in the mesh normals: the shader must not add it again.
+  HumanVisual& visual = human.visual();
+  visual.setReliefStrength(ReliefKind::kSkin, bump ? relief_properties_->skinStrength() : 0.0f);
+  visual.setReliefStrength(ReliefKind::kCloth, bump ? relief_properties_->wrinkleStrength() : 0.0f);
+  visual.setSkeletonVisible(debug_properties_->showSkeleton());
   try {
-    // Until a map has been built its kind stays undisplaced; the poll that delivers it calls
-    // back here.
-    model_->setDisplacement(ReliefKind::kSkin, displaced ? relief_jobs_.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f,
-                            relief_properties_->skinStrength());
-    model_->setDisplacement(ReliefKind::kCloth, displaced ? relief_jobs_.map(ReliefKind::kCloth) : nullptr, 1.0f,
-                            ReliefMapJobs::clothHeightToTile(), relief_properties_->wrinkleStrength());
+    human.setDisplacement(relief_jobs_, relief_properties_->mode() == ReliefMode::kDisplacedGeometry,
+                          relief_properties_->skinStrength(), relief_properties_->wrinkleStrength());
     status_.clear("Relief");
   } catch (const std::exception& error) {
     status_.error("Relief", error.what());
@@ -215,43 +308,17 @@ void DressedHumanDisplay::applyDisplacement() {
 void DressedHumanDisplay::regenerateSkinRelief() {
   // Built off rviz's thread; a change meanwhile is built when the running map is done.
   relief_jobs_.requestSkin(relief_properties_->skinParameters());
-  resetReliefVisibility();
-}
-
-void DressedHumanDisplay::resetReliefVisibility() {
-  if (!model_) return;
-  // Both reliefs are tiled once per patch: skin cells at the cell size's fraction of a tile,
-  // cloth folds about half a buckling cell apart (cells_around cells per tile).
-  const double skin = model_->reliefTileSize(ReliefKind::kSkin) * relief_properties_->skinParameters().cell_size;
-  const double cloth = model_->reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around);
-  relief_visibility_[0] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
-  relief_visibility_[1] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
-  if (visual_) {
-    visual_->setReliefShown(ReliefKind::kSkin, true);
-    visual_->setReliefShown(ReliefKind::kCloth, true);
-  }
-}
-
-void DressedHumanDisplay::updateReliefVisibility(const Ogre::Camera* camera) {
-  const Eigen::AlignedBox3f bounds = model_->bounds();
-  const bool judged = camera != nullptr && lod_properties_->hideUnseenRelief() && !bounds.isEmpty() &&
-                      relief_properties_->mode() == ReliefMode::kBumpMapping;
-  double pixels_per_metre = 0.0;  // at the human's nearest point
-  if (judged) {
-    const CameraView view = LodProperties::cameraView(*camera);
-    pixels_per_metre = pixelsPerMetre(view, bounds.cast<double>().exteriorDistance(view.position));
-  }
-  for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
-    std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
-    if (visibility) visual_->setReliefShown(kind, judged ? visibility->update(pixels_per_metre) : true);
-  }
+  for (auto& human : humans_) human.second->resetReliefVisibility(relief_properties_->skinParameters().cell_size);
 }
 
 void DressedHumanDisplay::pollReliefMaps() {
   for (const FinishedReliefMap& done : relief_jobs_.poll()) {
     const std::string status = done.kind == ReliefKind::kSkin ? "Skin relief" : "Wrinkle relief";
     if (done.map) {
-      if (visual_) visual_->setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
+      normal_maps_[done.kind == ReliefKind::kSkin ? 0 : 1] = done;
+      for (auto& human : humans_) {
+        human.second->visual().setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
+      }
       status_.clear(status);
     } else {
       status_.error(status, done.error);
@@ -260,9 +327,9 @@ void DressedHumanDisplay::pollReliefMaps() {
   }
 }
 
-void DressedHumanDisplay::update(float, float) {
+void DressedHumanDisplay::update(float wall_dt, float) {
   const double start = threadCpuSeconds();
-  updateSurfaces();
+  updateSurfaces(wall_dt);
   reportUpdateCost(threadCpuSeconds() - start);
 }
 
@@ -277,67 +344,44 @@ void DressedHumanDisplay::reportUpdateCost(double cpu_seconds) {
   update_count_ = 0;
 }
 
-void DressedHumanDisplay::updateSurfaces() {
+void DressedHumanDisplay::updateSurfaces(float wall_dt) {
   pollReliefMaps();
-  if (!model_ || !visual_ || !bone_source_->lookUp(*context_->getFrameManager(), status_)) return;
-  // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
-  kinematics_->composeUnshaped(bone_source_->root(), bone_source_->bonesInParent(), bones_);
-  if (!posesDrawable()) return;
-  LevelOfDetail lod;
+  if (crowd_properties_->everyHumanInTf() && (seconds_since_roster_ += wall_dt) >= kRosterSeconds) {
+    dropLostHumans();
+    lookForHumans();
+  }
   const rviz::ViewController* view = context_->getViewManager()->getCurrent();
-  if (relief_properties_->mode() == ReliefMode::kDisplacedGeometry) {
+  const Ogre::Camera* camera = view ? view->getCamera() : nullptr;
+  LevelOfDetail lod;
+  const bool displaced = relief_properties_->mode() == ReliefMode::kDisplacedGeometry;
+  if (displaced) {
     lod.level = relief_properties_->displacementLevel();  // relief in the geometry needs vertices at its scale
   } else {
-    lod = lod_properties_->levelOfDetail(view ? view->getCamera() : nullptr);
+    lod = lod_properties_->levelOfDetail(camera);
   }
-  try {
-    model_->update(bone_source_->root(), bones_, lod);
-    visual_->update(model_->parts());
-    updateReliefVisibility(view ? view->getCamera() : nullptr);
-    visual_->updateSkeleton(*kinematics_, bones_);
-    const std::array<std::size_t, 2> surfaces{model_->parts().size(), model_->triangleCount()};
-    if (surfaces != surfaces_reported_) {
-      setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
-                   std::to_string(surfaces[0]) + " parts, " + std::to_string(surfaces[1]) + " triangles");
-      surfaces_reported_ = surfaces;
+  const bool hide_unseen_relief = lod_properties_->hideUnseenRelief() && !displaced;
+  std::size_t parts = 0, triangles = 0;
+  for (auto& human : humans_) {
+    try {
+      if (!human.second->update(*context_->getFrameManager(), status_, lod, camera, hide_unseen_relief)) continue;
+    } catch (const std::exception& error) {
+      surfaces_reported_ = {};
+      status_.error("Surfaces", human.second->rootFrame() + ": " + error.what());
+      continue;
     }
-  } catch (const std::exception& error) {
-    surfaces_reported_ = {kNotReported, kNotReported};
-    status_.error("Surfaces", error.what());
+    parts += human.second->model().parts().size();
+    triangles += human.second->model().triangleCount();
   }
+  reportSurfaces(humans_.size(), parts, triangles);
 }
 
-bool DressedHumanDisplay::posesDrawable() {
-  // A glitching publisher (a huge origin, a runaway integration) must not take rviz down: Ogre
-  // asserts on non-finite bounds. The human disappears, the frame is named, and it comes back
-  // with sane TF.
-  std::string frame;
-  const RigidTransform* pose = nullptr;
-  if (!drawable(bone_source_->root())) frame = bone_source_->rootFrame(), pose = &bone_source_->root();
-  for (std::size_t b = 0; pose == nullptr && b < kBoneCount; ++b) {
-    if (!drawable(bones_[b])) frame = bone_source_->boneFrame(b), pose = &bones_[b];
-  }
-  if (pose == nullptr) {
-    if (!undrawable_frame_.empty()) {
-      status_.clear("Pose");
-      visual_->setVisible(true);
-      undrawable_frame_.clear();
-    }
-    return true;
-  }
-  if (undrawable_frame_ != frame) {
-    char position[96];
-    std::snprintf(position, sizeof(position), "(%.2g, %.2g, %.2g) m", pose->translation.x(), pose->translation.y(),
-                  pose->translation.z());
-    const bool finite = pose->translation.allFinite() && pose->rotation.coeffs().allFinite();
-    status_.error("Pose", "frame '" + frame + "' in '" + fixed_frame_.toStdString() + "' is " +
-                              (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
-                                      : std::string("not finite")) +
-                              "; the human is hidden until its TF is sane again");
-    undrawable_frame_ = frame;
-  }
-  visual_->setVisible(false);  // every frame: enabling the display again must not show it
-  return false;
+void DressedHumanDisplay::reportSurfaces(std::size_t humans, std::size_t parts, std::size_t triangles) {
+  const std::array<std::size_t, 3> surfaces{humans, parts, triangles};
+  if (surfaces == surfaces_reported_ || parts == 0) return;
+  const std::string drawn = crowd_properties_->everyHumanInTf() ? std::to_string(humans) + " humans, " : "";
+  setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
+               drawn + std::to_string(parts) + " parts, " + std::to_string(triangles) + " triangles");
+  surfaces_reported_ = surfaces;
 }
 
 }  // namespace dressed_human

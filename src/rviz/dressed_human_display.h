@@ -1,33 +1,31 @@
 #pragma once
-// rviz display "dressed_human/DressedHuman": skin and garments of one human, attached to the
-// skeleton's TF frames. Shaped like rviz's RobotModelDisplay: the display owns the properties
-// (grouped by concern, properties/) and reads TF (TfBoneSource); the core's HumanModel turns bone
-// frames into surfaces; HumanVisual owns every Ogre object.
+// rviz display "dressed_human/DressedHuman": skin and garments of one human, or of every human
+// in TF, attached to the skeleton's TF frames. Shaped like rviz's RobotModelDisplay: the display
+// owns the properties (grouped by concern, properties/) and what its humans share (skeleton, body, relief maps); each
+// human (DrawnHuman) reads its bones from TF, turns them into surfaces (the core's HumanModel)
+// and owns its Ogre objects (HumanVisual).
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 
 #include <rviz/display.h>
 
+#include "dressed_human/core/model/crowd_appearance.h"
 #include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/model/relief_map_jobs.h"
-#include "dressed_human/core/model/relief_visibility.h"
 #include "display_status.h"
-
-namespace Ogre {
-class Camera;
-}  // namespace Ogre
 
 namespace dressed_human {
 
 class BodyProperties;
+class CrowdProperties;
 class DebugProperties;
+class DrawnHuman;
 class GarmentProperties;
-class HumanVisual;
 class LodProperties;
 class ReliefProperties;
-class TfBoneSource;
 
 class DressedHumanDisplay : public rviz::Display {
   Q_OBJECT
@@ -48,26 +46,35 @@ class DressedHumanDisplay : public rviz::Display {
  private Q_SLOTS:
   void loadRobotDescription();
   void updateBodyShape();
-  void rebuildModel();
+  void loadCrowdFile();
+  void rebuildHumans();
   void updateVertexEvaluation();
   void updateAppearance();
   void regenerateSkinRelief();
 
  private:
+  // A human of the robot description's skeleton with `suffix` ("" or "_<id>") on its frames,
+  // dressed and coloured as the properties (and, for a crowd, the crowd file) say.
+  void addHuman(const std::string& suffix);
+  HumanModelSettings settingsFor(const std::string& suffix) const;
+  // Crowd: adds each human TF carries that the display lacks, and drops each one whose TF stopped.
+  void lookForHumans();
+  void dropLostHumans();
+  void removeHuman(std::map<std::string, std::unique_ptr<DrawnHuman>>::iterator human);
+  // A new human: the vertex evaluation (`report`: in the status), appearance, maps and
+  // displacement the properties ask for.
+  void configure(DrawnHuman& human, bool report);
+  void applyVertexEvaluation(DrawnHuman& human, bool report);
+  // Relief strengths, skeleton lines and displacement.
+  void applyAppearance(DrawnHuman& human);
   void pollReliefMaps();
-  void applyDisplacement();
-  void updateSurfaces();
-  // Whether every bone pose TF gave can be drawn; if not, hides the human and names the frame.
-  bool posesDrawable();
+  void updateSurfaces(float wall_dt);
+  void reportSurfaces(std::size_t humans, std::size_t parts, std::size_t triangles);
   void reportUpdateCost(double cpu_seconds);
-  // Feature sizes of the two reliefs on this model (ReliefVisibility), after a model or skin
-  // relief change.
-  void resetReliefVisibility();
-  // Per frame: the plain material for a relief whose features are under two pixels.
-  void updateReliefVisibility(const Ogre::Camera* camera);
 
   // The properties, by concern; each group owns its rviz properties (children of this display).
   std::unique_ptr<BodyProperties> body_properties_;
+  std::unique_ptr<CrowdProperties> crowd_properties_;
   std::unique_ptr<GarmentProperties> garment_properties_;
   std::unique_ptr<ReliefProperties> relief_properties_;
   std::unique_ptr<LodProperties> lod_properties_;
@@ -76,22 +83,21 @@ class DressedHumanDisplay : public rviz::Display {
   // Why the Bezier vertex shader cannot run here (empty: it can).
   std::string gpu_vertices_problem_ = "the relief material did not load";
   std::string software_renderer_;  // the GL renderer if it rasterizes on the CPU (llvmpipe)
+  bool ogre_ready_ = false;        // onInitialize() ran: humans may create Ogre objects
 
-  std::unique_ptr<Skeleton> skeleton_;
-  std::unique_ptr<TfBoneSource> bone_source_;  // the skeleton's frames in TF
-  std::unique_ptr<BodyDescription> body_;      // as the body file says
-  BodyShape shape_;                            // the file's shape times the Body Shape properties
-  std::unique_ptr<ForwardKinematics> kinematics_;  // skeleton_ with shape_, composing TF's bones
-  std::unique_ptr<HumanModel> model_;
-  std::unique_ptr<HumanVisual> visual_;
-  // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode.
+  std::unique_ptr<Skeleton> skeleton_;     // the robot description's; each human's carries its suffix
+  std::unique_ptr<BodyDescription> body_;  // as the body file says
+  BodyShape shape_;                        // the file's shape times the Body Shape properties
+  std::map<std::string, HumanAppearance> crowd_file_;  // by human id
+  std::map<std::string, std::unique_ptr<DrawnHuman>> humans_;  // by frame suffix
+  std::size_t humans_created_ = 0;  // names each human's Ogre objects apart
+  float seconds_since_roster_ = 0.0f;  // since lookForHumans()
+  // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode. The
+  // newest normal map of each kind goes to every human, those added later too.
   ReliefMapJobs relief_jobs_;
-  std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
-  std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
-  std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts
-  // (parts, triangles) the "Surfaces" status says: the text is rebuilt only when they change.
-  static constexpr std::size_t kNotReported = static_cast<std::size_t>(-1);
-  std::array<std::size_t, 2> surfaces_reported_{kNotReported, kNotReported};
+  std::array<FinishedReliefMap, 2> normal_maps_;  // by ReliefKind
+  // (humans, parts, triangles) the "Surfaces" status says: rebuilt only when they change.
+  std::array<std::size_t, 3> surfaces_reported_{};
   double update_cpu_seconds_ = 0.0;
   int update_count_ = 0;
 };

@@ -23,7 +23,8 @@ RigidTransform toRigid(const geometry_msgs::Transform& t) {
 
 }  // namespace
 
-TfBoneSource::TfBoneSource(const Skeleton& skeleton) : skeleton_(skeleton) {
+TfBoneSource::TfBoneSource(const Skeleton& skeleton, const std::string& label)
+    : skeleton_(skeleton), stale_status_name_(label.empty() ? "TF" : "TF " + label) {
   for (const Bone& bone : skeleton_.bones()) {
     bone_frames_.push_back(skeleton_.frameName(bone.name));
     bone_status_names_.push_back("Frame " + bone_frames_.back());
@@ -66,11 +67,17 @@ bool TfBoneSource::lookUp(rviz::FrameManager& frames, DisplayStatus& status) {
   }
   const double age = (ros::Time::now() - stamp).toSec();
   if (!stamp.isZero() && age > kStaleSeconds) {
-    status.warn("TF", "the newest skeleton transform is " + std::to_string(age) + " s old");
+    status.warn(stale_status_name_, "the newest skeleton transform is " + std::to_string(age) + " s old");
   } else {
-    status.clear("TF");
+    status.clear(stale_status_name_);
   }
   return found || lookUpAt(*buffer, stamp, true, status);
+}
+
+void TfBoneSource::clearStatuses(DisplayStatus& status) const {
+  status.clear(root_status_name_);
+  status.clear(stale_status_name_);
+  for (const std::string& name : bone_status_names_) status.clear(name);
 }
 
 ros::Time TfBoneSource::leafStamp(const tf2_ros::Buffer& buffer, const std::string& fixed,

@@ -25,7 +25,8 @@ class DisplayStatus;
 
 class TfBoneSource {
  public:
-  explicit TfBoneSource(const Skeleton& skeleton);
+  // `label` tells this human's "TF" status apart from other humans' of one display ("TF <label>").
+  explicit TfBoneSource(const Skeleton& skeleton, const std::string& label = "");
 
   // Looks up the root and every bone at one stamp; false (and the failing frames reported) if
   // any is missing. Clears the statuses of frames found again.
@@ -36,6 +37,8 @@ class TfBoneSource {
   const std::array<RigidTransform, kBoneCount>& bonesInParent() const { return bone_in_parent_; }
   const std::string& rootFrame() const { return root_frame_; }
   const std::string& boneFrame(std::size_t bone) const { return bone_frames_[bone]; }
+  // Removes every status lookUp() set.
+  void clearStatuses(DisplayStatus& status) const;
 
  private:
   // Every bone at `stamp`; false at the first failure, or (report) after reporting each one.
@@ -51,6 +54,7 @@ class TfBoneSource {
   std::vector<std::string> bone_status_names_;
   std::string root_frame_;
   std::string root_status_name_;
+  std::string stale_status_name_;  // "TF" or "TF <label>"
   RigidTransform root_;
   std::array<RigidTransform, kBoneCount> bone_in_parent_;
 };

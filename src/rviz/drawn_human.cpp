@@ -1,0 +1,121 @@
+#include "drawn_human.h"
+
+#include <cstdio>
+
+#include <rviz/frame_manager.h>
+
+#include "display_status.h"
+#include "properties/lod_properties.h"
+
+namespace dressed_human {
+namespace {
+
+// Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
+// (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
+constexpr double kMaxDrawableCoordinate = 1e5;
+
+bool drawable(const RigidTransform& pose) {
+  return pose.translation.allFinite() && pose.translation.cwiseAbs().maxCoeff() <= kMaxDrawableCoordinate &&
+         pose.rotation.coeffs().allFinite();
+}
+
+}  // namespace
+
+DrawnHuman::DrawnHuman(const Skeleton& skeleton, const BodyDescription& shaped_body, const HumanModelSettings& settings,
+                       Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& ogre_prefix,
+                       const std::string& label)
+    : bone_source_(skeleton, label),
+      kinematics_(skeleton, shaped_body.shape),
+      model_(skeleton, shaped_body, settings),
+      visual_(scene_manager, parent, ogre_prefix),
+      pose_status_(label.empty() ? "Pose" : "Pose " + label),
+      last_seen_(ros::WallTime::now()) {}
+
+DrawnHuman::~DrawnHuman() = default;
+
+bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod,
+                        const Ogre::Camera* camera, bool hide_unseen_relief) {
+  if (!bone_source_.lookUp(frames, status)) return false;
+  last_seen_ = ros::WallTime::now();
+  // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
+  kinematics_.composeUnshaped(bone_source_.root(), bone_source_.bonesInParent(), bones_);
+  if (!posesDrawable(status, frames.getFixedFrame())) return false;
+  model_.update(bone_source_.root(), bones_, lod);
+  visual_.update(model_.parts());
+  updateReliefVisibility(camera, hide_unseen_relief);
+  visual_.updateSkeleton(kinematics_, bones_);
+  return true;
+}
+
+void DrawnHuman::resetReliefVisibility(double skin_cell_size) {
+  // Both reliefs are tiled once per patch: skin cells at the cell size's fraction of a tile,
+  // cloth folds about half a buckling cell apart (cells_around cells per tile).
+  const double skin = model_.reliefTileSize(ReliefKind::kSkin) * skin_cell_size;
+  const double cloth = model_.reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around);
+  relief_visibility_[0] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
+  relief_visibility_[1] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
+  visual_.setReliefShown(ReliefKind::kSkin, true);
+  visual_.setReliefShown(ReliefKind::kCloth, true);
+}
+
+void DrawnHuman::setDisplacement(const ReliefMapJobs& jobs, bool displaced, float skin_strength,
+                                 float wrinkle_strength) {
+  // Until a map has been built its kind stays undisplaced; the display calls again when it comes.
+  model_.setDisplacement(ReliefKind::kSkin, displaced ? jobs.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f, skin_strength);
+  model_.setDisplacement(ReliefKind::kCloth, displaced ? jobs.map(ReliefKind::kCloth) : nullptr, 1.0f,
+                         ReliefMapJobs::clothHeightToTile(), wrinkle_strength);
+}
+
+void DrawnHuman::clearStatuses(DisplayStatus& status) {
+  bone_source_.clearStatuses(status);
+  status.clear(pose_status_);
+}
+
+void DrawnHuman::updateReliefVisibility(const Ogre::Camera* camera, bool judged) {
+  const Eigen::AlignedBox3f bounds = model_.bounds();
+  judged = judged && camera != nullptr && !bounds.isEmpty();
+  double pixels_per_metre = 0.0;  // at the human's nearest point
+  if (judged) {
+    const CameraView view = LodProperties::cameraView(*camera);
+    pixels_per_metre = pixelsPerMetre(view, bounds.cast<double>().exteriorDistance(view.position));
+  }
+  for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
+    std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
+    if (visibility) visual_.setReliefShown(kind, judged ? visibility->update(pixels_per_metre) : true);
+  }
+}
+
+bool DrawnHuman::posesDrawable(DisplayStatus& status, const std::string& fixed_frame) {
+  // A glitching publisher (a huge origin, a runaway integration) must not take rviz down: Ogre
+  // asserts on non-finite bounds. The human disappears, the frame is named, and it comes back
+  // with sane TF.
+  std::string frame;
+  const RigidTransform* pose = nullptr;
+  if (!drawable(bone_source_.root())) frame = bone_source_.rootFrame(), pose = &bone_source_.root();
+  for (std::size_t b = 0; pose == nullptr && b < kBoneCount; ++b) {
+    if (!drawable(bones_[b])) frame = bone_source_.boneFrame(b), pose = &bones_[b];
+  }
+  if (pose == nullptr) {
+    if (!undrawable_frame_.empty()) {
+      status.clear(pose_status_);
+      visual_.setVisible(true);
+      undrawable_frame_.clear();
+    }
+    return true;
+  }
+  if (undrawable_frame_ != frame) {
+    char position[96];
+    std::snprintf(position, sizeof(position), "(%.2g, %.2g, %.2g) m", pose->translation.x(), pose->translation.y(),
+                  pose->translation.z());
+    const bool finite = pose->translation.allFinite() && pose->rotation.coeffs().allFinite();
+    status.error(pose_status_, "frame '" + frame + "' in '" + fixed_frame + "' is " +
+                                   (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
+                                           : std::string("not finite")) +
+                                   "; the human is hidden until its TF is sane again");
+    undrawable_frame_ = frame;
+  }
+  visual_.setVisible(false);  // every frame: enabling the display again must not show it
+  return false;
+}
+
+}  // namespace dressed_human

@@ -1,0 +1,80 @@
+#pragma once
+// One human a DressedHuman display draws: its bones from TF (TfBoneSource), its surfaces (the
+// core's HumanModel) and its Ogre objects (HumanVisual). A display draws one (its robot
+// description's) or every human in TF, each a DrawnHuman; what they share (properties, relief
+// maps, the body file) stays in the display.
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include <ros/time.h>
+
+#include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/model/relief_map_jobs.h"
+#include "dressed_human/core/model/relief_visibility.h"
+#include "human_visual.h"
+#include "tf_bone_source.h"
+
+namespace Ogre {
+class Camera;
+class SceneManager;
+class SceneNode;
+}  // namespace Ogre
+namespace rviz {
+class FrameManager;
+}  // namespace rviz
+
+namespace dressed_human {
+
+class DisplayStatus;
+
+class DrawnHuman {
+ public:
+  // `skeleton` names this human's frames; `label` tells its statuses apart from other humans' of
+  // the display ("" for a display's only human, else its root frame). Throws what HumanModel
+  // throws (a garment or body file that does not fit).
+  DrawnHuman(const Skeleton& skeleton, const BodyDescription& shaped_body, const HumanModelSettings& settings,
+             Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& ogre_prefix,
+             const std::string& label);
+  ~DrawnHuman();
+  DrawnHuman(const DrawnHuman&) = delete;
+  DrawnHuman& operator=(const DrawnHuman&) = delete;
+
+  HumanModel& model() { return model_; }
+  HumanVisual& visual() { return visual_; }
+  const std::string& rootFrame() const { return bone_source_.rootFrame(); }
+
+  // Bones from TF, then surfaces at `lod` (a displaced relief: `displaced_level` instead) and the
+  // relief shown or hidden by its size on screen (`hide_unseen_relief`). False when the human is
+  // not drawn this frame: TF lacks a bone, or a pose is beyond what rviz can draw (then the
+  // human hides and a status names the frame until TF is sane again).
+  bool update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod, const Ogre::Camera* camera,
+              bool hide_unseen_relief);
+  // Wall time of the newest update() that found every bone in TF.
+  ros::WallTime lastSeen() const { return last_seen_; }
+
+  // The feature sizes of both reliefs after a model or skin relief change (`skin_cell_size`: the
+  // skin relief's cell size as a fraction of its tile); both shown until judged again.
+  void resetReliefVisibility(double skin_cell_size);
+  // Relief as displaced geometry (map null: bump mapping), as the display's relief properties say.
+  void setDisplacement(const ReliefMapJobs& jobs, bool displaced, float skin_strength, float wrinkle_strength);
+  // Removes every status this human set (it left the display).
+  void clearStatuses(DisplayStatus& status);
+
+ private:
+  bool posesDrawable(DisplayStatus& status, const std::string& fixed_frame);
+  void updateReliefVisibility(const Ogre::Camera* camera, bool judged);
+
+  TfBoneSource bone_source_;
+  ForwardKinematics kinematics_;
+  HumanModel model_;
+  HumanVisual visual_;
+  std::string pose_status_;  // "Pose", or "Pose <root frame>"
+  std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
+  std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
+  std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts
+  ros::WallTime last_seen_;
+};
+
+}  // namespace dressed_human

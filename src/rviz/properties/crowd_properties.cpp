@@ -1,0 +1,65 @@
+#include "properties/crowd_properties.h"
+
+#include <ros/package.h>
+#include <rviz/properties/bool_property.h>
+#include <rviz/properties/enum_property.h>
+#include <rviz/properties/string_property.h>
+
+namespace dressed_human {
+namespace {
+
+const char* const kRobotDescription = "Robot Description";
+const char* const kEveryHumanInTf = "Every Human in TF";
+
+}  // namespace
+
+CrowdProperties::CrowdProperties(rviz::Property* parent) {
+  humans_ = new rviz::EnumProperty(
+      "Humans", kRobotDescription,
+      "Robot Description: the one human whose skeleton the Robot Description names. Every Human in TF: "
+      "each skeleton TF carries (root frames body, body_<id>, checked every second), all with the "
+      "Robot Description's skeleton; a human whose TF stops for 5 s leaves the display.",
+      parent, SLOT(humansChanged()), this);
+  humans_->addOption(kRobotDescription);
+  humans_->addOption(kEveryHumanInTf);
+  crowd_file_ = new rviz::StringProperty(
+      "Crowd File", "",
+      "YAML file of what each human wears, by id, as a path or package://<package>/<path> "
+      "(package://dressed_human/config/crowds/example.yaml); empty: none.", parent,
+      SIGNAL(changed()), this);
+  vary_unlisted_ = new rviz::BoolProperty(
+      "Vary Unlisted Humans", true,
+      "Humans the crowd file does not name get an outfit and colours picked from their id (the same "
+      "every run); off: the display's own Outfit and colours.",
+      parent, SIGNAL(changed()), this);
+  updateVisibility();
+}
+
+bool CrowdProperties::everyHumanInTf() const { return humans_->getStdString() == kEveryHumanInTf; }
+
+std::string CrowdProperties::crowdFile() const {
+  // package://<package>/<path>, as rviz's mesh resources are named, so that a saved config works
+  // wherever the package is installed.
+  const std::string text = crowd_file_->getStdString();
+  const std::string scheme = "package://";
+  if (text.rfind(scheme, 0) != 0) return text;
+  const std::size_t slash = text.find('/', scheme.size());
+  const std::string package = text.substr(scheme.size(), slash == std::string::npos ? std::string::npos : slash - scheme.size());
+  const std::string root = ros::package::getPath(package);
+  if (root.empty()) return text;  // the loader names the file it cannot open
+  return root + (slash == std::string::npos ? std::string() : text.substr(slash));
+}
+
+bool CrowdProperties::varyUnlisted() const { return vary_unlisted_->getBool(); }
+
+void CrowdProperties::updateVisibility() {
+  crowd_file_->setHidden(!everyHumanInTf());
+  vary_unlisted_->setHidden(!everyHumanInTf());
+}
+
+void CrowdProperties::humansChanged() {
+  updateVisibility();
+  Q_EMIT changed();
+}
+
+}  // namespace dressed_human
