@@ -51,8 +51,10 @@ class DrawnHuman {
   // human hides and a status names the frame until TF is sane again).
   bool update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod, const Ogre::Camera* camera,
               bool hide_unseen_relief);
-  // Wall time of the newest update() that found every bone in TF.
+  // Wall time of the newest update() that found every bone in TF, at most kFreshSeconds old
+  // (TF keeps a stopped publisher's last transforms for ever).
   ros::WallTime lastSeen() const { return last_seen_; }
+  static constexpr double kFreshSeconds = 1.0;
 
   // The feature sizes of both reliefs after a model or skin relief change (`skin_cell_size`: the
   // skin relief's cell size as a fraction of its tile); both shown until judged again.

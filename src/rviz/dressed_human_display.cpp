@@ -24,13 +24,8 @@
 namespace dressed_human {
 namespace {
 
-// A crowd display looks for new humans in TF this often, and drops a human whose TF has been
-// missing or stale this long (a stopped publisher, a pedestrian gone from the simulation).
+// A crowd display looks for new humans in TF this often.
 constexpr float kRosterSeconds = 1.0f;
-constexpr double kLostSeconds = 5.0;
-// A root frame this much older than now is not a walking human (TF keeps the last transform of a
-// stopped publisher for ever).
-constexpr double kFreshSeconds = 1.0;
 
 double threadCpuSeconds() {
   timespec t{};
@@ -51,7 +46,7 @@ std::vector<std::string> framesInTf(const tf2_ros::Buffer& buffer) {
 bool freshInTf(const tf2_ros::Buffer& buffer, const std::string& fixed, const std::string& frame) {
   try {
     const ros::Time stamp = buffer.lookupTransform(fixed, frame, ros::Time(0)).header.stamp;
-    return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= kFreshSeconds;
+    return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= DrawnHuman::kFreshSeconds;
   } catch (const tf2::TransformException&) {
     return false;
   }
@@ -216,7 +211,7 @@ void DressedHumanDisplay::addHuman(const std::string& suffix) {
     auto human = std::make_unique<DrawnHuman>(
         skeleton_->withSuffix(suffix), shaped, settingsFor(suffix), scene_manager_, scene_node_,
         "dressed_human/" + getName().toStdString() + "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
-            "/" + std::to_string(humans_created_++),
+            "/" + (suffix.empty() ? std::string("body") : suffix.substr(1)),
         label);
     DrawnHuman& added = *(humans_[suffix] = std::move(human));
     configure(added, humans_.size() == 1);
@@ -251,7 +246,7 @@ void DressedHumanDisplay::dropLostHumans() {
   const ros::WallTime now = ros::WallTime::now();
   for (auto human = humans_.begin(); human != humans_.end();) {
     const auto next = std::next(human);
-    if ((now - human->second->lastSeen()).toSec() > kLostSeconds) removeHuman(human);
+    if ((now - human->second->lastSeen()).toSec() > crowd_properties_->humanTimeout()) removeHuman(human);
     human = next;
   }
 }

@@ -90,7 +90,6 @@ class DressedHumanDisplay : public rviz::Display {
   BodyShape shape_;                        // the file's shape times the Body Shape properties
   std::map<std::string, HumanAppearance> crowd_file_;  // by human id
   std::map<std::string, std::unique_ptr<DrawnHuman>> humans_;  // by frame suffix
-  std::size_t humans_created_ = 0;  // names each human's Ogre objects apart
   float seconds_since_roster_ = 0.0f;  // since lookForHumans()
   // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode. The
   // newest normal map of each kind goes to every human, those added later too.

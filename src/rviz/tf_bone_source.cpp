@@ -71,6 +71,7 @@ bool TfBoneSource::lookUp(rviz::FrameManager& frames, DisplayStatus& status) {
   } else {
     status.clear(stale_status_name_);
   }
+  stamp_ = stamp;
   return found || lookUpAt(*buffer, stamp, true, status);
 }
 

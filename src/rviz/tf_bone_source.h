@@ -36,6 +36,8 @@ class TfBoneSource {
   const RigidTransform& root() const { return root_; }
   const std::array<RigidTransform, kBoneCount>& bonesInParent() const { return bone_in_parent_; }
   const std::string& rootFrame() const { return root_frame_; }
+  // The stamp of the last successful lookUp(): the bones' common time.
+  const ros::Time& stamp() const { return stamp_; }
   const std::string& boneFrame(std::size_t bone) const { return bone_frames_[bone]; }
   // Removes every status lookUp() set.
   void clearStatuses(DisplayStatus& status) const;
@@ -56,6 +58,7 @@ class TfBoneSource {
   std::string root_status_name_;
   std::string stale_status_name_;  // "TF" or "TF <label>"
   RigidTransform root_;
+  ros::Time stamp_;
   std::array<RigidTransform, kBoneCount> bone_in_parent_;
 };
 

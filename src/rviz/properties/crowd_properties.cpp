@@ -3,6 +3,7 @@
 #include <ros/package.h>
 #include <rviz/properties/bool_property.h>
 #include <rviz/properties/enum_property.h>
+#include <rviz/properties/float_property.h>
 #include <rviz/properties/string_property.h>
 
 namespace dressed_human {
@@ -18,7 +19,7 @@ CrowdProperties::CrowdProperties(rviz::Property* parent) {
       "Humans", kRobotDescription,
       "Robot Description: the one human whose skeleton the Robot Description names. Every Human in TF: "
       "each skeleton TF carries (root frames body, body_<id>, checked every second), all with the "
-      "Robot Description's skeleton; a human whose TF stops for 5 s leaves the display.",
+      "Robot Description's skeleton; a human whose TF stops for Human Timeout leaves the display.",
       parent, SLOT(humansChanged()), this);
   humans_->addOption(kRobotDescription);
   humans_->addOption(kEveryHumanInTf);
@@ -32,6 +33,10 @@ CrowdProperties::CrowdProperties(rviz::Property* parent) {
       "Humans the crowd file does not name get an outfit and colours picked from their id (the same "
       "every run); off: the display's own Outfit and colours.",
       parent, SIGNAL(changed()), this);
+  // Like the TF display's Frame Timeout: a pedestrian removed from a simulation, a stopped node.
+  human_timeout_ = new rviz::FloatProperty(
+      "Human Timeout", 5.0f, "Seconds without fresh TF (newer than 1 s) before a human leaves the display.", parent);
+  human_timeout_->setMin(0.2f);
   updateVisibility();
 }
 
@@ -52,9 +57,12 @@ std::string CrowdProperties::crowdFile() const {
 
 bool CrowdProperties::varyUnlisted() const { return vary_unlisted_->getBool(); }
 
+double CrowdProperties::humanTimeout() const { return human_timeout_->getFloat(); }
+
 void CrowdProperties::updateVisibility() {
   crowd_file_->setHidden(!everyHumanInTf());
   vary_unlisted_->setHidden(!everyHumanInTf());
+  human_timeout_->setHidden(!everyHumanInTf());
 }
 
 void CrowdProperties::humansChanged() {

@@ -20,6 +20,7 @@ class CrowdProperties : public QObject {
   bool everyHumanInTf() const;
   std::string crowdFile() const;  // empty: none
   bool varyUnlisted() const;
+  double humanTimeout() const;  // seconds without fresh TF before a human leaves the display
   // The crowd-only properties show only when every human in TF is drawn.
   void updateVisibility();
 
@@ -33,6 +34,7 @@ class CrowdProperties : public QObject {
   rviz::EnumProperty* humans_;
   rviz::StringProperty* crowd_file_;
   rviz::BoolProperty* vary_unlisted_;
+  rviz::FloatProperty* human_timeout_;
 };
 
 }  // namespace dressed_human
