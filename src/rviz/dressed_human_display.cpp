@@ -110,11 +110,15 @@ void DressedHumanDisplay::onDisable() {
   for (auto& human : humans_) human.second->visual().setVisible(false);
 }
 
+// rviz resets every display when ROS time jumps back, at each loop of a replayed bag: rebuilding
+// the humans there hid them for a moment every loop. As RobotModelDisplay does, the humans stay;
+// their TF statuses go (they report themselves again), the others are kept up to date where they
+// arise. A robot description changed since it was read is read again.
 void DressedHumanDisplay::reset() {
-  rviz::Display::reset();  // clears the statuses; TF problems report themselves again
-  status_.forget();
-  surfaces_reported_ = {};
-  loadRobotDescription();  // every human again, judged and reported again at the next frame
+  for (auto& human : humans_) human.second->clearStatuses(status_);
+  std::string urdf;
+  const std::string parameter = body_properties_->descriptionParameter();
+  if (parameter.empty() || !update_nh_.getParam(parameter, urdf) || urdf != urdf_) loadRobotDescription();
 }
 
 void DressedHumanDisplay::fixedFrameChanged() { context_->queueRender(); }
@@ -122,6 +126,7 @@ void DressedHumanDisplay::fixedFrameChanged() { context_->queueRender(); }
 void DressedHumanDisplay::loadRobotDescription() {
   body_.reset();
   skeleton_.reset();
+  urdf_.clear();
   const std::string parameter = body_properties_->descriptionParameter();
   std::string urdf;
   if (parameter.empty() || !update_nh_.getParam(parameter, urdf)) {
@@ -130,6 +135,7 @@ void DressedHumanDisplay::loadRobotDescription() {
   }
   try {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
+    urdf_ = urdf;
     setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones");
   } catch (const std::exception& error) {
     status_.error("URDF", "parameter '" + parameter + "': " + error.what());

@@ -86,6 +86,7 @@ class DressedHumanDisplay : public rviz::Display {
   bool ogre_ready_ = false;        // onInitialize() ran: humans may create Ogre objects
 
   std::unique_ptr<Skeleton> skeleton_;     // the robot description's; each human's carries its suffix
+  std::string urdf_;                        // the robot description it was read from
   std::unique_ptr<BodyDescription> body_;  // as the body file says
   BodyShape shape_;                        // the file's shape times the Body Shape properties
   std::map<std::string, HumanAppearance> crowd_file_;  // by human id
