@@ -10,6 +10,7 @@ import math
 import os
 import signal
 import subprocess
+import threading
 import time
 import xml.etree.ElementTree as ElementTree
 
@@ -18,6 +19,7 @@ import rospy
 import tf2_ros
 import yaml
 from PIL import Image
+from tf2_msgs.msg import TFMessage
 
 from screenshots import grab
 
@@ -102,13 +104,52 @@ def figure_pixels_in_box(image, view, low, high, target=numpy.zeros(3)):
 class Pose:
     """Where TF says the human is at one instant: bone frame origins and the view's target."""
 
-    def __init__(self, buffer, view, frames):
+    def __init__(self, buffer, view, frames, root=ROOT_FRAME):
         def position(frame):
             t = buffer.lookup_transform(view.fixed_frame, frame, rospy.Time(0), rospy.Duration(0.5)).transform
             return numpy.array([t.translation.x, t.translation.y, t.translation.z])
         self.bones = numpy.array([position(frame) for frame in frames])
-        self.root = position(ROOT_FRAME)
+        self.root = position(root)
         self.target = position(view.target_frame) if view.target_frame != view.fixed_frame else numpy.zeros(3)
+
+
+class LoopingTfListener:
+    """Fills a tf2 buffer from /tf and /tf_static, and empties it when the transforms' stamps jump
+    back (a bag replayed in a loop).
+
+    tf2_ros's own listener clears its buffer when the clock jumps back, but /clock and /tf arrive
+    on different threads: a last transform of the old loop handled after the clear stays the newest
+    in the buffer, the new loop's transforms are older than it, and every latest-time lookup
+    returns that one stale pose until the next loop. The stamps of one topic arrive in order, so a
+    jump in them is the loop itself."""
+
+    JUMP_SECONDS = 1.0
+
+    def __init__(self, buffer):
+        self.buffer = buffer
+        self.static = {}
+        self.newest = None
+        self.lock = threading.Lock()
+        self.subscribers = [rospy.Subscriber("/tf", TFMessage, self.on_transforms, queue_size=1000),
+                            rospy.Subscriber("/tf_static", TFMessage, self.on_static, queue_size=100)]
+
+    def on_transforms(self, message):
+        with self.lock:
+            for transform in message.transforms:
+                stamp = transform.header.stamp
+                if self.newest is not None and stamp < self.newest - rospy.Duration(self.JUMP_SECONDS):
+                    self.buffer.clear()
+                    for static in self.static.values():
+                        self.buffer.set_transform_static(static, "looping_tf_listener")
+                    self.newest = None
+                self.buffer.set_transform(transform, "looping_tf_listener")
+                self.newest = stamp if self.newest is None else max(self.newest, stamp)
+
+    def on_static(self, message):
+        with self.lock:
+            for transform in message.transforms:
+                self.static[transform.child_frame_id] = transform
+                self.buffer.set_transform_static(transform, "looping_tf_listener")
 
 
 def clip(box, width, height):
@@ -121,25 +162,19 @@ def area(box):
     return max(0.0, right - left) * max(0.0, bottom - top)
 
 
-def judge(image, view, poses):
-    """One screenshot against the poses TF gave just before and just after it was taken.
-
-    in:   the root frame projects well inside the view at both instants: the figure must be drawn
-          inside the box its frames project to (grown by the body's reach), and nowhere else;
-    out:  the grown box misses the view at both instants: nothing may be drawn;
-    edge: partly in view (or behind the camera): recorded, not judged.
-    """
-    height, width = image.shape[:2]
-    mask = figure_mask(image)
-    tight, grown, root_inside, box_touches = None, None, True, False
+def human_box(view, poses, width, height, margin_metres=BODY_MARGIN_METRES):
+    """Where one human's frames project at the instants of `poses`: the tight box of its frames,
+    that box grown by the body's reach, whether its root is well inside the view at every instant,
+    and whether the grown box touches the view (or part of it is behind the camera)."""
+    tight, grown, root_inside, touches = None, None, True, False
     for pose in poses:
         columns, rows, depth, scale = view.project(pose.bones, pose.target, width, height)
         root_column, root_row, root_depth, _ = view.project(pose.root[None, :], pose.target, width, height)
         if (depth <= view.near).any():
             root_inside = False
-            box_touches = True  # part of it behind the camera: not judged
+            touches = True  # part of it behind the camera: not judged
             continue
-        margin = scale * BODY_MARGIN_METRES / depth.min() + 6.0
+        margin = scale * margin_metres / depth.min() + 6.0
         box = (columns.min(), rows.min(), columns.max(), rows.max())
         big = (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
         tight = box if tight is None else (min(tight[0], box[0]), min(tight[1], box[1]), max(tight[2], box[2]), max(tight[3], box[3]))
@@ -147,26 +182,68 @@ def judge(image, view, poses):
         inset_w, inset_h = 0.03 * width, 0.03 * height
         root_inside &= bool(root_depth[0] > view.near and inset_w < root_column[0] < width - inset_w and
                             inset_h < root_row[0] < height - inset_h)
-        box_touches |= area(clip(big, width, height)) > 0
+        touches |= area(clip(big, width, height)) > 0
+    return tight, grown, root_inside and grown is not None, touches
+
+
+def judge_humans(image, view, poses_by_human, margin_metres=BODY_MARGIN_METRES):
+    """One screenshot against the poses TF gave each human just before and just after it was taken.
+
+    Per human, in:  its root frame projects well inside the view at both instants: the figure must
+                    cover enough of the box its frames project to (grown by the body's reach);
+              out:  its grown box misses the view at both instants;
+              edge: partly in view (or behind the camera): recorded, not judged;
+              no TF: TF had none of its poses.
+    And for the whole view: with a human in, the figure is drawn nowhere outside the humans'
+    grown boxes; with every human out, nothing is drawn at all.
+    """
+    height, width = image.shape[:2]
+    mask = figure_mask(image)
+    covered = numpy.zeros(mask.shape, dtype=bool)
+    humans = {}
+    for name, poses in poses_by_human.items():
+        if not poses:
+            humans[name] = {"state": "no TF", "ok": True}
+            continue
+        tight, grown, root_inside, touches = human_box(view, poses, width, height, margin_metres)
+        human = {}
+        if grown is not None:
+            left, top, right, bottom = (int(round(v)) for v in clip(grown, width, height))
+            region = (slice(max(top, 0), max(bottom, 0)), slice(max(left, 0), max(right, 0)))
+            covered[region] = True
+            human.update(inside=int(mask[region].sum()), tight_box=[round(v, 1) for v in tight],
+                         grown_box=[round(v, 1) for v in grown])
+        if root_inside:
+            human.update(state="in", needed=max(40, int(0.12 * area(clip(tight, width, height)))))
+            human["ok"] = human["inside"] >= human["needed"]
+        else:
+            human.update(state="out" if not touches else "edge", ok=True)
+        humans[name] = human
     total = int(mask.sum())
-    result = {"figure_pixels": total, "view": [width, height]}
-    if grown is not None:
-        left, top, right, bottom = (int(round(v)) for v in clip(grown, width, height))
-        inside = int(mask[max(top, 0):max(bottom, 0), max(left, 0):max(right, 0)].sum())
-        result.update(inside=inside, outside=total - inside, tight_box=[round(v, 1) for v in tight],
-                      grown_box=[round(v, 1) for v in grown])
-    if root_inside and grown is not None:
-        needed = max(40, int(0.12 * area(clip(tight, width, height))))
-        result["state"] = "in"
-        result["needed"] = needed
-        result["ok"] = result["inside"] >= needed and result["outside"] <= max(150, 0.1 * result["inside"])
-    elif not box_touches:
-        result["state"] = "out"
-        result["ok"] = total <= 100
+    outside = total - int((mask & covered).sum())
+    states = [human["state"] for human in humans.values()]
+    if "in" in states:
+        view_ok = outside <= max(150, 0.1 * (total - outside))
+    elif all(state == "out" for state in states):
+        view_ok = total <= 100
     else:
-        result["state"] = "edge"
-        result["ok"] = True
+        view_ok = True
+    return {"figure_pixels": total, "view": [width, height], "outside": outside, "humans": humans,
+            "ok": view_ok and all(human["ok"] for human in humans.values())}
+
+
+def judge(image, view, poses):
+    """judge_humans for one human, its verdict at the top level."""
+    result = judge_humans(image, view, {ROOT_FRAME: poses})
+    human = result.pop("humans")[ROOT_FRAME]
+    human["ok"] = result["ok"]
+    result.update(human)
     return result
+
+
+def crowd_frames(frames, suffixes):
+    """Each human's bone frames by its root frame: `frames` with `_<id>` appended per suffix."""
+    return {ROOT_FRAME + suffix: [frame + suffix for frame in frames] for suffix in suffixes}
 
 
 class Launch:
@@ -196,25 +273,45 @@ class Launch:
             return f.read()
 
 
+def as_humans(frames):
+    """{root frame: bone frames}: a list of frames is the one human rooted at ROOT_FRAME."""
+    return frames if isinstance(frames, dict) else {ROOT_FRAME: frames}
+
+
+def poses_now(buffer, view, humans, shot, when):
+    """Each human's pose from TF now, or None where TF lacks it."""
+    poses = {}
+    for root, frames in humans.items():
+        try:
+            poses[root] = Pose(buffer, view, frames, root)
+        except tf2_ros.TransformException as error:
+            rospy.logwarn("shot %d: no TF %s for %s: %s", shot, when, root, error)
+            poses[root] = None
+    return poses
+
+
 def wait_for_view(launch, buffer, view, frames, path, timeout=120.0):
-    """Until rviz shows its 3D view and TF has every bone frame."""
+    """Until rviz shows its 3D view and TF has every bone frame of every human (`frames`: a list,
+    or {root frame: frames} for several humans)."""
     deadline = time.time() + timeout
     while time.time() < deadline:
         if not launch.alive():
             raise RuntimeError("roslaunch exited:\n" + launch.output()[-3000:])
         time.sleep(1.0)
-        try:
-            Pose(buffer, view, frames)
-        except tf2_ros.TransformException:
+        if None in poses_now(buffer, view, as_humans(frames), -1, "yet").values():
             continue
         if grab(path).size > 0:
             return
-    raise RuntimeError("no rviz view with the human's TF within %.0f s:\n%s" % (timeout, launch.output()[-3000:]))
+    raise RuntimeError("no rviz view with the humans' TF within %.0f s:\n%s" % (timeout, launch.output()[-3000:]))
 
 
-def observe(launch, buffer, view, frames, directory, seconds=42.0, interval=2.5):
-    """A screenshot every `interval` s for `seconds`, each judged; saved with a summary.json."""
+def observe(launch, buffer, view, frames, directory, seconds=42.0, interval=2.5, margin_metres=BODY_MARGIN_METRES):
+    """A screenshot every `interval` s for `seconds`, each judged; saved with a summary.json.
+    `frames`: one human's bone frames (its verdict at the top level of each result), or
+    {root frame: bone frames} for several (verdicts under "humans"), each box grown by
+    `margin_metres`."""
     os.makedirs(directory, exist_ok=True)
+    humans = as_humans(frames)
     results = []
     start = time.time()
     shot = 0
@@ -223,22 +320,18 @@ def observe(launch, buffer, view, frames, directory, seconds=42.0, interval=2.5)
         if not launch.alive():
             raise RuntimeError("roslaunch exited during the observation:\n" + launch.output()[-3000:])
         path = os.path.join(directory, "shot_%02d.png" % shot)
-        poses = []
-        try:
-            poses.append(Pose(buffer, view, frames))
-        except tf2_ros.TransformException as error:
-            rospy.logwarn("shot %d: no TF before: %s", shot, error)
+        before = poses_now(buffer, view, humans, shot, "before")
         image = grab(path)
-        try:
-            poses.append(Pose(buffer, view, frames))
-        except tf2_ros.TransformException as error:
-            rospy.logwarn("shot %d: no TF after: %s", shot, error)
+        after = poses_now(buffer, view, humans, shot, "after")
+        poses = {root: [p for p in (before[root], after[root]) if p is not None] for root in humans}
         if image.size == 0:
             result = {"state": "no view", "ok": False}
-        elif not poses:
+        elif isinstance(frames, dict):
+            result = judge_humans(image, view, poses, margin_metres)
+        elif not poses[ROOT_FRAME]:
             result = {"state": "no TF", "ok": True}
         else:
-            result = judge(image, view, poses)
+            result = judge(image, view, poses[ROOT_FRAME])
         result.update(shot=shot, seconds=round(time.time() - start, 1), path=path)
         if image.size > 0:
             Image.fromarray(image.astype(numpy.uint8)).save(path)  # the 3D view only
