@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <ctime>
-#include <sstream>
 
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/package.h>
@@ -10,7 +9,6 @@
 #include <rviz/frame_manager.h>
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
-#include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
 #include "drawn_human.h"
@@ -20,6 +18,7 @@
 #include "properties/garment_properties.h"
 #include "properties/lod_properties.h"
 #include "properties/relief_properties.h"
+#include "tf_human_roster.h"
 
 namespace dressed_human {
 namespace {
@@ -31,25 +30,6 @@ double threadCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-// Every frame tf2 knows, from its public listing ("Frame <child> exists with parent <parent>.").
-std::vector<std::string> framesInTf(const tf2_ros::Buffer& buffer) {
-  std::vector<std::string> frames;
-  std::istringstream listing(buffer.allFramesAsString());
-  for (std::string word, frame; listing >> word;) {
-    if (word == "Frame" && listing >> frame) frames.push_back(frame);
-  }
-  return frames;
-}
-
-bool freshInTf(const tf2_ros::Buffer& buffer, const std::string& fixed, const std::string& frame) {
-  try {
-    const ros::Time stamp = buffer.lookupTransform(fixed, frame, ros::Time(0)).header.stamp;
-    return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= DrawnHuman::kFreshSeconds;
-  } catch (const tf2::TransformException&) {
-    return false;
-  }
 }
 
 }  // namespace
@@ -76,14 +56,7 @@ DressedHumanDisplay::~DressedHumanDisplay() = default;
 
 void DressedHumanDisplay::load(const rviz::Config& config) {
   rviz::Display::load(config);
-  // "Relief Strength" was renamed "Skin Relief Strength" (beside "Wrinkle Strength", the cloth's).
-  float strength = 0.0f;
-  if (config.mapGetFloat("Relief Strength", &strength)) {
-    const bool renamed = config.mapGetChild("Skin Relief Strength").isValid();
-    if (!renamed) relief_properties_->setSkinStrength(strength);
-    ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': the configuration's 'Relief Strength' is deprecated%s; "
-                   "it is now 'Skin Relief Strength'", getName().toStdString().c_str(), renamed ? " (ignored)" : "");
-  }
+  relief_properties_->loadRenamedKeys(config, getName().toStdString());
 }
 
 void DressedHumanDisplay::onInitialize() {
@@ -240,10 +213,9 @@ void DressedHumanDisplay::configure(DrawnHuman& human, bool report) {
 void DressedHumanDisplay::lookForHumans() {
   seconds_since_roster_ = 0.0f;
   if (!skeleton_ || !body_) return;
-  const std::shared_ptr<tf2_ros::Buffer> buffer = context_->getFrameManager()->getTF2BufferPtr();
-  const std::string& fixed = context_->getFrameManager()->getFixedFrame();
-  for (const std::string& suffix : humanSuffixesAmong(framesInTf(*buffer))) {
-    if (humans_.count(suffix) == 0 && freshInTf(*buffer, fixed, "body" + suffix)) addHuman(suffix);
+  rviz::FrameManager& frames = *context_->getFrameManager();
+  for (const std::string& suffix : freshHumansInTf(*frames.getTF2BufferPtr(), frames.getFixedFrame())) {
+    if (humans_.count(suffix) == 0) addHuman(suffix);
   }
   setStatusStd(rviz::StatusProperty::Ok, "Humans", std::to_string(humans_.size()) + " in TF");
 }

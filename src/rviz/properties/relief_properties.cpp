@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <ros/console.h>
+#include <rviz/config.h>
 #include <rviz/properties/enum_property.h>
 #include <rviz/properties/float_property.h>
 #include <rviz/properties/int_property.h>
@@ -78,7 +80,14 @@ float ReliefProperties::skinStrength() const { return skin_strength_->getFloat()
 
 float ReliefProperties::wrinkleStrength() const { return wrinkle_strength_->getFloat(); }
 
-void ReliefProperties::setSkinStrength(float strength) { skin_strength_->setFloat(strength); }
+void ReliefProperties::loadRenamedKeys(const rviz::Config& config, const std::string& display) {
+  float strength = 0.0f;
+  if (!config.mapGetFloat("Relief Strength", &strength)) return;
+  const bool renamed = config.mapGetChild("Skin Relief Strength").isValid();
+  if (!renamed) skin_strength_->setFloat(strength);
+  ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': the configuration's 'Relief Strength' is deprecated%s; "
+                 "it is now 'Skin Relief Strength'", display.c_str(), renamed ? " (ignored)" : "");
+}
 
 SkinReliefParameters ReliefProperties::skinParameters() const {
   SkinReliefParameters parameters;

@@ -3,6 +3,8 @@
 // displaced geometry), how strong the skin's and the cloth's relief are, and the skin relief's
 // Voronoi cells (SkinReliefParameters).
 
+#include <string>
+
 #include <QObject>
 
 #include "dressed_human/core/relief/skin_relief.h"
@@ -21,7 +23,10 @@ class ReliefProperties : public QObject {
   int displacementLevel() const;  // displaced geometry: each patch cut n x n
   float skinStrength() const;
   float wrinkleStrength() const;
-  void setSkinStrength(float strength);  // a configuration's old "Relief Strength"
+  // A configuration saved before "Relief Strength" was renamed "Skin Relief Strength" (beside
+  // "Wrinkle Strength", the cloth's) still sets it, with a deprecation warning naming `display`;
+  // where both keys are saved, the new one wins.
+  void loadRenamedKeys(const rviz::Config& config, const std::string& display);
   SkinReliefParameters skinParameters() const;
   // Displacement Level shows only with displaced geometry.
   void updateVisibility();
