@@ -10,7 +10,7 @@ import re
 import sys
 
 WHY = re.compile(r"AssertionError|Error:|\[  FAILED  \]|Failure$|FAILURE|RuntimeError|Exception|"
-                 r"Expected|Which is|[Tt]imed? ?out|Segmentation|Aborted|failed with")
+                 r"Expected|Which is|[Tt]imed? ?out|Segmentation|Aborted|failed with|has died")
 LINES_PER_TEST = 8
 CHARACTERS_PER_LINE = 600
 
