@@ -36,8 +36,7 @@ DrawnHuman::~DrawnHuman() = default;
 bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod,
                         const Ogre::Camera* camera, bool hide_unseen_relief) {
   if (!bone_source_.lookUp(frames, status)) return false;
-  const ros::Time& stamp = bone_source_.stamp();
-  if (stamp.isZero() || (ros::Time::now() - stamp).toSec() <= kFreshSeconds) last_seen_ = ros::WallTime::now();
+  if (fresh(bone_source_.stamp())) last_seen_ = ros::WallTime::now();
   // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
   kinematics_.composeUnshaped(bone_source_.root(), bone_source_.bonesInParent(), bones_);
   if (!posesDrawable(status, frames.getFixedFrame())) return false;

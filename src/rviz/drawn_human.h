@@ -55,6 +55,10 @@ class DrawnHuman {
   // (TF keeps a stopped publisher's last transforms for ever).
   ros::WallTime lastSeen() const { return last_seen_; }
   static constexpr double kFreshSeconds = 1.0;
+  // Whether TF data stamped `stamp` is at most kFreshSeconds old (a zero stamp: static, fresh).
+  static bool fresh(const ros::Time& stamp) {
+    return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= kFreshSeconds;
+  }
 
   // The feature sizes of both reliefs after a model or skin relief change (`skin_cell_size`: the
   // skin relief's cell size as a fraction of its tile); both shown until judged again.

@@ -23,8 +23,7 @@ std::vector<std::string> framesInTf(const tf2_ros::Buffer& buffer) {
 
 bool freshInTf(const tf2_ros::Buffer& buffer, const std::string& fixed, const std::string& frame) {
   try {
-    const ros::Time stamp = buffer.lookupTransform(fixed, frame, ros::Time(0)).header.stamp;
-    return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= DrawnHuman::kFreshSeconds;
+    return DrawnHuman::fresh(buffer.lookupTransform(fixed, frame, ros::Time(0)).header.stamp);
   } catch (const tf2::TransformException&) {
     return false;
   }
