@@ -1,8 +1,5 @@
 #include "dressed_human_display.h"
 
-#include <cstdio>
-#include <ctime>
-
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/package.h>
 #include <rviz/display_context.h>
@@ -25,12 +22,6 @@ namespace {
 
 // A crowd display looks for new humans in TF this often.
 constexpr float kRosterSeconds = 1.0f;
-
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 }  // namespace
 
@@ -301,20 +292,10 @@ void DressedHumanDisplay::pollReliefMaps() {
 }
 
 void DressedHumanDisplay::update(float wall_dt, float) {
-  const double start = threadCpuSeconds();
+  update_cost_.start();
   updateSurfaces(wall_dt);
-  reportUpdateCost(threadCpuSeconds() - start);
-}
-
-void DressedHumanDisplay::reportUpdateCost(double cpu_seconds) {
-  // What this display costs rviz's thread per frame (mean over ~1 s), for users and benchmarks.
-  update_cpu_seconds_ += cpu_seconds;
-  if (++update_count_ < 30) return;
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.3f ms CPU per frame", 1e3 * update_cpu_seconds_ / update_count_);
-  setStatusStd(rviz::StatusProperty::Ok, "Update", text);
-  update_cpu_seconds_ = 0.0;
-  update_count_ = 0;
+  const std::string cost = update_cost_.stop();
+  if (!cost.empty()) setStatusStd(rviz::StatusProperty::Ok, "Update", cost);
 }
 
 void DressedHumanDisplay::updateSurfaces(float wall_dt) {

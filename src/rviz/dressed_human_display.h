@@ -16,6 +16,7 @@
 #include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/model/relief_map_jobs.h"
 #include "display_status.h"
+#include "update_cost_meter.h"
 
 namespace dressed_human {
 
@@ -70,7 +71,6 @@ class DressedHumanDisplay : public rviz::Display {
   void pollReliefMaps();
   void updateSurfaces(float wall_dt);
   void reportSurfaces(std::size_t humans, std::size_t parts, std::size_t triangles);
-  void reportUpdateCost(double cpu_seconds);
 
   // The properties, by concern; each group owns its rviz properties (children of this display).
   std::unique_ptr<BodyProperties> body_properties_;
@@ -98,8 +98,7 @@ class DressedHumanDisplay : public rviz::Display {
   std::array<FinishedReliefMap, 2> normal_maps_;  // by ReliefKind
   // (humans, parts, triangles) the "Surfaces" status says: rebuilt only when they change.
   std::array<std::size_t, 3> surfaces_reported_{};
-  double update_cpu_seconds_ = 0.0;
-  int update_count_ = 0;
+  UpdateCostMeter update_cost_;
 };
 
 }  // namespace dressed_human
