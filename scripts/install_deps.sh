@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   # build
   build-essential cmake pkg-config catkin python3-catkin-pkg python3-empy
-  libeigen3-dev libyaml-cpp-dev libboost-dev liburdfdom-dev liburdfdom-tools
+  libeigen3-dev libyaml-cpp-dev libboost-dev liburdfdom-dev liburdfdom-tools libtinyxml2-dev
   # ROS 1 (Debian's own packages)
   libroscpp-dev libroslib-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
   libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 #include <ros/package.h>
 
@@ -31,6 +33,24 @@ geometry_msgs::TransformStamped named(const std::string& parent, const std::stri
   transform.child_frame_id = child;
   transform.transform.rotation.w = 1.0;
   return transform;
+}
+
+// A motion fitted to a person (fit_motion) moves that person's bones: on another body its feet
+// slide and miss the ground, so a robot_description without those proportions is an error.
+void requireSameBody(const Motion& motion, const Skeleton& skeleton, const std::string& motion_file) {
+  if (!motion.body_shape) return;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const Eigen::Vector3d& wanted = motion.body_shape->scale[b];
+    const Eigen::Vector3d& carried = skeleton.bodyShape().scale[b];
+    if ((wanted - carried).cwiseAbs().maxCoeff() > 1e-5 * wanted.cwiseAbs().maxCoeff()) {
+      std::ostringstream message;
+      message << "motion file " << motion_file << " was fitted to a body whose " << skeleton.bone(b).name
+              << " is [a, b, c] = [" << wanted.transpose() << "], but robot_description carries ["
+              << carried.transpose() << "]: set robot_description from `rosrun dressed_human human_urdf "
+              << "<urdf> --motion " << motion_file << "` (skeleton.launch does)";
+      throw ParameterError(message.str());
+    }
+  }
 }
 
 }  // namespace
@@ -82,8 +102,11 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
     }
     extra_suffix_ = wanted_suffix;
   }
-  kinematics_ = std::make_unique<ForwardKinematics>(skeleton);
-  evaluator_ = std::make_unique<MotionEvaluator>(loadMotionFile(settings_.motion_file));
+  Motion motion = loadMotionFile(settings_.motion_file);
+  requireSameBody(motion, skeleton, settings_.motion_file);
+  // A fitted person's URDF carries its proportions (urdf_body_shape.h): TF puts the joints there.
+  kinematics_ = std::make_unique<ForwardKinematics>(skeleton, skeleton.bodyShape());
+  evaluator_ = std::make_unique<MotionEvaluator>(std::move(motion));
 
   transforms_.transforms.push_back(named(settings_.world_frame, published(skeleton.rootFrame())));
   for (const ArticulatedJoint& joint : skeleton.joints()) {

@@ -37,8 +37,8 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
                         const Ogre::Camera* camera, bool hide_unseen_relief) {
   if (!bone_source_.lookUp(frames, status)) return false;
   if (fresh(bone_source_.stamp())) last_seen_ = ros::WallTime::now();
-  // Eq. 5: each joint at its parent's shaped offset; TF carries the URDF's unshaped skeleton.
-  kinematics_.composeUnshaped(bone_source_.root(), bone_source_.bonesInParent(), bones_);
+  // Eq. 5: TF carries the URDF's offsets (its own body shape in them); the display's shape on top.
+  kinematics_.composeFromTf(bone_source_.root(), bone_source_.bonesInParent(), bones_);
   if (!posesDrawable(status, frames.getFixedFrame())) return false;
   model_.update(bone_source_.root(), bones_, lod);
   visual_.update(model_.parts());

@@ -100,13 +100,18 @@ void DressedHumanDisplay::loadRobotDescription() {
   try {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
     urdf_ = urdf;
-    setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones");
+    setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones" +
+                     (skeleton_->bodyShape().isIdentity() ? "" : ", a fitted person's proportions"));
   } catch (const std::exception& error) {
     status_.error("URDF", "parameter '" + parameter + "': " + error.what());
     return rebuildHumans();
   }
   try {
     body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_properties_->bodyFile(), *skeleton_));
+    // A fitted person's URDF carries its proportions: the body file's shape applies on top of them.
+    for (std::size_t b = 0; b < kBoneCount; ++b) {
+      body_->shape.scale[b] = body_->shape.scale[b].cwiseProduct(skeleton_->bodyShape().scale[b]);
+    }
     shape_ = body_->shape;
     status_.clear("Body Description");
   } catch (const std::exception& error) {

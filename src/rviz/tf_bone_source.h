@@ -32,7 +32,7 @@ class TfBoneSource {
   // any is missing. Clears the statuses of frames found again.
   bool lookUp(rviz::FrameManager& frames, DisplayStatus& status);
   // From the last successful lookUp(): the root in the fixed frame, and each bone in its parent
-  // as TF carries it (the URDF's unshaped skeleton; ForwardKinematics::composeUnshaped).
+  // as TF carries it (the URDF's offsets, its body shape in them; ForwardKinematics::composeFromTf).
   const RigidTransform& root() const { return root_; }
   const std::array<RigidTransform, kBoneCount>& bonesInParent() const { return bone_in_parent_; }
   const std::string& rootFrame() const { return root_frame_; }

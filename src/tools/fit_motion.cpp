@@ -15,6 +15,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,9 +55,14 @@ const char* const kUsage =
     "  --order M             every series gets exactly order M (no tolerance search)\n"
     "  --skip-frames N       drop N frames at the start (default: auto, drops a leading bind-pose frame)\n"
     "  --name NAME           motion name in the file (default: the input's file name stem)\n"
+    "  --body fitted|default BVH: fit the person's proportions from the rest pose and write them as\n"
+    "                        the motion's body_shape (default: fitted); default: our 1.75 m body\n"
+    "  --units U             BVH length unit: m, cm, mm, in, cmu (CMU's ASF units, 1/0.45 in) or\n"
+    "                        metres per unit (default: the unit that makes the rest pose a human height)\n"
     "  --sweep-csv FILE      also write accuracy and evaluation cost for m = 1..--sweep-max\n"
     "  --sweep-max M         highest order of the sweep (default 12)\n"
     "  --timing-calls N      MotionEvaluator::evaluate calls timed per order in the sweep (default 200000)\n"
+    "  -v, --verbose         also the joint-position error of every joint\n"
     "  -q, --quiet           no report on standard error\n"
     "  -h, --help            this text\n";
 
@@ -75,6 +81,9 @@ struct Arguments {
   std::size_t sweep_max = 12;
   std::size_t timing_calls = 200000;
   bool quiet = false;
+  bool verbose = false;
+  bool fit_body = true;
+  std::string units;
   dh::MotionFitOptions fit;
 };
 
@@ -182,12 +191,21 @@ Arguments parseArguments(int argc, char** argv) {
       args.fit.skip_frames = static_cast<int>(parseCount(arg, value(), 0, 1000000, "frames of a capture"));
     } else if (arg == "--name") {
       args.name = value();
+    } else if (arg == "--body") {
+      const std::string body = value();
+      if (body != "fitted" && body != "default") throw UsageError("--body must be 'fitted' or 'default', got '" + body + "'");
+      args.fit_body = body == "fitted";
+    } else if (arg == "--units") {
+      args.units = value();
+      dh::unitsByName(args.units);  // a bad unit is a usage error, said before reading anything
     } else if (arg == "--sweep-csv") {
       args.sweep_csv = value();
     } else if (arg == "--sweep-max") {
       args.sweep_max = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "the highest order a motion file may hold");
     } else if (arg == "--timing-calls") {
       args.timing_calls = parseCount(arg, value(), 1, 10000000, "each order of the sweep is timed with this many calls");
+    } else if (arg == "-v" || arg == "--verbose") {
+      args.verbose = true;
     } else if (arg == "-q" || arg == "--quiet") {
       args.quiet = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -205,12 +223,16 @@ Arguments parseArguments(int argc, char** argv) {
     else if (ext == "mot" || ext == "sto") args.format = "mot";
     else throw UsageError("cannot tell the format of '" + args.input + "' from its extension; use --format bvh|mot");
   }
+  if (args.format != "bvh") {
+    if (!args.units.empty()) throw UsageError("--units applies to BVH input only (OpenSim files are in metres)");
+    args.fit_body = false;  // joint coordinates carry no skeleton to read proportions from
+  }
   if (args.name.empty()) args.name = stem(args.input);
   args.fit.name = args.name;
   return args;
 }
 
-dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleton) {
+dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleton, bool fit_body) {
   dh::JointMapFile map_file;
   if (!args.map.empty()) map_file = dh::loadJointMapFile(args.map);
   if (args.format == "bvh") {
@@ -219,7 +241,10 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
       throw dh::JointMapError(args.map + ": a BVH input needs a map of kind 'bvh', this one is '" + map_file.kind + "'");
     }
     const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input) : map_file.bvh;
-    return dh::retargetBvh(clip, map, skeleton, args.input);
+    dh::RetargetOptions options;
+    options.fit_body = fit_body;
+    options.units = args.units;
+    return dh::retargetBvh(clip, map, skeleton, args.input, options);
   }
   const dh::OpenSimTable table = dh::loadOpenSimMotionFile(args.input);
   if (!args.map.empty() && map_file.kind != "coordinates") {
@@ -302,8 +327,33 @@ void writeSweep(const Arguments& args, const dh::Skeleton& skeleton, const dh::S
   }
 }
 
+// What the joint-position error is measured against, and the figures, for the report and the file.
+std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy& accuracy,
+                         const std::optional<dh::FitAccuracy>& default_body) {
+  if (accuracy.against_capture.samples == 0) return "No capture skeleton: joint positions against the capture not measured.";
+  std::ostringstream text;
+  if (sampled.body_fitted) {
+    text << "Body fitted from the rest pose (units: " << sampled.units.name << ", " << sampled.units.reason
+         << "; limbs " << format(sampled.proportions.overall, 3) << "x ours).\n"
+         << "Joint positions vs the capture's own FK (metres, every mapped joint and frame, root-relative): mean "
+         << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
+    if (default_body) {
+      text << "\n  (on our default body, the capture scaled to our stature: mean " << format(default_body->against_capture.mean_cm, 2)
+           << " cm, max " << format(default_body->against_capture.max_cm, 2) << " cm)";
+    }
+    if (accuracy.stance_foot_height.samples > 0) {
+      text << "\nLowest foot point in stance vs the capture's: mean " << format(accuracy.stance_foot_height.mean_cm, 2)
+           << " cm, max " << format(accuracy.stance_foot_height.max_cm, 2) << " cm";
+    }
+  } else {
+    text << "Joint positions vs the capture's own FK (scaled to our stature, our default body, root-relative): mean "
+         << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
+  }
+  return text.str();
+}
+
 void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::MotionFit& fit,
-            const dh::FitAccuracy& accuracy) {
+            const dh::FitAccuracy& accuracy, const std::optional<dh::FitAccuracy>& default_body) {
   std::ostream& out = std::cerr;
   out << "fit_motion: " << args.input << ": " << sampled.times.size() << " frames (" << fit.skipped_frames << " skipped at the start), period "
       << format(fit.motion.period, 4) << " s ("
@@ -324,11 +374,15 @@ void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::M
   }
   out << "  angle RMS residual: mean " << format(accuracy.mean_rms_degrees, 3) << " deg, max "
       << format(accuracy.max_rms_degrees, 3) << " deg\n";
-  if (accuracy.against_capture.samples > 0) {
-    out << "  joint positions vs the capture's own FK (scaled to our stature, root-relative): mean "
-        << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2)
-        << " cm (the unsmoothed retarget: mean " << format(accuracy.unsmoothed_against_capture.mean_cm, 2)
-        << " cm: bone proportions differ)\n";
+  std::istringstream lines(accuracyText(sampled, accuracy, default_body));
+  for (std::string line; std::getline(lines, line);) out << "  " << line << "\n";
+  if (args.verbose && accuracy.against_capture.samples > 0) {
+    for (std::size_t j = 0; j < dh::kJointCount; ++j) {
+      const dh::PositionError& e = accuracy.joint_against_capture[j];
+      if (e.samples == 0) continue;
+      out << "    " << std::left << std::setw(11) << dh::humanJointNames()[j] << std::right << " mean "
+          << format(e.mean_cm, 2) << " cm, max " << format(e.max_cm, 2) << " cm\n";
+    }
   }
   out << "  joint positions vs our skeleton on the unsmoothed angles: mean " << format(accuracy.against_samples.mean_cm, 3)
       << " cm, max " << format(accuracy.against_samples.max_cm, 3) << " cm; root translation: mean "
@@ -349,10 +403,18 @@ int main(int argc, char** argv) {
     requireWritable(args.output, "the motion file");
     requireWritable(args.sweep_csv, "the sweep CSV");
     const dh::Skeleton skeleton = dh::Skeleton::fromUrdfFile(args.urdf);
-    const dh::SampledMotion sampled = readCapture(args, skeleton);
-    const dh::MotionFit fit = dh::fitMotion(sampled, args.fit);
+    const dh::SampledMotion sampled = readCapture(args, skeleton, args.fit_body);
+    dh::MotionFit fit = dh::fitMotion(sampled, args.fit);
     const dh::FitAccuracy accuracy = dh::measureFitAccuracy(skeleton, sampled, fit, fit.motion);
-    if (!args.quiet) report(args, sampled, fit, accuracy);
+    // The same capture on our default body, for the comparison the report and the file state.
+    std::optional<dh::FitAccuracy> default_body;
+    if (sampled.body_fitted) {
+      const dh::SampledMotion unfitted = readCapture(args, skeleton, false);
+      const dh::MotionFit unfitted_fit = dh::fitMotion(unfitted, args.fit);
+      default_body = dh::measureFitAccuracy(skeleton, unfitted, unfitted_fit, unfitted_fit.motion);
+      fit.motion.body_shape = sampled.proportions.shape;
+    }
+    if (!args.quiet) report(args, sampled, fit, accuracy, default_body);
 
     std::map<std::string, std::string> notes;
     std::map<std::string, double> residuals;
@@ -380,8 +442,8 @@ int main(int argc, char** argv) {
            << "Least-squares Fourier series per DOF (Eq. 1, radians; root translation in metres): order m\n"
            << "the smallest reaching RMS " << args.fit.tolerance_degrees << " deg / " << args.fit.tolerance_metres * 1000.0
            << " mm, capped at " << fit.max_order_allowed << "; rms_residual in radians or metres.\n"
-           << "Joint positions vs the capture's own FK (scaled to our stature): mean "
-           << format(accuracy.against_capture.mean_cm, 2) << " cm; vs the unsmoothed retarget: mean "
+           << accuracyText(sampled, accuracy, default_body) << "\n"
+           << "Our skeleton on the fitted series vs on the unsmoothed retarget: mean "
            << format(accuracy.against_samples.mean_cm, 3) << " cm.";
     std::ostringstream text;
     dh::writeMotionYaml(fit.motion, text, header.str(), notes, residuals);

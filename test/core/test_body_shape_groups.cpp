@@ -52,7 +52,7 @@ TEST(BodyShapeGroups, UnshapedJointTransformsComposeToTheShapedPose) {
   const ForwardKinematics kinematics(skeleton, shape);
   kinematics.compute(root, angles, shaped);
   std::array<RigidTransform, kBoneCount> composed;
-  kinematics.composeUnshaped(root, unshaped.bone_in_parent, composed);
+  kinematics.composeFromTf(root, unshaped.bone_in_parent, composed);
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     EXPECT_LT((composed[b].translation - shaped.bone_in_world[b].translation).norm(), 1e-12) << skeleton.bone(b).name;
     EXPECT_LT(composed[b].rotation.angularDistance(shaped.bone_in_world[b].rotation), 1e-12) << skeleton.bone(b).name;

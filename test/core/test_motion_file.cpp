@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadFile{"syntax_error.yaml", ":3:1: not valid YAML"},
         BadFile{"empty.yaml", "the motion file is empty"},
-        BadFile{"unknown_top_key.yaml", ":4:1: speed: unknown key; expected one of: joints, name, period, root"},
+        BadFile{"unknown_top_key.yaml", ":4:1: speed: unknown key; expected one of: body_shape, joints, name, period, root"},
         BadFile{"missing_period.yaml", "period: missing"},
         BadFile{"negative_period.yaml", ":1:9: period: must be > 0 seconds, got -1.1"},
         BadFile{"period_not_number.yaml", ":1:9: period: expected a number, got 'fast'"},

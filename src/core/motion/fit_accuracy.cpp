@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dressed_human/core/motion/motion_evaluator.h"
 
@@ -39,18 +40,45 @@ Eigen::Quaterniond rotationFromRollPitchYaw(double roll, double pitch, double ya
                             Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()));
 }
 
+// Our lowest foot point (ankle joint or foot bone end, world height) against the capture's, for
+// each foot the capture has in stance in this frame.
+void addStanceFeet(const ForwardKinematics& kinematics, const RigidTransform& root, const JointAngles& angles,
+                   const std::array<double, 2>& capture_lowest, const std::array<double, 2>& lowest_in_window,
+                   SkeletonPose& pose, ErrorAccumulator& feet) {
+  kinematics.compute(root, angles, pose);
+  const Skeleton& skeleton = kinematics.skeleton();
+  for (std::size_t side = 0; side < 2; ++side) {
+    if (capture_lowest[side] > lowest_in_window[side] + FitAccuracy::kStanceBand) continue;
+    const auto foot = static_cast<std::size_t>(skeleton.findBone(side == 0 ? "l_ankle" : "r_ankle"));
+    const RigidTransform& frame = pose.bone_in_world[foot];
+    const double length = kinematics.shape().scale[foot].z() * skeleton.bone(foot).length;
+    const double ours = std::min(frame.translation.z(), (frame.translation + frame.rotation * Eigen::Vector3d(0, 0, length)).z());
+    feet.add(Eigen::Vector3d(0, 0, ours), Eigen::Vector3d(0, 0, capture_lowest[side]));
+  }
+}
+
 }  // namespace
 
 FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sampled, const MotionFit& fit,
                                const Motion& motion) {
-  const ForwardKinematics kinematics(skeleton);
+  const ForwardKinematics kinematics(skeleton, sampled.proportions.shape);
   MotionEvaluator evaluator(motion);
   ErrorAccumulator capture;
+  std::array<ErrorAccumulator, kJointCount> joint_capture;
   ErrorAccumulator unsmoothed_capture;
   ErrorAccumulator samples;
   ErrorAccumulator root;
   const std::size_t first = fit.skipped_frames;  // the window starts after the skipped frames
   const bool has_capture = sampled.reference_joint_positions.size() >= first + fit.frames_used;
+  ErrorAccumulator feet;
+  const bool has_feet = sampled.body_fitted && sampled.reference_lowest_foot.size() >= first + fit.frames_used;
+  std::array<double, 2> lowest_in_window = {std::numeric_limits<double>::infinity(),
+                                            std::numeric_limits<double>::infinity()};
+  for (std::size_t f = 0; has_feet && f < fit.frames_used; ++f) {
+    for (std::size_t side = 0; side < 2; ++side) {
+      lowest_in_window[side] = std::min(lowest_in_window[side], sampled.reference_lowest_foot[first + f][side]);
+    }
+  }
   const Eigen::Matrix3d to_walk = fit.walk_rotation.transpose();
   SkeletonPose fitted_pose;
   SkeletonPose sampled_pose;
@@ -62,6 +90,8 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
     const Eigen::Vector3d sampled_root(fit.samples[kDofCount][f], fit.samples[kDofCount + 1][f],
                                        fit.samples[kDofCount + 2][f]);
     root.add(fitted_root.translation, sampled_root);
+    if (has_feet) addStanceFeet(kinematics, fitted_root, fitted_angles, sampled.reference_lowest_foot[first + f],
+                                lowest_in_window, fitted_pose, feet);
     fitted_root.translation.setZero();
 
     JointAngles sampled_angles{};
@@ -79,15 +109,18 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
       if (has_capture) {
         const Eigen::Vector3d reference = to_walk * sampled.reference_joint_positions[first + f][j];
         capture.add(ours, reference);
+        joint_capture[j].add(ours, reference);
         unsmoothed_capture.add(sampled_pose.bone_in_world[bone].translation, reference);
       }
     }
   }
   FitAccuracy accuracy;
   accuracy.against_capture = capture.result();
+  for (std::size_t j = 0; j < kJointCount; ++j) accuracy.joint_against_capture[j] = joint_capture[j].result();
   accuracy.unsmoothed_against_capture = unsmoothed_capture.result();
   accuracy.against_samples = samples.result();
   accuracy.root_translation = root.result();
+  accuracy.stance_foot_height = feet.result();
   std::size_t driven = 0;
   for (std::size_t i = 0; i < Motion::kSeriesCount; ++i) {
     const SeriesFitReport& report = fit.reports[i];

@@ -13,11 +13,15 @@ namespace {
 
 // humanJointNames() order: waist torso neck head l_shoulder l_elbow l_wrist r_shoulder r_elbow
 // r_wrist l_hip l_knee l_ankle r_hip r_knee r_ankle. Each source joint is the one at the proximal
-// end of the same segment (LeftUpLeg rotates the thigh, LeftLeg the shank, ...).
+// end of the same segment (LeftUpLeg rotates the thigh, LeftLeg the shank, ...). The spine by
+// place: CMU's LowerBack sits at the pelvis like our waist joint, Spine1 and Neck share the
+// base of the neck (the ASF thorax has no length), so our chest spans Spine to Neck1 and our
+// head starts at Head; this puts our spine joints within 1 cm of the capture's (Spine, Spine1 for
+// waist and torso left them 5 cm off).
 BvhJointMap cmuBvhMap() {
   return {"CMU BVH",
           "Hips",
-          {"Spine", "Spine1", "Neck1", "Head", "LeftArm", "LeftForeArm", "LeftHand", "RightArm", "RightForeArm",
+          {"LowerBack", "Spine", "Neck1", "Head", "LeftArm", "LeftForeArm", "LeftHand", "RightArm", "RightForeArm",
            "RightHand", "LeftUpLeg", "LeftLeg", "LeftFoot", "RightUpLeg", "RightLeg", "RightFoot"}};
 }
 
@@ -25,7 +29,7 @@ BvhJointMap cmuBvhMap() {
 BvhJointMap asfMap() {
   return {"ASF",
           "root",
-          {"upperback", "thorax", "upperneck", "head", "lhumerus", "lradius", "lwrist", "rhumerus", "rradius",
+          {"lowerback", "upperback", "upperneck", "head", "lhumerus", "lradius", "lwrist", "rhumerus", "rradius",
            "rwrist", "lfemur", "ltibia", "lfoot", "rfemur", "rtibia", "rfoot"}};
 }
 

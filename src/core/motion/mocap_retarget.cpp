@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dressed_human/core/motion/motion.h"
 
@@ -17,6 +18,7 @@ constexpr int kLeftHip = 10;
 constexpr int kLeftKnee = 11;
 constexpr int kLeftAnkle = 12;
 constexpr int kRightHip = 13;
+constexpr int kRightAnkle = 15;
 
 Eigen::Matrix3d toMatrix(const Eigen::Quaterniond& q) { return q.normalized().toRotationMatrix(); }
 
@@ -91,6 +93,70 @@ Eigen::Matrix3d chainRotation(const std::vector<CoordinateRotation>& chain, cons
   return rotation;
 }
 
+// With a fitted body, the root and the reference in metres of the capture: our joints (FK with
+// the fitted shape on the retargeted angles) and the capture's, both relative to the source root,
+// differ by a constant offset of our root in the pelvis frame; it is the mean of their
+// differences, turned into the body frame, over every driven joint and frame (least squares).
+void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
+                     const Eigen::Matrix3d& to_ours, std::size_t root, const std::array<std::size_t, kJointCount>& source_joint,
+                     SampledMotion& motion) {
+  const double metres = motion.units.metres_per_unit;
+  const ForwardKinematics kinematics(skeleton, motion.proportions.shape);
+  const std::size_t frames = clip.frames.size();
+  std::vector<BvhPose> poses(frames);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  std::size_t count = 0;
+  SkeletonPose ours;
+  for (std::size_t f = 0; f < frames; ++f) {
+    poses[f] = bvhForwardKinematics(clip, f);
+    RigidTransform body;
+    body.rotation = motion.root[f].rotation;
+    kinematics.compute(body, motion.angles[f], ours);
+    const Eigen::Matrix3d to_body = toMatrix(body.rotation).transpose();
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      if (!motion.driven[j]) continue;
+      const Eigen::Vector3d source = metres * (to_ours * (poses[f].position[source_joint[j]] - poses[f].position[root]));
+      sum += to_body * (source - ours.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation);
+      ++count;
+    }
+  }
+  motion.root_offset = count > 0 ? Eigen::Vector3d(sum / static_cast<double>(count)) : Eigen::Vector3d::Zero();
+  motion.root_scale = metres;
+  motion.reference_scale = metres;
+  // The lowest point of each foot: the mapped ankle's subtree, joints and end sites.
+  std::array<std::vector<std::size_t>, 2> feet;
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::string& ankle = map.joints[side == 0 ? kLeftAnkle : kRightAnkle];
+    if (ankle.empty()) continue;
+    std::vector<std::size_t> stack = {static_cast<std::size_t>(clip.findJoint(ankle))};
+    while (!stack.empty()) {
+      feet[side].push_back(stack.back());
+      stack.pop_back();
+      for (const int child : clip.joints[feet[side].back()].children) stack.push_back(static_cast<std::size_t>(child));
+    }
+  }
+  motion.reference_lowest_foot.assign(frames, {0.0, 0.0});
+  for (std::size_t f = 0; f < frames; ++f) {
+    const Eigen::Vector3d offset = toMatrix(motion.root[f].rotation) * motion.root_offset;
+    motion.root[f].translation = metres * (to_ours * poses[f].position[root]) + offset;
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      if (!motion.driven[j]) continue;
+      motion.reference_joint_positions[f][j] =
+          metres * (to_ours * (poses[f].position[source_joint[j]] - poses[f].position[root])) - offset;
+    }
+    for (std::size_t side = 0; side < 2; ++side) {
+      double lowest = std::numeric_limits<double>::infinity();
+      for (const std::size_t j : feet[side]) {
+        lowest = std::min(lowest, metres * (to_ours * poses[f].position[j]).z());
+        for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
+          lowest = std::min(lowest, metres * (to_ours * (poses[f].position[j] + poses[f].rotation[j] * end)).z());
+        }
+      }
+      motion.reference_lowest_foot[f][side] = feet[side].empty() ? 0.0 : lowest;
+    }
+  }
+}
+
 }  // namespace
 
 // Where the middle angle nears +-90 degrees the outer two share one axis. Their split is then
@@ -133,7 +199,7 @@ double skeletonStature(const Skeleton& skeleton) {
 }
 
 SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
-                          const std::string& source_name) {
+                          const std::string& source_name, const RetargetOptions& options) {
   checkBvhJointMap(map, clip, source_name);
   const BvhPose source_rest = bvhRestPose(clip);
   const RestPose our_rest = ourRestPose(skeleton);
@@ -163,6 +229,11 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   std::array<std::size_t, kJointCount> source_joint{};
   SampledMotion motion;
   motion.source = source_name;
+  if (options.fit_body) {
+    motion.units = options.units.empty() ? detectBvhUnits(clip, source_name) : unitsByName(options.units);
+    motion.proportions = fitBodyProportions(clip, map, skeleton, motion.units.metres_per_unit, source_name);
+    motion.body_fitted = true;
+  }
   for (std::size_t j = 0; j < kJointCount; ++j) {
     motion.driven[j] = !map.joints[j].empty();
     if (!motion.driven[j]) continue;
@@ -242,6 +313,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     motion.root[f].translation = position;
     motion.root[f].rotation = Eigen::Quaterniond(body).normalized();
   }
+  if (motion.body_fitted) placeFittedBody(clip, map, skeleton, to_ours, root, source_joint, motion);
   return motion;
 }
 

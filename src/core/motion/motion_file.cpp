@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "dressed_human/core/io/yaml_reader.h"
+#include "dressed_human/core/skeleton/body_shape_yaml.h"
 
 namespace dressed_human {
 namespace {
@@ -48,7 +49,7 @@ std::set<std::string> namesOf(const std::array<const char*, N>& names) {
 Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_name) {
   const Reader reader(source_name);
   const YAML::Node document = reader.load(yaml_text, "the motion file");
-  reader.rejectUnknownKeys(document, "", {"name", "period", "joints", "root"});
+  reader.rejectUnknownKeys(document, "", {"name", "period", "joints", "root", "body_shape"});
 
   Motion motion;
   if (document["name"]) {
@@ -57,6 +58,10 @@ Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_n
   const YAML::Node period = reader.require(document, "period", "");
   motion.period = reader.number(period, "period");
   if (motion.period <= 0.0) reader.fail(period, "period", "must be > 0 seconds, got " + period.Scalar());
+  if (const YAML::Node shape = document["body_shape"]) {
+    motion.body_shape.emplace();
+    readBodyShapeYaml(reader, shape, "body_shape", *motion.body_shape);
+  }
 
   const YAML::Node joints = reader.require(document, "joints", "");
   reader.requireMap(joints, "joints");
@@ -163,6 +168,14 @@ void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string&
     text << "    " << kRootRotationNames[k] << ": ";
     writeSeries(text, motion.root.rotation[k], motion.period, note(kDofCount + 3 + k),
                 residual(kDofCount + 3 + k));
+  }
+  if (motion.body_shape) {
+    text << "body_shape:  # the person's proportions (Eq. 5 [a, b, c] per bone): robot_description must carry them\n";
+    text << std::setprecision(6);
+    for (std::size_t b = 0; b < kBoneCount; ++b) {
+      const Eigen::Vector3d& abc = motion.body_shape->scale[b];
+      text << "  " << humanBoneLayout()[b].name << ": [" << abc.x() << ", " << abc.y() << ", " << abc.z() << "]\n";
+    }
   }
   out << text.str();
 }

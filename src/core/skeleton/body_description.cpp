@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "dressed_human/core/io/yaml_reader.h"
+#include "dressed_human/core/skeleton/body_shape_yaml.h"
 
 namespace dressed_human {
 namespace {
@@ -52,37 +53,6 @@ struct SegmentsRead {
   std::vector<YAML::Node> nodes;
   std::vector<int> joined_child;  // per segment, the segment continuing it; -1: none
 };
-
-// Groups and bones, applied in document order (later entries override).
-void readShape(const BodyYamlReader& reader, const YAML::Node& shape, const Skeleton& skeleton, BodyShape& body_shape) {
-  reader.requireMap(shape, "shape");
-  for (const auto& entry : shape) {
-    const std::string name = entry.first.Scalar();
-    const std::string key = "shape." + name;
-    std::vector<std::string> bones;
-    for (const auto& group : bodyShapeGroups()) {
-      if (group.first == name) bones = group.second;
-    }
-    if (bones.empty()) {
-      if (skeleton.findBone(name) < 0) {
-        std::string groups;
-        for (const auto& group : bodyShapeGroups()) groups += (groups.empty() ? "" : ", ") + group.first;
-        reader.fail(entry.first, key, "neither a bone of the skeleton nor a group (" + groups + ")");
-      }
-      bones.push_back(name);
-    }
-    const std::vector<double> abc = reader.numbers(entry.second, key, 3, "[a, b, c] (Eq. 5 scale of x, y, z)");
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (!(abc[k] >= 0.2 && abc[k] <= 5.0)) {
-        reader.fail(entry.second, key, "scale " + format(abc[k]) + " outside [0.2, 5]");
-      }
-    }
-    for (const std::string& bone : bones) {
-      const int index = skeleton.findBone(bone);
-      if (index >= 0) body_shape.scale[static_cast<std::size_t>(index)] = Eigen::Vector3d(abc[0], abc[1], abc[2]);
-    }
-  }
-}
 
 // One entry of `segments`: its bone, joined flag, caps and sections, checked on their own.
 SkinSegmentSpec readSegment(const BodyYamlReader& reader, const YAML::Node& node, std::size_t index,
@@ -202,7 +172,7 @@ BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Ske
     body.name = reader.text(document["name"], "name");
   }
   const YAML::Node shape = document["shape"];
-  if (shape && !shape.IsNull()) readShape(reader, shape, skeleton, body.shape);
+  if (shape && !shape.IsNull()) readBodyShapeYaml(reader, shape, "shape", body.shape);
 
   const YAML::Node segments = reader.require(document, "segments", "");
   if (!segments.IsSequence() || segments.size() == 0) {

@@ -41,6 +41,9 @@ ForwardKinematics::ForwardKinematics(const Skeleton& skeleton, const BodyShape& 
     const Eigen::Vector3d parent_scale =
         bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
     scaled_rest_translation_[b] = parent_scale.cwiseProduct(bone.rest_translation);
+    tf_offset_scale_[b] = bone.parent < 0 ? Eigen::Vector3d(Eigen::Vector3d::Ones())
+                                          : Eigen::Vector3d(parent_scale.cwiseQuotient(
+                                                skeleton_.bodyShape().scale[static_cast<std::size_t>(bone.parent)]));
   }
 }
 
@@ -69,16 +72,14 @@ void ForwardKinematics::compute(const RigidTransform& root, const JointAngles& a
   }
 }
 
-void ForwardKinematics::composeUnshaped(const RigidTransform& root,
-                                        const std::array<RigidTransform, kBoneCount>& unshaped_in_parent,
-                                        std::array<RigidTransform, kBoneCount>& bone_in_world) const {
+void ForwardKinematics::composeFromTf(const RigidTransform& root,
+                                      const std::array<RigidTransform, kBoneCount>& tf_in_parent,
+                                      std::array<RigidTransform, kBoneCount>& bone_in_world) const {
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     const int parent = skeleton_.bone(b).parent;
-    const Eigen::Vector3d parent_scale =
-        parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(parent)];
-    const RigidTransform& local = unshaped_in_parent[b];
+    const RigidTransform& local = tf_in_parent[b];
     attach(parent < 0 ? root : bone_in_world[static_cast<std::size_t>(parent)],
-           parent_scale.cwiseProduct(local.translation), local.rotation, bone_in_world[b]);
+           tf_offset_scale_[b].cwiseProduct(local.translation), local.rotation, bone_in_world[b]);
   }
 }
 

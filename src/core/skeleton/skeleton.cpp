@@ -1,4 +1,5 @@
 #include "dressed_human/core/skeleton/skeleton.h"
+#include "dressed_human/core/skeleton/urdf_body_shape.h"
 #include "dressed_human/core/io/text_file.h"
 
 #include <algorithm>
@@ -202,6 +203,16 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
     }
     bone.parent = skeleton.findBone(kLayoutParents[index].parent);
     skeleton.bones_.push_back(bone);
+  }
+  // A generated URDF carries its shape in the numbers: the skeleton is the unshaped one.
+  skeleton.body_shape_ = urdfBodyShape(urdf_xml);
+  for (Bone& bone : skeleton.bones_) {
+    const Eigen::Vector3d& own = skeleton.body_shape_.scale[static_cast<std::size_t>(&bone - skeleton.bones_.data())];
+    if (bone.parent >= 0) {
+      bone.rest_translation = bone.rest_translation.cwiseQuotient(skeleton.body_shape_.scale[static_cast<std::size_t>(bone.parent)]);
+    }
+    bone.length /= own.z();
+    bone.radius /= 0.5 * (own.x() + own.y());
   }
   return skeleton;
 }

@@ -6,7 +6,8 @@
 // over the fit window; the root's own translation error is reported separately. For each driven
 // joint, the position of our bone's proximal joint is compared with
 //  - the capture skeleton's own forward kinematics scaled to our stature ("against the capture":
-//    includes the difference of bone proportions between the two skeletons), and
+//    includes the difference of bone proportions between the two skeletons; with a fitted body,
+//    our skeleton has the capture's proportions and the capture is in its own metres), and
 //  - our skeleton driven by the unsmoothed retargeted angles ("against the samples": the error
 //    that the truncated series alone adds).
 
@@ -26,11 +27,17 @@ struct PositionError {
 
 struct FitAccuracy {
   PositionError against_capture;     // empty (samples = 0) without a capture skeleton
+  std::array<PositionError, kJointCount> joint_against_capture;  // the same per joint
   // Our skeleton on the unsmoothed retargeted angles vs the capture: the floor that the two
   // skeletons' different bone proportions set, whatever the order.
   PositionError unsmoothed_against_capture;
   PositionError against_samples;
   PositionError root_translation;    // fitted root vs sampled root, walk frame
+  // With a fitted body (SampledMotion::body_fitted): the height of our lowest foot point (ankle
+  // joint or foot bone end) against the capture's lowest foot point, both feet, over the frames
+  // where the capture's foot is in stance (within kStanceBand of its lowest in the window).
+  PositionError stance_foot_height;
+  static constexpr double kStanceBand = 0.02;  // m
   double mean_rms_degrees = 0.0;     // over driven angle series
   double max_rms_degrees = 0.0;
 };

@@ -16,7 +16,9 @@
 
 #include <Eigen/Geometry>
 
+#include "dressed_human/core/motion/body_proportions.h"
 #include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/motion/capture_units.h"
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 #include "dressed_human/core/motion/mocap_joint_map.h"
 #include "dressed_human/core/motion/opensim_motion_file.h"
@@ -33,11 +35,23 @@ struct SampledMotion {
   std::vector<RigidTransform> root;          // our body frame in the capture's world, our axes (z up), metres
   std::array<bool, kJointCount> driven{};    // false: the source does not move this joint (held at rest)
   // The source skeleton's own forward kinematics, for the accuracy metric: the proximal joint of
-  // every driven bone relative to the source root, our axes, scaled to our stature. Empty when the
-  // source has no skeleton (joint coordinates).
+  // every driven bone, our axes, relative to our root. Without a fitted body: relative to the
+  // source root, scaled to our stature; with one: metres, relative to where our root is placed in
+  // the capture's world. Empty when the source has no skeleton (joint coordinates).
   std::vector<JointPositions> reference_joint_positions;
+  // With a fitted body: the lowest point of each foot of the capture (the mapped ankle's subtree,
+  // joints and end sites; left, right), height in the capture's world, metres.
+  std::vector<std::array<double, 2>> reference_lowest_foot;
   double root_scale = 1.0;       // metres per source unit for the root translation (leg length ratio)
   double reference_scale = 1.0;  // metres per source unit for the reference positions (stature ratio)
+  // The captured person's proportions (body_proportions.h): set when RetargetOptions::fit_body;
+  // otherwise our default body (identity shape).
+  bool body_fitted = false;
+  BodyProportions proportions;
+  CaptureUnits units;            // of the source, when body_fitted
+  // Our root's place relative to the source root, in our body frame (metres): the offset that puts
+  // our joints nearest the capture's over the whole record (least squares), when body_fitted.
+  Eigen::Vector3d root_offset = Eigen::Vector3d::Zero();
 
   double frameTime() const { return times.size() > 1 ? times[1] - times[0] : 0.0; }
 };
@@ -52,10 +66,18 @@ Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& rotation);
 // The standing height of our skeleton at rest (lowest to highest bone end), metres.
 double skeletonStature(const Skeleton& skeleton);
 
+struct RetargetOptions {
+  // Fit the person's proportions (fitBodyProportions) and retarget onto our skeleton with them:
+  // the root moves in metres of the capture, the reference is the capture's own FK in metres.
+  bool fit_body = false;
+  std::string units;  // the capture's length unit (unitsByName); "": detected from the rest stature
+};
+
 // Throws JointMapError for a map that does not fit the clip and MotionError for a rest pose that
-// gives no left-right direction.
+// gives no left-right direction, and with fit_body for a rest pose whose unit or proportions
+// cannot be read.
 SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
-                          const std::string& source_name);
+                          const std::string& source_name, const RetargetOptions& options = RetargetOptions());
 SampledMotion retargetCoordinates(const OpenSimTable& table, const CoordinateJointMap& map, const Skeleton& skeleton,
                                   const std::string& source_name);
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,6 +65,9 @@ struct Motion {
   double period = 1.0;                           // the cycle, seconds: loops and start phase refer to it
   std::array<FourierSeries, kDofCount> dofs;     // index joint * 3 + dof, joints in skeleton order
   RootMotion root;
+  // The captured person's proportions (a fitted motion, body_proportions.h); absent: the motion
+  // fits any body. The node requires robot_description to carry them (urdf_body_shape.h).
+  std::optional<BodyShape> body_shape;
 
   // Throws MotionError naming the first series with a non-finite number, different counts of
   // cosine and sine coefficients, or a value outside MotionLimits (the value and the range).

@@ -12,6 +12,8 @@
 //     forward_speed: 1.2            # m/s
 //     translation: {x: {...}, y: {...}, z: {...}}     # metres, Eq. 1 series each
 //     rotation: {roll: {...}, pitch: {...}, yaw: {...}}  # radians
+//   body_shape:                     # optional: the captured person's proportions (fit_motion)
+//     l_hip: [0.93, 0.93, 1.02]       # Eq. 5 [a, b, c] per bone or group, as a body file's shape
 //
 // A series may also carry `rms_residual` (radians or metres, from a fit): kept, not used.
 // Every error names the file, the line and column, and the key path, e.g.

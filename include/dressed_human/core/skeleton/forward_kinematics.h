@@ -12,13 +12,6 @@ namespace dressed_human {
 // Angle index = joint * 3 + dof, dof in chain order (y, x, z); radians.
 using JointAngles = std::array<double, kDofCount>;
 
-// Eq. 5 per bone: P' = [a Px, b Py, c Pz] in the bone frame. c scales the bone's length, a and b
-// its thickness. Children attach at the scaled position of their joint in this bone's frame.
-struct BodyShape {
-  std::array<Eigen::Vector3d, kBoneCount> scale;
-  BodyShape() { scale.fill(Eigen::Vector3d::Ones()); }
-};
-
 struct RigidTransform {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
@@ -39,11 +32,12 @@ class ForwardKinematics {
 
   // Allocation-free; `pose` is filled completely.
   void compute(const RigidTransform& root, const JointAngles& angles, SkeletonPose& pose) const;
-  // Every bone frame in the world from `root` and each bone's frame in its parent as the URDF
-  // (and so TF) carries it, unshaped: the shape moves each joint to its parent's scaled offset,
-  // as compute() does, and leaves the rotations as they are. Allocation-free.
-  void composeUnshaped(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& unshaped_in_parent,
-                       std::array<RigidTransform, kBoneCount>& bone_in_world) const;
+  // Every bone frame in the world from `root` and each bone's frame in its parent as TF carries
+  // it: the URDF's offsets, which hold the URDF's own body shape (Skeleton::bodyShape()). This
+  // shape's factors beyond that one move each joint along its parent's axes, as compute() does;
+  // the rotations stay as they are. Allocation-free.
+  void composeFromTf(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& tf_in_parent,
+                     std::array<RigidTransform, kBoneCount>& bone_in_world) const;
 
   // Where a bone frame sits in its parent, shape applied (also the fixed joints' TF).
   const Eigen::Vector3d& scaledRestTranslation(std::size_t bone) const { return scaled_rest_translation_[bone]; }
@@ -54,6 +48,7 @@ class ForwardKinematics {
   Skeleton skeleton_;
   BodyShape shape_;
   std::array<Eigen::Vector3d, kBoneCount> scaled_rest_translation_;
+  std::array<Eigen::Vector3d, kBoneCount> tf_offset_scale_;  // this shape / the URDF's, of the parent
 };
 
 }  // namespace dressed_human

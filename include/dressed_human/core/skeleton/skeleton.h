@@ -22,6 +22,14 @@ enum class JointAxis : int { kY = 0, kX = 1, kZ = 2 };
 constexpr std::array<const char*, kDofsPerJoint> kDofNames = {"y", "x", "z"};
 constexpr std::array<const char*, kDofsPerJoint> kUrdfDofSuffixes = {"ry", "rx", "rz"};
 
+// Eq. 5 per bone: P' = [a Px, b Py, c Pz] in the bone frame. c scales the bone's length, a and b
+// its thickness. Children attach at the scaled position of their joint in this bone's frame.
+struct BodyShape {
+  std::array<Eigen::Vector3d, kBoneCount> scale;
+  BodyShape() { scale.fill(Eigen::Vector3d::Ones()); }
+  bool isIdentity() const;
+};
+
 struct SkeletonError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -50,6 +58,9 @@ class Skeleton {
  public:
   // Parses a URDF (the text of robot_description). Link and joint names may carry a common
   // "_<id>" suffix (several humans in one TF tree); it is detected from the root link "body_<id>".
+  // A URDF written by shapedUrdf() (urdf_body_shape.h) carries a person's proportions: the bones
+  // are read back as the unshaped skeleton and the proportions are bodyShape(), so that
+  // ForwardKinematics(skeleton, skeleton.bodyShape()) puts every joint where the URDF does.
   // Throws SkeletonError naming the link or joint that does not fit the human layout.
   static Skeleton fromUrdf(const std::string& urdf_xml);
   static Skeleton fromUrdfFile(const std::string& path);
@@ -63,6 +74,9 @@ class Skeleton {
   int findBone(const std::string& name) const;
   int findJoint(const std::string& name) const;
 
+  // The proportions the URDF was generated with; identity for a URDF that records none.
+  const BodyShape& bodyShape() const { return body_shape_; }
+
   const std::string& suffix() const { return suffix_; }            // "" or "_<id>"
   std::string frameName(const std::string& plain) const { return plain + suffix_; }
   std::string rootFrame() const { return frameName("body"); }
@@ -75,6 +89,7 @@ class Skeleton {
   std::vector<Bone> bones_;               // parents before children
   std::vector<ArticulatedJoint> joints_;  // in bone order
   std::string suffix_;
+  BodyShape body_shape_;
 };
 
 // The 20 bone frame names the layout expects, parents before children, and their anatomy.

@@ -1,0 +1,144 @@
+#include "dressed_human/core/motion/body_proportions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "dressed_human/core/motion/capture_units.h"
+#include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/motion/motion.h"
+#include "dressed_human/core/skeleton/body_shape_groups.h"
+
+namespace dressed_human {
+namespace {
+
+// For each of our joints, the joint at the distal end of its bone (-1: the bone ends free).
+constexpr std::array<int, kJointCount> kDistalJoint = {1, 2, 3, -1, 5, 6, -1, 8, 9, -1, 11, 12, -1, 14, 15, -1};
+constexpr int kLeftShoulder = 4;
+constexpr int kRightShoulder = 7;
+constexpr int kLeftHip = 10;
+constexpr int kLeftAnkle = 12;
+constexpr int kRightHip = 13;
+constexpr int kRightAnkle = 15;
+
+// The farthest joint or end site below `joint` (its own subtree), in file units.
+double farthestBelow(const BvhClip& clip, const BvhPose& rest, std::size_t joint) {
+  double farthest = 0.0;
+  std::vector<std::size_t> stack = {joint};
+  while (!stack.empty()) {
+    const std::size_t j = stack.back();
+    stack.pop_back();
+    farthest = std::max(farthest, (rest.position[j] - rest.position[joint]).norm());
+    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
+      farthest = std::max(farthest, (rest.position[j] + end - rest.position[joint]).norm());
+    }
+    for (const int child : clip.joints[j].children) stack.push_back(static_cast<std::size_t>(child));
+  }
+  return farthest;
+}
+
+std::array<Eigen::Vector3d, kBoneCount> restPositions(const Skeleton& skeleton, const BodyShape& shape) {
+  const ForwardKinematics kinematics(skeleton, shape);
+  SkeletonPose pose;
+  kinematics.compute(RigidTransform(), JointAngles{}, pose);
+  std::array<Eigen::Vector3d, kBoneCount> positions;
+  for (std::size_t b = 0; b < kBoneCount; ++b) positions[b] = pose.bone_in_world[b].translation;
+  return positions;
+}
+
+std::string factorText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3g", value);
+  return text;
+}
+
+}  // namespace
+
+BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
+                                   double metres_per_unit, const std::string& source_name) {
+  checkBvhJointMap(map, clip, source_name);
+  const BvhPose rest = bvhRestPose(clip);
+  const auto source = [&](int joint) -> const Eigen::Vector3d& {
+    return rest.position[static_cast<std::size_t>(clip.findJoint(map.joints[static_cast<std::size_t>(joint)]))];
+  };
+  const auto boneOf = [&](int joint) { return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone); };
+
+  BodyProportions proportions;
+  const auto check = [&](double factor, const std::string& what) {
+    if (!(factor >= kMinShapeScale && factor <= kMaxShapeScale)) {
+      throw MotionError(source_name + ": " + what + " is " + factorText(factor) + " times ours, outside [" +
+                        factorText(kMinShapeScale) + ", " + factorText(kMaxShapeScale) +
+                        "]: a wrong unit (--units) or joint map?");
+    }
+    return factor;
+  };
+  const double stature = check(bvhRestStature(clip) * metres_per_unit / skeletonStature(skeleton), "the rest pose's stature");
+
+  // Lengths of the bones between two mapped joints, and of the feet (their length sets where the
+  // sole meets the ground). Head and hands end in markers placed differently by every capture
+  // (CMU's head segment ends mid-skull, its hand at the knuckles): they take the overall factor.
+  std::array<bool, kBoneCount> measured{};
+  for (int j = 0; j < static_cast<int>(kJointCount); ++j) {
+    const std::string& name = map.joints[static_cast<std::size_t>(j)];
+    if (name.empty()) continue;
+    const std::size_t bone = boneOf(j);
+    const int distal = kDistalJoint[static_cast<std::size_t>(j)];
+    const bool joint_to_joint = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty();
+    if (!joint_to_joint && j != kLeftAnkle && j != kRightAnkle) continue;
+    const double source_units = joint_to_joint ? (source(distal) - source(j)).norm()
+                                               : farthestBelow(clip, rest, static_cast<std::size_t>(clip.findJoint(name)));
+    const std::string segment =
+        joint_to_joint ? "the segment " + name + " to " + map.joints[static_cast<std::size_t>(distal)]
+                       : "the segment below " + name;
+    if (!(source_units > 1e-9)) {
+      throw MotionError(source_name + ": " + segment + " has no length at rest (zero OFFSETs): the " +
+                        skeleton.bone(bone).anatomical + "'s proportion cannot be read");
+    }
+    const double ours = joint_to_joint ? skeleton.bone(boneOf(distal)).rest_translation.norm() : skeleton.bone(bone).length;
+    proportions.source_length[bone] = source_units * metres_per_unit;
+    proportions.shape.scale[bone].z() = check(proportions.source_length[bone] / ours, segment + "'s length");
+    measured[bone] = true;
+  }
+  // The overall factor: the limbs' mean (thighs, shanks, upper arms, forearms), which capture
+  // skeletons agree on; the rest stature where no limb is mapped.
+  double sum = 0.0;
+  int limbs = 0;
+  for (const char* limb : {"l_hip", "r_hip", "l_knee", "r_knee", "l_shoulder", "r_shoulder", "l_elbow", "r_elbow"}) {
+    const auto bone = static_cast<std::size_t>(skeleton.findBone(limb));
+    if (!measured[bone]) continue;
+    sum += proportions.shape.scale[bone].z();
+    ++limbs;
+  }
+  proportions.overall = limbs > 0 ? sum / limbs : stature;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    proportions.shape.scale[b].x() = proportions.overall;
+    proportions.shape.scale[b].y() = proportions.overall;
+    if (!measured[b]) proportions.shape.scale[b].z() = proportions.overall;
+  }
+
+  // The fixed bones set the widths: each one's c moves the joints it carries along its axis, so
+  // the distance between the left and right joint is linear in c; two evaluations solve for it.
+  const auto fitWidth = [&](int left, int right, const char* fixed_left, const char* fixed_right, const char* what) {
+    if (map.joints[static_cast<std::size_t>(left)].empty() || map.joints[static_cast<std::size_t>(right)].empty()) return;
+    const double target = (source(left) - source(right)).norm() * metres_per_unit;
+    const auto width = [&](double c) {
+      BodyShape shape = proportions.shape;
+      for (const char* bone : {fixed_left, fixed_right}) shape.scale[static_cast<std::size_t>(skeleton.findBone(bone))].z() = c;
+      const auto positions = restPositions(skeleton, shape);
+      return (positions[boneOf(left)] - positions[boneOf(right)]).norm();
+    };
+    const double w1 = width(1.0);
+    const double w2 = width(2.0);
+    const double c = check(1.0 + (target - w1) / (w2 - w1), std::string("the ") + what);
+    for (const char* bone : {fixed_left, fixed_right}) {
+      const auto b = static_cast<std::size_t>(skeleton.findBone(bone));
+      proportions.shape.scale[b].z() = c;
+      proportions.source_length[b] = target;
+    }
+  };
+  fitWidth(kLeftHip, kRightHip, "l_pelvis", "r_pelvis", "hip width");
+  fitWidth(kLeftShoulder, kRightShoulder, "l_clavicle", "r_clavicle", "shoulder width");
+  return proportions;
+}
+
+}  // namespace dressed_human
