@@ -46,7 +46,7 @@ void requireSameBody(const Motion& motion, const Skeleton& skeleton, const std::
       std::ostringstream message;
       message << "motion file " << motion_file << " was fitted to a body whose " << skeleton.bone(b).name
               << " is [a, b, c] = [" << wanted.transpose() << "], but robot_description carries ["
-              << carried.transpose() << "]: set robot_description from `rosrun dressed_human human_urdf "
+              << carried.transpose() << "]: set robot_description from `scripts/human_urdf.py "
               << "<urdf> --motion " << motion_file << "` (skeleton.launch does)";
       throw ParameterError(message.str());
     }

@@ -66,6 +66,11 @@ class BadParametersTest(unittest.TestCase):
         self.assertRejected("coefficient_nan.yaml:4:25: joints.waist.y.a[2]: expected a finite number",
                             "_motion_file:=" + BAD_MOTION)
 
+    def test_fitted_motion_on_another_body(self):
+        fitted = os.path.join(roslib.packages.get_pkg_dir("dressed_human"), "config", "motions", "cmu_02_01_fitted.yaml")
+        self.assertRejected("cmu_02_01_fitted.yaml was fitted to a body whose waist is [a, b, c] = [",
+                            "_motion_file:=" + fitted)
+
     def test_missing_robot_description(self):
         self.assertRejected("parameter /nowhere/robot_description is not set", "__ns:=/nowhere")
 

@@ -36,6 +36,10 @@ SCENARIOS = {
     # Automatic level of detail at its extremes: about 45 px tall, and filling the view.
     "demo_far": {"launch": "demo.launch", "view": {"Distance": 40.0}},
     "demo_close": {"launch": "demo.launch", "view": {"Distance": 1.2}},
+    # A motion fitted to a person (fit_motion's body_shape): robot_description, TF and the drawn
+    # body all take that person's proportions.
+    "demo_fitted_body": {"launch": "demo.launch", "args": ["motion_file:=" + os.path.join(
+        PACKAGE, "config", "motions", "cmu_02_01_fitted.yaml")], "fitted_body": True},
     # 8 s of walk, looped: time jumps back five times during the observation.
     "replay": {"launch": "replay.launch", "record": 8},
     # A camera fixed in the world, looking at the middle of the recorded walk: each 16 s loop the
@@ -91,7 +95,7 @@ class HumanOnScreenTest(unittest.TestCase):
         scenario = SCENARIOS[name]
         output = os.path.join(os.environ.get("DRESSED_HUMAN_SCREENSHOTS", tempfile.mkdtemp()), name)
         os.makedirs(output, exist_ok=True)
-        arguments = ["rviz_args:=--disable-anti-aliasing"]
+        arguments = ["rviz_args:=--disable-anti-aliasing"] + scenario.get("args", [])
         shipped_config = os.path.join(PACKAGE, "rviz", scenario.get("config", "demo.rviz"))
         config = shipped_config
         view_changes = dict(scenario.get("view", {}))
@@ -119,6 +123,8 @@ class HumanOnScreenTest(unittest.TestCase):
             if "crowd" in scenario:
                 frames = crowd_frames(frames, scenario["crowd"])
             wait_for_view(launch, buffer, view, frames, os.path.join(output, "first.png"))
+            if scenario.get("fitted_body"):
+                self.assertIn("<dressed_human_body_shape>", rospy.get_param("/robot_description"))
             time.sleep(6.0)  # the display's first frame and skin relief map
             seconds, interval = (float(v) for v in os.environ.get("DRESSED_HUMAN_WATCH", "42 2.5").split())
             results = observe(launch, buffer, view, frames, output, seconds, interval,

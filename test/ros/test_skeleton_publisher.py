@@ -1,7 +1,13 @@
 #!/usr/bin/python3
-"""skeleton_publisher: exact frame set, rate, agreement with robot_state_publisher, bag replay."""
+"""skeleton_publisher: exact frame set, rate, agreement with robot_state_publisher, bag replay.
+
+--fitted-body: robot_description is a fitted person's (human_urdf): it must record the body shape,
+and the joints must sit at that person's proportions (robot_state_publisher reads the same URDF).
+"""
 import os
+import re
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -77,6 +83,20 @@ class SkeletonPublisherTest(unittest.TestCase):
         static_edges = {(t.header.frame_id, t.child_frame_id) for m in self.ours_static for t in m.transforms}
         self.assertEqual(static_edges, fixed)
         self.assertEqual(len(fixed), 4)
+
+    def test_body_of_the_description(self):
+        fitted = "--fitted-body" in sys.argv
+        self.assertEqual("<dressed_human_body_shape>" in self.urdf, fitted)
+        # The thigh's length in TF: the knee's offset from the hip, as the URDF's joint origin says.
+        knee = [t.transform.translation for m in self.ours for t in m.transforms if t.child_frame_id == "l_knee_ry_link"]
+        self.assertTrue(knee)
+        thigh = (knee[-1].x ** 2 + knee[-1].y ** 2 + knee[-1].z ** 2) ** 0.5
+        if fitted:
+            c = float(re.search(r'<bone name="l_hip" a="[^"]*" b="[^"]*" c="([^"]*)"', self.urdf).group(1))
+            self.assertNotAlmostEqual(c, 1.0, places=2)
+            self.assertAlmostEqual(thigh, 0.42 * c, places=6)
+        else:
+            self.assertAlmostEqual(thigh, 0.42, places=9)
 
     def test_rate_within_five_percent(self):
         stamps = [m.transforms[0].header.stamp.to_sec() for m in self.ours]
