@@ -21,22 +21,6 @@ constexpr int kLeftAnkle = 12;
 constexpr int kRightHip = 13;
 constexpr int kRightAnkle = 15;
 
-// The farthest joint or end site below `joint` (its own subtree), in file units.
-double farthestBelow(const BvhClip& clip, const BvhPose& rest, std::size_t joint) {
-  double farthest = 0.0;
-  std::vector<std::size_t> stack = {joint};
-  while (!stack.empty()) {
-    const std::size_t j = stack.back();
-    stack.pop_back();
-    farthest = std::max(farthest, (rest.position[j] - rest.position[joint]).norm());
-    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
-      farthest = std::max(farthest, (rest.position[j] + end - rest.position[joint]).norm());
-    }
-    for (const int child : clip.joints[j].children) stack.push_back(static_cast<std::size_t>(child));
-  }
-  return farthest;
-}
-
 std::array<Eigen::Vector3d, kBoneCount> restPositions(const Skeleton& skeleton, const BodyShape& shape) {
   const ForwardKinematics kinematics(skeleton, shape);
   SkeletonPose pose;
@@ -86,7 +70,7 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
     const bool joint_to_joint = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty();
     if (!joint_to_joint && j != kLeftAnkle && j != kRightAnkle) continue;
     const double source_units = joint_to_joint ? (source(distal) - source(j)).norm()
-                                               : farthestBelow(clip, rest, static_cast<std::size_t>(clip.findJoint(name)));
+                                               : bvhFarthestBelow(clip, rest, static_cast<std::size_t>(clip.findJoint(name))).norm();
     const std::string segment =
         joint_to_joint ? "the segment " + name + " to " + map.joints[static_cast<std::size_t>(distal)]
                        : "the segment below " + name;

@@ -278,6 +278,23 @@ BvhPose bvhRestPose(const BvhClip& clip) {
   return chainPose(clip, rotation, translation);
 }
 
+Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint) {
+  Eigen::Vector3d farthest = Eigen::Vector3d::Zero();
+  const auto consider = [&](const Eigen::Vector3d& point) {
+    const Eigen::Vector3d d = point - pose.position[joint];
+    if (d.norm() > farthest.norm()) farthest = d;
+  };
+  std::vector<std::size_t> stack = {joint};
+  while (!stack.empty()) {
+    const std::size_t j = stack.back();
+    stack.pop_back();
+    consider(pose.position[j]);
+    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) consider(pose.position[j] + pose.rotation[j] * end);
+    for (const int child : clip.joints[j].children) stack.push_back(static_cast<std::size_t>(child));
+  }
+  return farthest;
+}
+
 BvhClip parseBvh(const std::string& text, const std::string& source_name) {
   return BvhReader(text, source_name).read();
 }

@@ -240,10 +240,14 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     source_joint[j] = sourceIndex(map.joints[j]);
     const auto s = static_cast<int>(source_joint[j]);
     const int distal = kDistalJoint[j];
+    // A foot points at its farthest point (the toe tip), which its length reaches (body_proportions.h):
+    // in a flat stance the sole's line, where the first descendant (the ball) tilts it into the ground.
+    const bool foot = j == static_cast<std::size_t>(kLeftAnkle) || j == static_cast<std::size_t>(kRightAnkle);
     Eigen::Vector3d direction = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty()
                                     ? source_rest.position[sourceIndex(map.joints[static_cast<std::size_t>(distal)])] -
                                           source_rest.position[source_joint[j]]
-                                    : firstDistinctDescendant(clip, source_rest, s);
+                                : foot ? bvhFarthestBelow(clip, source_rest, source_joint[j])
+                                       : firstDistinctDescendant(clip, source_rest, s);
     if (direction.norm() < 1e-9) direction = firstDistinctDescendant(clip, source_rest, s);
     const std::size_t bone = static_cast<std::size_t>(skeleton.joint(j).bone);
     Eigen::Matrix3d offset = our_rest.rotation[bone];

@@ -52,6 +52,9 @@ struct BvhPose {
 BvhPose bvhForwardKinematics(const BvhClip& clip, std::size_t frame);
 // The same with every channel zero but the root at the origin: the rest (bind) pose.
 BvhPose bvhRestPose(const BvhClip& clip);
+// From `joint` to the farthest joint or end site of its subtree in `pose` (zero for a lone joint
+// without end sites): a segment's extent where it ends in markers (a foot's toe tip).
+Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint);
 
 // Throws BvhError "source:line: what" for any malformed input: unknown keywords, bad or missing
 // numbers, non-finite values, a frame count that does not match, unbalanced braces, ...
