@@ -29,6 +29,7 @@ step "Fourier order sweep (fit_motion) and chart"
 "$BIN/fit_motion" data/motion/cmu_02_01_walk.bvh -o "$RESULTS/walk_fit.yaml" --tolerance-deg 1.5 \
   --tolerance-mm 10 --max-order 6 --name cmu_02_01_walk --sweep-csv docs/fourier_order_sweep_cmu_02_01.csv
 $PY scripts/chart_fourier_order.py docs/fourier_order_sweep_cmu_02_01.csv
+$PY scripts/chart_body_fit.py "$BIN/fit_motion"
 
 step "tessellation accuracy and chart"
 $PY scripts/chart_tessellation.py --tool "$BIN/tessellation_accuracy"

@@ -301,23 +301,33 @@ std::pair<double, double> timeEvaluation(const dh::Motion& motion, const dh::Ske
   return {best_evaluate / static_cast<double>(per_round), best_with_fk / static_cast<double>(per_round)};
 }
 
+// `unfitted`: the same capture on our default body (when the body is fitted), for its columns.
 void writeSweep(const Arguments& args, const dh::Skeleton& skeleton, const dh::SampledMotion& sampled,
-                const dh::MotionFit& fit) {
+                const dh::MotionFit& fit, const dh::SampledMotion* unfitted, const dh::MotionFit* unfitted_fit) {
   std::ofstream csv(args.sweep_csv);
   if (!csv) throw std::runtime_error(args.sweep_csv + ": cannot write the sweep CSV");
   csv << "order,mean_rms_deg,max_rms_deg,joint_error_capture_mean_cm,joint_error_capture_max_cm,"
          "joint_error_samples_mean_cm,joint_error_samples_max_cm,root_error_mean_cm,unsmoothed_error_capture_mean_cm,"
-         "evaluate_ns,evaluate_fk_ns\n";
+         "evaluate_ns,evaluate_fk_ns,body_fitted,default_body_capture_mean_cm,default_body_capture_max_cm,"
+         "stance_foot_mean_cm,stance_foot_max_cm\n";
   const std::size_t limit = (fit.times.size() - 1) / 2;
   for (std::size_t order = 1; order <= args.sweep_max; ++order) {
     if (order > limit) break;
     const dh::MotionFit refit = dh::refitWithOrder(fit, order);
     const dh::FitAccuracy accuracy = dh::measureFitAccuracy(skeleton, sampled, refit, refit.motion);
     const auto [evaluate_ns, evaluate_fk_ns] = timeEvaluation(refit.motion, skeleton, args.timing_calls);
+    dh::FitAccuracy default_body = accuracy;
+    if (unfitted && unfitted_fit) {
+      const dh::MotionFit unfitted_refit = dh::refitWithOrder(*unfitted_fit, order);
+      default_body = dh::measureFitAccuracy(skeleton, *unfitted, unfitted_refit, unfitted_refit.motion);
+    }
     csv << order << ',' << accuracy.mean_rms_degrees << ',' << accuracy.max_rms_degrees << ','
         << accuracy.against_capture.mean_cm << ',' << accuracy.against_capture.max_cm << ','
         << accuracy.against_samples.mean_cm << ',' << accuracy.against_samples.max_cm << ','
-        << accuracy.root_translation.mean_cm << ',' << accuracy.unsmoothed_against_capture.mean_cm << ',' << evaluate_ns << ',' << evaluate_fk_ns << '\n';
+        << accuracy.root_translation.mean_cm << ',' << accuracy.unsmoothed_against_capture.mean_cm << ',' << evaluate_ns << ','
+        << evaluate_fk_ns << ',' << (sampled.body_fitted ? 1 : 0) << ',' << default_body.against_capture.mean_cm << ','
+        << default_body.against_capture.max_cm << ',' << accuracy.stance_foot_height.mean_cm << ','
+        << accuracy.stance_foot_height.max_cm << '\n';
     if (!args.quiet) {
       std::cerr << "  m=" << order << ": RMS mean " << format(accuracy.mean_rms_degrees, 3) << " deg (max "
                 << format(accuracy.max_rms_degrees, 3) << "), joints vs capture " << format(accuracy.against_capture.mean_cm, 2)
@@ -408,10 +418,12 @@ int main(int argc, char** argv) {
     const dh::FitAccuracy accuracy = dh::measureFitAccuracy(skeleton, sampled, fit, fit.motion);
     // The same capture on our default body, for the comparison the report and the file state.
     std::optional<dh::FitAccuracy> default_body;
+    std::optional<dh::SampledMotion> unfitted;
+    std::optional<dh::MotionFit> unfitted_fit;
     if (sampled.body_fitted) {
-      const dh::SampledMotion unfitted = readCapture(args, skeleton, false);
-      const dh::MotionFit unfitted_fit = dh::fitMotion(unfitted, args.fit);
-      default_body = dh::measureFitAccuracy(skeleton, unfitted, unfitted_fit, unfitted_fit.motion);
+      unfitted = readCapture(args, skeleton, false);
+      unfitted_fit = dh::fitMotion(*unfitted, args.fit);
+      default_body = dh::measureFitAccuracy(skeleton, *unfitted, *unfitted_fit, unfitted_fit->motion);
       fit.motion.body_shape = sampled.proportions.shape;
     }
     if (!args.quiet) report(args, sampled, fit, accuracy, default_body);
@@ -453,7 +465,9 @@ int main(int argc, char** argv) {
       std::ofstream out(args.output);
       if (!out || !(out << text.str())) throw std::runtime_error(args.output + ": cannot write the motion file");
     }
-    if (!args.sweep_csv.empty()) writeSweep(args, skeleton, sampled, fit);
+    if (!args.sweep_csv.empty()) {
+      writeSweep(args, skeleton, sampled, fit, unfitted ? &*unfitted : nullptr, unfitted_fit ? &*unfitted_fit : nullptr);
+    }
   } catch (const std::exception& error) {
     std::cerr << "fit_motion: " << error.what() << "\n";
     return 1;

@@ -49,6 +49,30 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
                 os.chmod(directory, 0o500)
                 self.assertRefused("is not writable", "-o", os.path.join(directory, "walk.yaml"))
 
+    def test_units_and_body_options_are_checked(self):
+        self.assertRefused("unknown length unit 'parsec': expected one of m, cm, mm, in, cmu", "--units", "parsec")
+        self.assertRefused("--body must be 'fitted' or 'default', got 'tall'", "--body", "tall")
+        # The right skeleton in a wrong unit: no human has those proportions.
+        code, stderr = run("--units", "m", "-q")
+        self.assertNotEqual(code, 0, stderr)
+        self.assertIn("outside [0.2, 5]: a wrong unit (--units) or joint map?", stderr)
+
+    def test_the_body_is_fitted_unless_asked_not_to(self):
+        with tempfile.TemporaryDirectory() as directory:
+            fitted = os.path.join(directory, "fitted.yaml")
+            code, stderr = run("-o", fitted, "--max-order", "2")
+            self.assertEqual(code, 0, stderr)
+            self.assertIn("units: cmu, the rest pose is", stderr)  # detected: CMU's ASF units
+            with open(fitted) as f:
+                text = f.read()
+            self.assertIn("\nbody_shape:", text)
+            self.assertIn("# Joint positions vs the capture's own FK (metres", text)
+            default = os.path.join(directory, "default.yaml")
+            code, stderr = run("-o", default, "--max-order", "2", "--body", "default", "--units", "cmu")
+            self.assertEqual(code, 0, stderr)
+            with open(default) as f:
+                self.assertNotIn("body_shape", f.read())
+
     def test_a_good_output_is_written(self):
         with tempfile.TemporaryDirectory() as directory:
             output = os.path.join(directory, "walk.yaml")

@@ -93,13 +93,17 @@ Eigen::Matrix3d chainRotation(const std::vector<CoordinateRotation>& chain, cons
   return rotation;
 }
 
-// With a fitted body, the root and the reference in metres of the capture: our joints (FK with
-// the fitted shape on the retargeted angles) and the capture's, both relative to the source root,
-// differ by a constant offset of our root in the pelvis frame; it is the mean of their
-// differences, turned into the body frame, over every driven joint and frame (least squares).
+// With a fitted body (its unit and proportions found here), the root and the reference in metres
+// of the capture: our joints (FK with the fitted shape on the retargeted angles) and the
+// capture's, both relative to the source root, differ by a constant offset of our root in the
+// pelvis frame; it is the mean of their differences, turned into the body frame, over every
+// driven joint and frame (least squares).
 void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
                      const Eigen::Matrix3d& to_ours, std::size_t root, const std::array<std::size_t, kJointCount>& source_joint,
-                     SampledMotion& motion) {
+                     const std::string& units, SampledMotion& motion) {
+  motion.units = units.empty() ? detectBvhUnits(clip, motion.source) : unitsByName(units);
+  motion.proportions = fitBodyProportions(clip, map, skeleton, motion.units.metres_per_unit, motion.source);
+  motion.body_fitted = true;
   const double metres = motion.units.metres_per_unit;
   const ForwardKinematics kinematics(skeleton, motion.proportions.shape);
   const std::size_t frames = clip.frames.size();
@@ -229,11 +233,6 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   std::array<std::size_t, kJointCount> source_joint{};
   SampledMotion motion;
   motion.source = source_name;
-  if (options.fit_body) {
-    motion.units = options.units.empty() ? detectBvhUnits(clip, source_name) : unitsByName(options.units);
-    motion.proportions = fitBodyProportions(clip, map, skeleton, motion.units.metres_per_unit, source_name);
-    motion.body_fitted = true;
-  }
   for (std::size_t j = 0; j < kJointCount; ++j) {
     motion.driven[j] = !map.joints[j].empty();
     if (!motion.driven[j]) continue;
@@ -317,7 +316,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     motion.root[f].translation = position;
     motion.root[f].rotation = Eigen::Quaterniond(body).normalized();
   }
-  if (motion.body_fitted) placeFittedBody(clip, map, skeleton, to_ours, root, source_joint, motion);
+  if (options.fit_body) placeFittedBody(clip, map, skeleton, to_ours, root, source_joint, options.units, motion);
   return motion;
 }
 

@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""What fitting the captured person's proportions buys: joint-position error against the capture's
+own forward kinematics, in cm, against the Fourier order, on the fitted body and on our default
+1.75 m body, with the angle residual in degrees; the feet in stance. Runs fit_motion's order sweep
+on the CMU walk and writes the chart and a Markdown table from that one run.
+
+Usage: chart_body_fit.py FIT_MOTION [CAPTURE]
+  writes docs/body_fit_accuracy.png, docs/body_fit_accuracy.md and docs/body_fit_sweep_cmu_02_01.csv
+"""
+import csv
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+DOCS = os.path.join(ROOT, "docs")
+
+
+def main():
+    if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if len(sys.argv) >= 2 else 2
+    tool = sys.argv[1]
+    capture = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "data", "motion", "cmu_02_01_walk.bvh")
+    sweep = os.path.join(DOCS, "body_fit_sweep_cmu_02_01.csv")
+    with tempfile.TemporaryDirectory() as directory:
+        report = subprocess.run([tool, capture, "--urdf", os.path.join(ROOT, "urdf", "human.urdf"), "-o",
+                                 os.path.join(directory, "walk.yaml"), "--sweep-csv", sweep, "--sweep-max", "10",
+                                 "--timing-calls", "1000", "-v"],
+                                capture_output=True, text=True, check=True).stderr
+    with open(sweep) as f:
+        rows = list(csv.DictReader(f))
+    if not rows or rows[0]["body_fitted"] != "1":
+        sys.stderr.write("%s: no fitted-body rows (a capture without a skeleton?)\n" % sweep)
+        return 1
+    column = lambda name: [float(r[name]) for r in rows]
+    order = [int(r["order"]) for r in rows]
+
+    fig, (cm, degrees) = plt.subplots(1, 2, figsize=(11, 4.6))
+    cm.plot(order, column("default_body_capture_mean_cm"), "o--", color="tab:gray", label="our default body: mean")
+    cm.plot(order, column("default_body_capture_max_cm"), "v:", color="tab:gray", label="our default body: max")
+    cm.plot(order, column("joint_error_capture_mean_cm"), "o-", color="tab:blue", label="fitted body: mean")
+    cm.plot(order, column("joint_error_capture_max_cm"), "v-", color="tab:blue", label="fitted body: max")
+    cm.plot(order, column("stance_foot_max_cm"), "s-", color="tab:green", label="fitted body: lowest foot point\nin stance, max")
+    cm.axhline(2.0, color="tab:red", lw=0.8, ls="--", label="goal: mean 2 cm, max 5 cm")
+    cm.axhline(5.0, color="tab:red", lw=0.8, ls="--")
+    cm.set_yscale("log")
+    cm.set_yticks([0.5, 1, 2, 5, 10, 20, 50])
+    cm.set_yticklabels(["0.5", "1", "2", "5", "10", "20", "50"])
+    cm.set_xlabel("Fourier order m")
+    cm.set_ylabel("joint position vs the capture's FK (cm)")
+    cm.set_xticks(order)
+    cm.grid(True, which="both", alpha=0.3)
+    cm.legend(fontsize=7, loc="center right")
+    cm.set_title("every mapped joint and frame, root-relative")
+    degrees.plot(order, column("mean_rms_deg"), "o-", color="tab:purple", label="mean over DOFs")
+    degrees.plot(order, column("max_rms_deg"), "v-", color="tab:purple", alpha=0.6, label="worst DOF")
+    degrees.set_xlabel("Fourier order m")
+    degrees.set_ylabel("angle RMS residual (deg)")
+    degrees.set_ylim(bottom=0)
+    degrees.set_xticks(order)
+    degrees.grid(True, alpha=0.3)
+    degrees.legend(fontsize=8)
+    degrees.set_title("joint angles (the same on either body)")
+    fig.suptitle("CMU 02_01 walk fitted by fit_motion: the person's proportions vs our default body")
+    fig.tight_layout()
+    chart = os.path.join(DOCS, "body_fit_accuracy.png")
+    fig.savefig(chart, dpi=110)
+
+    units = next((line.strip() for line in report.splitlines() if line.strip().startswith("Body fitted")), "")
+    per_joint = [line.strip() for line in report.splitlines() if re.match(r"^ {4}[a-z_]+ +mean ", line)]
+    lines = ["<!-- Written by scripts/chart_body_fit.py from one fit_motion run; do not edit. -->",
+             "# Fitted body proportions: accuracy against the capture (CMU 02_01 walk)", "",
+             "![accuracy](body_fit_accuracy.png)", "", units, "",
+             "| order m | angle RMS mean / worst (deg) | joints, fitted body: mean / max (cm) | "
+             "joints, default body: mean / max (cm) | feet in stance, fitted: mean / max (cm) |",
+             "|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| %s | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f |" % (
+            r["order"], float(r["mean_rms_deg"]), float(r["max_rms_deg"]), float(r["joint_error_capture_mean_cm"]),
+            float(r["joint_error_capture_max_cm"]), float(r["default_body_capture_mean_cm"]),
+            float(r["default_body_capture_max_cm"]), float(r["stance_foot_mean_cm"]), float(r["stance_foot_max_cm"])))
+    lines += ["", "Per joint at the order fit_motion chose by tolerance (fitted body):", "", "```"] + per_joint + ["```", ""]
+    with open(os.path.join(DOCS, "body_fit_accuracy.md"), "w") as f:
+        f.write("\n".join(lines))
+    print("wrote %s, %s, %s" % (chart, os.path.join(DOCS, "body_fit_accuracy.md"), sweep))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
