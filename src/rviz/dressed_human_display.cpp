@@ -111,6 +111,7 @@ void DressedHumanDisplay::loadRobotDescription() {
     // A fitted person's URDF carries its proportions: the body file's shape applies on top of them.
     for (std::size_t b = 0; b < kBoneCount; ++b) {
       body_->shape.scale[b] = body_->shape.scale[b].cwiseProduct(skeleton_->bodyShape().scale[b]);
+      body_->shape.offset[b] += skeleton_->bodyShape().offset[b];
     }
     shape_ = body_->shape;
     status_.clear("Body Description");

@@ -1,5 +1,7 @@
 #include "tf_bone_source.h"
 
+#include "dressed_human/core/skeleton/forward_kinematics.h"
+
 #include <algorithm>
 
 #include <rviz/frame_manager.h>
@@ -31,6 +33,13 @@ TfBoneSource::TfBoneSource(const Skeleton& skeleton, const std::string& label)
   }
   root_frame_ = skeleton_.rootFrame();
   root_status_name_ = "Frame " + root_frame_;
+  // A bone on a fixed URDF joint (clavicles, pelvis halves) sits where the URDF puts it, its own
+  // body shape included: no lookup needed, and none that could fail.
+  const ForwardKinematics as_in_urdf(skeleton_, skeleton_.bodyShape());
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const Bone& bone = skeleton_.bone(b);
+    if (bone.joint < 0) bone_in_parent_[b] = {as_in_urdf.scaledRestTranslation(b), bone.rest_rotation};
+  }
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     bool has_child = false;
     for (const Bone& other : skeleton_.bones()) has_child = has_child || other.parent == static_cast<int>(b);
@@ -107,11 +116,9 @@ bool TfBoneSource::lookUpAt(const tf2_ros::Buffer& buffer, const ros::Time& stam
     const Bone& bone = skeleton_.bone(b);
     const std::string& parent_frame =
         bone.parent < 0 ? root_frame_ : bone_frames_[static_cast<std::size_t>(bone.parent)];
+    if (bone.joint < 0) continue;  // fixed: set once, where the URDF puts it
     try {
-      // A bone on a fixed URDF joint (clavicles, pelvis halves) sits where the URDF puts it:
-      // no lookup needed, and none that could fail.
-      bone_in_parent_[b] = bone.joint < 0 ? RigidTransform{bone.rest_translation, bone.rest_rotation}
-                                          : toRigid(buffer.lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
+      bone_in_parent_[b] = toRigid(buffer.lookupTransform(parent_frame, bone_frames_[b], stamp).transform);
       status.clear(bone_status_names_[b]);
     } catch (const tf2::TransformException& error) {
       if (!report) return false;

@@ -14,6 +14,9 @@ namespace {
 
 // For each of our joints, the joint at the distal end of its bone (-1: the bone ends free).
 constexpr std::array<int, kJointCount> kDistalJoint = {1, 2, 3, -1, 5, 6, -1, 8, 9, -1, 11, 12, -1, 14, 15, -1};
+constexpr int kWaist = 0;
+constexpr int kTorso = 1;
+constexpr int kNeck = 2;
 constexpr int kLeftShoulder = 4;
 constexpr int kRightShoulder = 7;
 constexpr int kLeftHip = 10;
@@ -122,6 +125,39 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
   };
   fitWidth(kLeftHip, kRightHip, "l_pelvis", "r_pelvis", "hip width");
   fitWidth(kLeftShoulder, kRightShoulder, "l_clavicle", "r_clavicle", "shoulder width");
+
+  // Where lengths cannot reach: the middle of each pair relative to the spine joint below it (the
+  // waist joint for the hips, in the body frame; the torso joint for the shoulders, in the torso
+  // frame as the retarget lays it onto the capture, its axis turned onto the capture's segment).
+  // The pair's fixed bones move by the difference (BodyShape::offset); the width stays.
+  const Eigen::Matrix3d to_ours = bvhToOurAxes(clip, rest, map, source_name);
+  const auto placePair = [&](int left, int right, int anchor, int anchor_distal, bool turn_with_anchor,
+                             const char* fixed_left, const char* fixed_right, const char* what) {
+    for (const int joint : {left, right, anchor, anchor_distal}) {
+      if (map.joints[static_cast<std::size_t>(joint)].empty()) return;
+    }
+    const ForwardKinematics kinematics(skeleton, proportions.shape);
+    SkeletonPose pose;
+    kinematics.compute(RigidTransform(), JointAngles{}, pose);
+    const auto at = [&](int joint) -> const RigidTransform& { return pose.bone_in_world[boneOf(joint)]; };
+    const Eigen::Matrix3d frame = turn_with_anchor ? at(anchor).rotation.toRotationMatrix() : Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d laid =
+        turn_with_anchor ? Eigen::Quaterniond::FromTwoVectors(frame.col(2), to_ours * (source(anchor_distal) - source(anchor)))
+                               .toRotationMatrix() * frame
+                         : frame;
+    const Eigen::Vector3d target =
+        metres_per_unit * (laid.transpose() * (to_ours * (0.5 * (source(left) + source(right)) - source(anchor))));
+    const Eigen::Vector3d ours =
+        frame.transpose() * (0.5 * (at(left).translation + at(right).translation) - at(anchor).translation);
+    const Eigen::Vector3d shift = target - ours;  // in the frame of both fixed bones' parent
+    if (shift.cwiseAbs().maxCoeff() > kMaxShapeOffset) {
+      throw MotionError(source_name + ": the " + what + " lie " + factorText(shift.norm()) +
+                        " m from ours: a wrong joint map?");
+    }
+    for (const char* bone : {fixed_left, fixed_right}) proportions.shape.offset[static_cast<std::size_t>(skeleton.findBone(bone))] += shift;
+  };
+  placePair(kLeftHip, kRightHip, kWaist, kTorso, false, "l_pelvis", "r_pelvis", "hip joints");
+  placePair(kLeftShoulder, kRightShoulder, kTorso, kNeck, true, "l_clavicle", "r_clavicle", "shoulder joints");
   return proportions;
 }
 

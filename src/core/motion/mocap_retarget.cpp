@@ -163,6 +163,29 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
 
 }  // namespace
 
+Eigen::Matrix3d bvhToOurAxes(const BvhClip& clip, const BvhPose& rest, const BvhJointMap& map,
+                             const std::string& source_name) {
+  // BVH is Y-up; left comes from the hips of the rest pose, forward = left x up.
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  if (map.joints[kLeftHip].empty() || map.joints[kRightHip].empty()) {
+    throw JointMapError(source_name + ": the joint map must name both hips (they give the body's left-right axis)");
+  }
+  const auto position = [&](int joint) -> const Eigen::Vector3d& {
+    return rest.position[static_cast<std::size_t>(clip.findJoint(map.joints[static_cast<std::size_t>(joint)]))];
+  };
+  Eigen::Vector3d left = position(kLeftHip) - position(kRightHip);
+  left -= left.dot(up) * up;
+  if (left.norm() < 1e-9) {
+    throw MotionError(source_name + ": the rest pose puts both hips at the same place: no left-right direction");
+  }
+  left.normalize();
+  Eigen::Matrix3d to_ours;  // rows: forward, left, up in source coordinates
+  to_ours.row(0) = left.cross(up);
+  to_ours.row(1) = left;
+  to_ours.row(2) = up;
+  return to_ours;
+}
+
 // Where the middle angle nears +-90 degrees the outer two share one axis. Their split is then
 // ill-conditioned: reading them off entries that carry cos(middle) costs eps / cos(middle) in the
 // rebuilt rotation, while putting everything into the first angle costs ~cos(middle). Switching
@@ -210,22 +233,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   const auto sourceIndex = [&](const std::string& name) { return static_cast<std::size_t>(clip.findJoint(name)); };
   const std::size_t root = sourceIndex(map.root);
 
-  // Source axes -> ours: BVH is Y-up; left comes from the hips of the rest pose, forward = left x up.
-  const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
-  if (map.joints[kLeftHip].empty() || map.joints[kRightHip].empty()) {
-    throw JointMapError(source_name + ": the joint map must name both hips (they give the body's left-right axis)");
-  }
-  Eigen::Vector3d left =
-      source_rest.position[sourceIndex(map.joints[kLeftHip])] - source_rest.position[sourceIndex(map.joints[kRightHip])];
-  left -= left.dot(up) * up;
-  if (left.norm() < 1e-9) {
-    throw MotionError(source_name + ": the rest pose puts both hips at the same place: no left-right direction");
-  }
-  left.normalize();
-  Eigen::Matrix3d to_ours;  // rows: forward, left, up in source coordinates
-  to_ours.row(0) = left.cross(up);
-  to_ours.row(1) = left;
-  to_ours.row(2) = up;
+  const Eigen::Matrix3d to_ours = bvhToOurAxes(clip, source_rest, map, source_name);
 
   // Constant per-bone offset: our rest frame turned so that its bone axis lies along the source's
   // rest segment. World target of bone b = to_ours * G_source * to_ours^T * offset_b.

@@ -170,11 +170,15 @@ void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string&
                 residual(kDofCount + 3 + k));
   }
   if (motion.body_shape) {
-    text << "body_shape:  # the person's proportions (Eq. 5 [a, b, c] per bone): robot_description must carry them\n";
+    text << "body_shape:  # the person's proportions (Eq. 5 [a, b, c] per bone, then the joint's offset in metres if any):\n"
+         << "             # robot_description must carry them (human_urdf)\n";
     text << std::setprecision(6);
     for (std::size_t b = 0; b < kBoneCount; ++b) {
       const Eigen::Vector3d& abc = motion.body_shape->scale[b];
-      text << "  " << humanBoneLayout()[b].name << ": [" << abc.x() << ", " << abc.y() << ", " << abc.z() << "]\n";
+      const Eigen::Vector3d& offset = motion.body_shape->offset[b];
+      text << "  " << humanBoneLayout()[b].name << ": [" << abc.x() << ", " << abc.y() << ", " << abc.z();
+      if (!offset.isZero(0.0)) text << ", " << offset.x() << ", " << offset.y() << ", " << offset.z();
+      text << "]\n";
     }
   }
   out << text.str();

@@ -35,15 +35,20 @@ ForwardKinematics::ForwardKinematics(const Skeleton& skeleton, const BodyShape& 
       throw SkeletonError("body shape of bone '" + skeleton_.bone(b).name +
                           "': the scale factors a, b, c must be finite and positive");
     }
+    if (!shape_.offset[b].allFinite() || shape_.offset[b].cwiseAbs().maxCoeff() > kMaxShapeOffset) {
+      throw SkeletonError("body shape of bone '" + skeleton_.bone(b).name + "': the offset must be finite and within " +
+                          std::to_string(kMaxShapeOffset) + " m");
+    }
   }
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     const Bone& bone = skeleton_.bone(b);
     const Eigen::Vector3d parent_scale =
         bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
-    scaled_rest_translation_[b] = parent_scale.cwiseProduct(bone.rest_translation);
+    scaled_rest_translation_[b] = parent_scale.cwiseProduct(bone.rest_translation) + shape_.offset[b];
     tf_offset_scale_[b] = bone.parent < 0 ? Eigen::Vector3d(Eigen::Vector3d::Ones())
                                           : Eigen::Vector3d(parent_scale.cwiseQuotient(
                                                 skeleton_.bodyShape().scale[static_cast<std::size_t>(bone.parent)]));
+    tf_offset_shift_[b] = shape_.offset[b] - tf_offset_scale_[b].cwiseProduct(skeleton_.bodyShape().offset[b]);
   }
 }
 
@@ -79,7 +84,7 @@ void ForwardKinematics::composeFromTf(const RigidTransform& root,
     const int parent = skeleton_.bone(b).parent;
     const RigidTransform& local = tf_in_parent[b];
     attach(parent < 0 ? root : bone_in_world[static_cast<std::size_t>(parent)],
-           tf_offset_scale_[b].cwiseProduct(local.translation), local.rotation, bone_in_world[b]);
+           tf_offset_scale_[b].cwiseProduct(local.translation) + tf_offset_shift_[b], local.rotation, bone_in_world[b]);
   }
 }
 

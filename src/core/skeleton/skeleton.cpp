@@ -208,6 +208,7 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
   skeleton.body_shape_ = urdfBodyShape(urdf_xml);
   for (Bone& bone : skeleton.bones_) {
     const Eigen::Vector3d& own = skeleton.body_shape_.scale[static_cast<std::size_t>(&bone - skeleton.bones_.data())];
+    bone.rest_translation -= skeleton.body_shape_.offset[static_cast<std::size_t>(&bone - skeleton.bones_.data())];
     if (bone.parent >= 0) {
       bone.rest_translation = bone.rest_translation.cwiseQuotient(skeleton.body_shape_.scale[static_cast<std::size_t>(bone.parent)]);
     }

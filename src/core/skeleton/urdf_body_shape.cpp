@@ -50,8 +50,8 @@ std::map<std::string, std::size_t> boneLinks(const tinyxml2::XMLElement& robot, 
 }  // namespace
 
 bool BodyShape::isIdentity() const {
-  for (const Eigen::Vector3d& s : scale) {
-    if (s != Eigen::Vector3d::Ones()) return false;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    if (scale[b] != Eigen::Vector3d::Ones() || !offset[b].isZero(0.0)) return false;
   }
   return true;
 }
@@ -85,13 +85,27 @@ BodyShape urdfBodyShape(const std::string& urdf_xml) {
       }
       shape.scale[index][k] = factor;
     }
+    if (const char* offset = bone->Attribute("offset")) {
+      double x = 0.0, y = 0.0, z = 0.0;
+      char extra = 0;
+      if (std::sscanf(offset, "%lf %lf %lf %c", &x, &y, &z, &extra) != 3 || !std::isfinite(x) || !std::isfinite(y) ||
+          !std::isfinite(z) || Eigen::Vector3d(x, y, z).cwiseAbs().maxCoeff() > kMaxShapeOffset) {
+        throw SkeletonError(std::string("<") + kShapeElement + ">: bone '" + name +
+                            "': offset must be three numbers within +-" + numberText(kMaxShapeOffset) + " m");
+      }
+      shape.offset[index] = Eigen::Vector3d(x, y, z);
+    }
   }
   return shape;
 }
 
 std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
-  for (const Eigen::Vector3d& s : shape.scale) {
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    const Eigen::Vector3d& s = shape.scale[b];
     if (!s.allFinite() || (s.array() <= 0.0).any()) throw SkeletonError("body shape factors must be finite and positive");
+    if (!shape.offset[b].allFinite() || shape.offset[b].cwiseAbs().maxCoeff() > kMaxShapeOffset) {
+      throw SkeletonError("body shape offsets must be finite and within +-" + numberText(kMaxShapeOffset) + " m");
+    }
   }
   tinyxml2::XMLDocument document;
   parse(document, urdf_xml);
@@ -105,13 +119,23 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
     const auto found = link ? bones.find(link) : bones.end();
     return found == bones.end() ? nullptr : &shape.scale[found->second];
   };
-  // A joint hanging from a bone sits at the bone's scaled offset (the bone's own a, b, c).
+  // A joint hanging from a bone sits at the bone's scaled offset (the bone's own a, b, c); the
+  // joint that places a bone (its fixed joint, or the first of its three) moves by its offset.
+  std::map<std::string, std::size_t> placed_by;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    placed_by[std::string(humanBoneLayout()[b].name) + suffix] = b;
+    placed_by[std::string(humanBoneLayout()[b].name) + "_ry_link" + suffix] = b;
+  }
   for (tinyxml2::XMLElement* joint = robot->FirstChildElement("joint"); joint; joint = joint->NextSiblingElement("joint")) {
     const tinyxml2::XMLElement* parent = joint->FirstChildElement("parent");
+    const tinyxml2::XMLElement* child = joint->FirstChildElement("child");
     const Eigen::Vector3d* scale = scaleOf(parent ? parent->Attribute("link") : nullptr);
+    const auto placed = child && child->Attribute("link") ? placed_by.find(child->Attribute("link")) : placed_by.end();
+    const Eigen::Vector3d offset = placed == placed_by.end() ? Eigen::Vector3d::Zero() : shape.offset[placed->second];
     tinyxml2::XMLElement* origin = joint->FirstChildElement("origin");
-    if (scale && origin && origin->Attribute("xyz")) {
-      origin->SetAttribute("xyz", vectorText(scale->cwiseProduct(parseVector(origin->Attribute("xyz")))).c_str());
+    if ((scale || !offset.isZero(0.0)) && origin) {
+      const Eigen::Vector3d xyz = parseVector(origin->Attribute("xyz"));
+      origin->SetAttribute("xyz", vectorText((scale ? scale->cwiseProduct(xyz) : xyz) + offset).c_str());
     }
   }
   // A bone's visuals: placed and sized by its factors (cylinder length by c, radii by the mean of a, b).
@@ -146,6 +170,7 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
     tinyxml2::XMLElement* bone = document.NewElement("bone");
     bone->SetAttribute("name", layout[b].name);
     for (int k = 0; k < 3; ++k) bone->SetAttribute(kFactorNames[static_cast<std::size_t>(k)], numberText(shape.scale[b][k]).c_str());
+    if (!shape.offset[b].isZero(0.0)) bone->SetAttribute("offset", vectorText(shape.offset[b]).c_str());
     record->InsertEndChild(bone);
   }
   tinyxml2::XMLPrinter printer;

@@ -63,6 +63,11 @@ Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& rotation);
 // R = Rz(yaw) Ry(pitch) Rx(roll) -> (roll, pitch, yaw); at pitch +-90 degrees roll = 0.
 Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& rotation);
 
+// Source axes to ours (x forward, y left, z up) for a Y-up BVH: left from the rest pose's hips.
+// Throws JointMapError if the map lacks a hip, MotionError if the hips coincide.
+Eigen::Matrix3d bvhToOurAxes(const BvhClip& clip, const BvhPose& rest, const BvhJointMap& map,
+                             const std::string& source_name);
+
 // The standing height of our skeleton at rest (lowest to highest bone end), metres.
 double skeletonStature(const Skeleton& skeleton);
 

@@ -1,8 +1,10 @@
 #pragma once
 // The Eq. 5 body shape as the project's YAML files write it (a body file's `shape:`, a fitted
-// motion's `body_shape:`): bone or group name -> [a, b, c], applied in the order written (later
-// entries override), each factor in [kMinShapeScale, kMaxShapeScale].
+// motion's `body_shape:`): bone or group name -> [a, b, c], or [a, b, c, dx, dy, dz] with the
+// joint's offset (BodyShape::offset, metres), applied in the order written (later entries
+// override), each factor in [kMinShapeScale, kMaxShapeScale], each offset within kMaxShapeOffset.
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,7 +37,16 @@ void readBodyShapeYaml(const YamlReader<Error>& reader, const YAML::Node& node, 
       }
       bones.push_back(name);
     }
-    const std::vector<double> abc = reader.numbers(entry.second, entry_key, 3, "[a, b, c] (Eq. 5 scale of x, y, z)");
+    const bool with_offset = entry.second.IsSequence() && entry.second.size() == 6;
+    const std::vector<double> abc = reader.numbers(entry.second, entry_key, with_offset ? 6 : 3,
+                                                   "[a, b, c] (Eq. 5 scale of x, y, z) or [a, b, c, dx, dy, dz]");
+    for (std::size_t k = 3; k < abc.size(); ++k) {
+      if (!(std::abs(abc[k]) <= kMaxShapeOffset)) {
+        std::ostringstream range;
+        range << "offset " << abc[k] << " m outside [-" << kMaxShapeOffset << ", " << kMaxShapeOffset << "]";
+        reader.fail(entry.second, entry_key, range.str());
+      }
+    }
     for (std::size_t k = 0; k < 3; ++k) {
       if (!(abc[k] >= kMinShapeScale && abc[k] <= kMaxShapeScale)) {
         std::ostringstream range;
@@ -45,7 +56,9 @@ void readBodyShapeYaml(const YamlReader<Error>& reader, const YAML::Node& node, 
     }
     for (const std::string& bone : bones) {
       for (std::size_t b = 0; b < layout.size(); ++b) {
-        if (bone == layout[b].name) shape.scale[b] = Eigen::Vector3d(abc[0], abc[1], abc[2]);
+        if (bone != layout[b].name) continue;
+        shape.scale[b] = Eigen::Vector3d(abc[0], abc[1], abc[2]);
+        shape.offset[b] = with_offset ? Eigen::Vector3d(abc[3], abc[4], abc[5]) : Eigen::Vector3d::Zero();
       }
     }
   }

@@ -49,6 +49,7 @@ class ForwardKinematics {
   BodyShape shape_;
   std::array<Eigen::Vector3d, kBoneCount> scaled_rest_translation_;
   std::array<Eigen::Vector3d, kBoneCount> tf_offset_scale_;  // this shape / the URDF's, of the parent
+  std::array<Eigen::Vector3d, kBoneCount> tf_offset_shift_;  // this shape's offset less the URDF's, scaled
 };
 
 }  // namespace dressed_human

@@ -24,11 +24,19 @@ constexpr std::array<const char*, kDofsPerJoint> kUrdfDofSuffixes = {"ry", "rx",
 
 // Eq. 5 per bone: P' = [a Px, b Py, c Pz] in the bone frame. c scales the bone's length, a and b
 // its thickness. Children attach at the scaled position of their joint in this bone's frame.
+// `offset` moves a bone's proximal joint in its parent's frame beyond what the parent's scale
+// does (metres, after scaling): the layout of joints that lengths cannot reach, e.g. hip joints in
+// front of the lumbar joint (a fitted capture's hip bones and clavicles; zero otherwise).
 struct BodyShape {
   std::array<Eigen::Vector3d, kBoneCount> scale;
-  BodyShape() { scale.fill(Eigen::Vector3d::Ones()); }
+  std::array<Eigen::Vector3d, kBoneCount> offset;
+  BodyShape() {
+    scale.fill(Eigen::Vector3d::Ones());
+    offset.fill(Eigen::Vector3d::Zero());
+  }
   bool isIdentity() const;
 };
+constexpr double kMaxShapeOffset = 0.3;  // m: a joint moved further is no person's
 
 struct SkeletonError : std::runtime_error {
   using std::runtime_error::runtime_error;

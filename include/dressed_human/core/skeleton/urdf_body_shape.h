@@ -7,6 +7,7 @@
 //
 //   <dressed_human_body_shape>
 //     <bone name="l_hip" a="0.98" b="0.98" c="1.02"/>   <!-- every bone, Eq. 5 factors -->
+//     <bone name="l_pelvis" a="1" b="1" c="1.1" offset="0.03 0 0.01"/>  <!-- BodyShape::offset -->
 //   </dressed_human_body_shape>
 
 #include <string>
