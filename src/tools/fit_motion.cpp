@@ -83,6 +83,7 @@ struct Arguments {
   bool quiet = false;
   bool verbose = false;
   bool fit_body = true;
+  bool body_given = false;
   std::string units;
   dh::MotionFitOptions fit;
 };
@@ -195,6 +196,7 @@ Arguments parseArguments(int argc, char** argv) {
       const std::string body = value();
       if (body != "fitted" && body != "default") throw UsageError("--body must be 'fitted' or 'default', got '" + body + "'");
       args.fit_body = body == "fitted";
+      args.body_given = true;
     } else if (arg == "--units") {
       args.units = value();
       dh::unitsByName(args.units);  // a bad unit is a usage error, said before reading anything
@@ -225,7 +227,10 @@ Arguments parseArguments(int argc, char** argv) {
   }
   if (args.format != "bvh") {
     if (!args.units.empty()) throw UsageError("--units applies to BVH input only (OpenSim files are in metres)");
-    args.fit_body = false;  // joint coordinates carry no skeleton to read proportions from
+    if (args.fit_body && args.body_given) {
+      throw UsageError("--body fitted needs a BVH input: OpenSim joint coordinates carry no skeleton to read a body from");
+    }
+    args.fit_body = false;  // said in the report and the file: "our default body"
   }
   if (args.name.empty()) args.name = stem(args.input);
   args.fit.name = args.name;
@@ -340,7 +345,9 @@ void writeSweep(const Arguments& args, const dh::Skeleton& skeleton, const dh::S
 // What the joint-position error is measured against, and the figures, for the report and the file.
 std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy& accuracy,
                          const std::optional<dh::FitAccuracy>& default_body) {
-  if (accuracy.against_capture.samples == 0) return "No capture skeleton: joint positions against the capture not measured.";
+  if (accuracy.against_capture.samples == 0) {
+    return "No capture skeleton (joint coordinates): our default body; joint positions against the capture not measured.";
+  }
   std::ostringstream text;
   if (sampled.body_fitted) {
     text << "Body fitted from the rest pose (units: " << sampled.units.name << ", " << sampled.units.reason

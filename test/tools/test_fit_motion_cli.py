@@ -52,6 +52,13 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
     def test_units_and_body_options_are_checked(self):
         self.assertRefused("unknown length unit 'parsec': expected one of m, cm, mm, in, cmu", "--units", "parsec")
         self.assertRefused("--body must be 'fitted' or 'default', got 'tall'", "--body", "tall")
+        gait = os.path.join(ROOT, "data", "motion", "tutorial_normal_gait_cycle.mot")
+        for arguments, message in ((["--body", "fitted"], "--body fitted needs a BVH input"),
+                                   (["--units", "cm"], "--units applies to BVH input only")):
+            result = subprocess.run([FIT_MOTION, gait, "--urdf", URDF, *arguments], capture_output=True, text=True,
+                                    timeout=120)
+            self.assertEqual(result.returncode, 2, result.stderr)
+            self.assertIn(message, result.stderr)
         # The right skeleton in a wrong unit: no human has those proportions.
         code, stderr = run("--units", "m", "-q")
         self.assertNotEqual(code, 0, stderr)

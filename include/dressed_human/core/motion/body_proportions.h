@@ -10,8 +10,10 @@
 // and a, b (thickness) of every bone take the overall factor: the mean c of the limbs.
 //
 // Eq. 5 scales lengths along our bones; it cannot move a joint across them. Where a capture's
-// skeleton is laid out differently (CMU's hip joints sit 3 cm in front of its lumbar joint, ours
-// straight below), that difference remains in the joint positions.
+// skeleton is laid out differently (CMU's hip joints sit 3.5 cm in front of its lumbar joint, ours
+// straight below; its shoulders 2 cm behind our clavicles' ends), the hip bones and clavicles
+// move by BodyShape::offset so that the middle of each pair sits where the capture's does,
+// relative to the spine joint below it.
 
 #include <array>
 #include <string>

@@ -14,6 +14,7 @@
 //     rotation: {roll: {...}, pitch: {...}, yaw: {...}}  # radians
 //   body_shape:                     # optional: the captured person's proportions (fit_motion)
 //     l_hip: [0.93, 0.93, 1.02]       # Eq. 5 [a, b, c] per bone or group, as a body file's shape
+//     l_pelvis: [0.93, 0.93, 1.02, 0.035, 0.001, 0.010]  # and the joint's offset (m), if any
 //
 // A series may also carry `rms_residual` (radians or metres, from a fit): kept, not used.
 // Every error names the file, the line and column, and the key path, e.g.
