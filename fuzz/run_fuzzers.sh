@@ -25,11 +25,14 @@ build_target() {  # name, core sources (below src/core), then libraries
 }
 build_target fuzz_bvh_parser motion/bvh_file.cpp io/text_file.cpp
 build_target fuzz_mot_parser motion/opensim_motion_file.cpp io/text_file.cpp
+# The skeleton layer (the body shape of a motion's body_shape and a body's shape: bone layout and
+# groups; a URDF's recorded shape through tinyxml2).
+skeleton="skeleton/body_description.cpp skeleton/skeleton.cpp skeleton/forward_kinematics.cpp skeleton/urdf_body_shape.cpp"
 build_target fuzz_motion_yaml motion/motion_file.cpp motion/motion.cpp motion/motion_evaluator.cpp io/text_file.cpp \
-  -lyaml-cpp
-build_target fuzz_body_yaml skeleton/body_description.cpp skeleton/skeleton.cpp skeleton/forward_kinematics.cpp \
+  $skeleton -lyaml-cpp -lurdfdom_model -ltinyxml2
+build_target fuzz_body_yaml $skeleton \
   surfaces/skin.cpp surfaces/bezier_patch.cpp surfaces/tessellation.cpp surfaces/tessellation_error.cpp \
-  io/text_file.cpp -lyaml-cpp -lurdfdom_model
+  io/text_file.cpp -lyaml-cpp -lurdfdom_model -ltinyxml2
 
 run_target() {  # name, seed files...
   name=$1; shift

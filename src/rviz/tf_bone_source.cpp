@@ -35,10 +35,8 @@ TfBoneSource::TfBoneSource(const Skeleton& skeleton, const std::string& label)
   root_status_name_ = "Frame " + root_frame_;
   // A bone on a fixed URDF joint (clavicles, pelvis halves) sits where the URDF puts it, its own
   // body shape included: no lookup needed, and none that could fail.
-  const ForwardKinematics as_in_urdf(skeleton_, skeleton_.bodyShape());
   for (std::size_t b = 0; b < kBoneCount; ++b) {
-    const Bone& bone = skeleton_.bone(b);
-    if (bone.joint < 0) bone_in_parent_[b] = {as_in_urdf.scaledRestTranslation(b), bone.rest_rotation};
+    if (skeleton_.bone(b).joint < 0) bone_in_parent_[b] = fixedBoneAsInUrdf(skeleton_, b);
   }
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     bool has_child = false;

@@ -18,6 +18,8 @@
 #include "dressed_human/core/motion/motion_fit.h"
 #include "dressed_human/core/skeleton/urdf_body_shape.h"
 
+#include <urdf_parser/urdf_parser.h>
+
 namespace dressed_human {
 namespace {
 
@@ -246,6 +248,15 @@ TEST(UrdfBodyShape, AShapedUrdfReadsBackAsTheSameSkeletonAndShape) {
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     EXPECT_LT((tf.bone_in_world[b].translation - expected.bone_in_world[b].translation).norm(), 1e-8);
     EXPECT_LT((composed[b].translation - wanted.bone_in_world[b].translation).norm(), 1e-8) << plain.bone(b).name;
+  }
+  // The fixed bones, which the display takes from the URDF rather than TF, as urdfdom reads them.
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(shaped_text);
+  ASSERT_TRUE(model);
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    if (plain.bone(b).joint >= 0) continue;
+    const urdf::Vector3& p = model->getLink(plain.bone(b).name)->parent_joint->parent_to_joint_origin_transform.position;
+    EXPECT_LT((fixedBoneAsInUrdf(shaped, b).translation - Eigen::Vector3d(p.x, p.y, p.z)).norm(), 1e-8)
+        << plain.bone(b).name;
   }
   // The URDF's own numbers are the shaped ones (what RobotModel and robot_state_publisher read).
   const std::size_t knee = boneIndex(plain, "l_knee");

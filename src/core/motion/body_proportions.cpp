@@ -12,17 +12,7 @@
 namespace dressed_human {
 namespace {
 
-// For each of our joints, the joint at the distal end of its bone (-1: the bone ends free).
-constexpr std::array<int, kJointCount> kDistalJoint = {1, 2, 3, -1, 5, 6, -1, 8, 9, -1, 11, 12, -1, 14, 15, -1};
-constexpr int kWaist = 0;
-constexpr int kTorso = 1;
-constexpr int kNeck = 2;
-constexpr int kLeftShoulder = 4;
-constexpr int kRightShoulder = 7;
-constexpr int kLeftHip = 10;
-constexpr int kLeftAnkle = 12;
-constexpr int kRightHip = 13;
-constexpr int kRightAnkle = 15;
+using namespace human_joint;  // NOLINT: the joint indices by name
 
 std::array<Eigen::Vector3d, kBoneCount> restPositions(const Skeleton& skeleton, const BodyShape& shape) {
   const ForwardKinematics kinematics(skeleton, shape);

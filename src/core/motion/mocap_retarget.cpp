@@ -11,14 +11,7 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 
-// For each of our joints, the joint at the distal end of its bone (-1: the bone ends free). The
-// source position of that joint gives the source bone's rest direction.
-constexpr std::array<int, kJointCount> kDistalJoint = {1, 2, 3, -1, 5, 6, -1, 8, 9, -1, 11, 12, -1, 14, 15, -1};
-constexpr int kLeftHip = 10;
-constexpr int kLeftKnee = 11;
-constexpr int kLeftAnkle = 12;
-constexpr int kRightHip = 13;
-constexpr int kRightAnkle = 15;
+using namespace human_joint;  // NOLINT: the joint indices by name
 
 Eigen::Matrix3d toMatrix(const Eigen::Quaterniond& q) { return q.normalized().toRotationMatrix(); }
 

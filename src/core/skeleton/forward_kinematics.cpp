@@ -27,6 +27,14 @@ void attach(const RigidTransform& parent, const Eigen::Vector3d& translation, co
 
 }  // namespace
 
+RigidTransform fixedBoneAsInUrdf(const Skeleton& skeleton, std::size_t bone) {
+  const Bone& fixed = skeleton.bone(bone);
+  const Eigen::Vector3d parent_scale =
+      fixed.parent < 0 ? Eigen::Vector3d(Eigen::Vector3d::Ones())
+                       : skeleton.bodyShape().scale[static_cast<std::size_t>(fixed.parent)];
+  return {parent_scale.cwiseProduct(fixed.rest_translation) + skeleton.bodyShape().offset[bone], fixed.rest_rotation};
+}
+
 ForwardKinematics::ForwardKinematics(const Skeleton& skeleton, const BodyShape& shape)
     : skeleton_(skeleton), shape_(shape) {
   for (std::size_t b = 0; b < kBoneCount; ++b) {

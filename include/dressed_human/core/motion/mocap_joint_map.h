@@ -32,6 +32,23 @@
 
 namespace dressed_human {
 
+// Our joints by index (humanJointNames() order), for the code that reads segments by place.
+namespace human_joint {
+constexpr int kWaist = 0;
+constexpr int kTorso = 1;
+constexpr int kNeck = 2;
+constexpr int kLeftShoulder = 4;
+constexpr int kRightShoulder = 7;
+constexpr int kLeftHip = 10;
+constexpr int kLeftKnee = 11;
+constexpr int kLeftAnkle = 12;
+constexpr int kRightHip = 13;
+constexpr int kRightAnkle = 15;
+// For each joint, the joint at the distal end of its bone (-1: the bone ends free): the source
+// joints mapped to both ends give the source segment's rest direction and length.
+constexpr std::array<int, kJointCount> kDistalJoint = {1, 2, 3, -1, 5, 6, -1, 8, 9, -1, 11, 12, -1, 14, 15, -1};
+}  // namespace human_joint
+
 struct JointMapError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

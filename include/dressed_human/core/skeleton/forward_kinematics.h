@@ -26,6 +26,10 @@ struct SkeletonPose {
   std::array<RigidTransform, kBoneCount> bone_in_world;
 };
 
+// A fixed bone's frame (clavicles, hip bones) in its parent as the URDF, and so TF, carries it:
+// with the URDF's own body shape (Skeleton::bodyShape()), which the skeleton's rest offsets lack.
+RigidTransform fixedBoneAsInUrdf(const Skeleton& skeleton, std::size_t bone);
+
 class ForwardKinematics {
  public:
   explicit ForwardKinematics(const Skeleton& skeleton, const BodyShape& shape = BodyShape());
