@@ -42,11 +42,15 @@ void requireSameBody(const Motion& motion, const Skeleton& skeleton, const std::
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     const Eigen::Vector3d& wanted = motion.body_shape->scale[b];
     const Eigen::Vector3d& carried = skeleton.bodyShape().scale[b];
-    if ((wanted - carried).cwiseAbs().maxCoeff() > 1e-5 * wanted.cwiseAbs().maxCoeff()) {
+    const Eigen::Vector3d& wanted_offset = motion.body_shape->offset[b];
+    const Eigen::Vector3d& carried_offset = skeleton.bodyShape().offset[b];
+    if ((wanted - carried).cwiseAbs().maxCoeff() > 1e-5 * wanted.cwiseAbs().maxCoeff() ||
+        (wanted_offset - carried_offset).cwiseAbs().maxCoeff() > 1e-6) {
       std::ostringstream message;
       message << "motion file " << motion_file << " was fitted to a body whose " << skeleton.bone(b).name
-              << " is [a, b, c] = [" << wanted.transpose() << "], but robot_description carries ["
-              << carried.transpose() << "]: set robot_description from `scripts/human_urdf.py "
+              << " is [a, b, c] = [" << wanted.transpose() << "] offset [" << wanted_offset.transpose()
+              << "], but robot_description carries [" << carried.transpose() << "] offset ["
+              << carried_offset.transpose() << "]: set robot_description from `scripts/human_urdf.py "
               << "<urdf> --motion " << motion_file << "` (skeleton.launch does)";
       throw ParameterError(message.str());
     }

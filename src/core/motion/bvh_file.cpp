@@ -284,15 +284,22 @@ Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::
     const Eigen::Vector3d d = point - pose.position[joint];
     if (d.norm() > farthest.norm()) farthest = d;
   };
-  std::vector<std::size_t> stack = {joint};
-  while (!stack.empty()) {
-    const std::size_t j = stack.back();
-    stack.pop_back();
+  for (const std::size_t j : bvhSubtree(clip, joint)) {
     consider(pose.position[j]);
     for (const Eigen::Vector3d& end : clip.joints[j].end_sites) consider(pose.position[j] + pose.rotation[j] * end);
-    for (const int child : clip.joints[j].children) stack.push_back(static_cast<std::size_t>(child));
   }
   return farthest;
+}
+
+std::vector<std::size_t> bvhSubtree(const BvhClip& clip, std::size_t joint) {
+  std::vector<std::size_t> subtree;
+  std::vector<std::size_t> stack = {joint};
+  while (!stack.empty()) {
+    subtree.push_back(stack.back());
+    stack.pop_back();
+    for (const int child : clip.joints[subtree.back()].children) stack.push_back(static_cast<std::size_t>(child));
+  }
+  return subtree;
 }
 
 BvhClip parseBvh(const std::string& text, const std::string& source_name) {

@@ -124,13 +124,7 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
   std::array<std::vector<std::size_t>, 2> feet;
   for (std::size_t side = 0; side < 2; ++side) {
     const std::string& ankle = map.joints[side == 0 ? kLeftAnkle : kRightAnkle];
-    if (ankle.empty()) continue;
-    std::vector<std::size_t> stack = {static_cast<std::size_t>(clip.findJoint(ankle))};
-    while (!stack.empty()) {
-      feet[side].push_back(stack.back());
-      stack.pop_back();
-      for (const int child : clip.joints[feet[side].back()].children) stack.push_back(static_cast<std::size_t>(child));
-    }
+    if (!ankle.empty()) feet[side] = bvhSubtree(clip, static_cast<std::size_t>(clip.findJoint(ankle)));
   }
   motion.reference_lowest_foot.assign(frames, {0.0, 0.0});
   for (std::size_t f = 0; f < frames; ++f) {

@@ -27,12 +27,15 @@ void attach(const RigidTransform& parent, const Eigen::Vector3d& translation, co
 
 }  // namespace
 
-RigidTransform fixedBoneAsInUrdf(const Skeleton& skeleton, std::size_t bone) {
-  const Bone& fixed = skeleton.bone(bone);
+Eigen::Vector3d shapedRestTranslation(const Skeleton& skeleton, const BodyShape& shape, std::size_t bone) {
+  const Bone& b = skeleton.bone(bone);
   const Eigen::Vector3d parent_scale =
-      fixed.parent < 0 ? Eigen::Vector3d(Eigen::Vector3d::Ones())
-                       : skeleton.bodyShape().scale[static_cast<std::size_t>(fixed.parent)];
-  return {parent_scale.cwiseProduct(fixed.rest_translation) + skeleton.bodyShape().offset[bone], fixed.rest_rotation};
+      b.parent < 0 ? Eigen::Vector3d(Eigen::Vector3d::Ones()) : shape.scale[static_cast<std::size_t>(b.parent)];
+  return parent_scale.cwiseProduct(b.rest_translation) + shape.offset[bone];
+}
+
+RigidTransform fixedBoneAsInUrdf(const Skeleton& skeleton, std::size_t bone) {
+  return {shapedRestTranslation(skeleton, skeleton.bodyShape(), bone), skeleton.bone(bone).rest_rotation};
 }
 
 ForwardKinematics::ForwardKinematics(const Skeleton& skeleton, const BodyShape& shape)
@@ -52,7 +55,7 @@ ForwardKinematics::ForwardKinematics(const Skeleton& skeleton, const BodyShape& 
     const Bone& bone = skeleton_.bone(b);
     const Eigen::Vector3d parent_scale =
         bone.parent < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone.parent)];
-    scaled_rest_translation_[b] = parent_scale.cwiseProduct(bone.rest_translation) + shape_.offset[b];
+    scaled_rest_translation_[b] = shapedRestTranslation(skeleton_, shape_, b);
     tf_offset_scale_[b] = bone.parent < 0 ? Eigen::Vector3d(Eigen::Vector3d::Ones())
                                           : Eigen::Vector3d(parent_scale.cwiseQuotient(
                                                 skeleton_.bodyShape().scale[static_cast<std::size_t>(bone.parent)]));

@@ -52,6 +52,8 @@ struct BvhPose {
 BvhPose bvhForwardKinematics(const BvhClip& clip, std::size_t frame);
 // The same with every channel zero but the root at the origin: the rest (bind) pose.
 BvhPose bvhRestPose(const BvhClip& clip);
+// `joint` and every joint below it.
+std::vector<std::size_t> bvhSubtree(const BvhClip& clip, std::size_t joint);
 // From `joint` to the farthest joint or end site of its subtree in `pose` (zero for a lone joint
 // without end sites): a segment's extent where it ends in markers (a foot's toe tip).
 Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint);

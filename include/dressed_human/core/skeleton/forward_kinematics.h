@@ -26,6 +26,10 @@ struct SkeletonPose {
   std::array<RigidTransform, kBoneCount> bone_in_world;
 };
 
+// Where a bone's frame sits in its parent with `shape` applied (Eq. 5): the rest offset scaled by
+// the parent's factors, moved by the bone's own offset.
+Eigen::Vector3d shapedRestTranslation(const Skeleton& skeleton, const BodyShape& shape, std::size_t bone);
+
 // A fixed bone's frame (clavicles, hip bones) in its parent as the URDF, and so TF, carries it:
 // with the URDF's own body shape (Skeleton::bodyShape()), which the skeleton's rest offsets lack.
 RigidTransform fixedBoneAsInUrdf(const Skeleton& skeleton, std::size_t bone);
