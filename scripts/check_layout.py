@@ -15,7 +15,7 @@ import os
 import re
 import sys
 
-LAYERS = ["io", "skeleton", "motion", "surfaces", "garments", "relief", "model", "render"]
+LAYERS = ["io", "skeleton", "motion", "locomotion", "surfaces", "garments", "relief", "model", "render"]
 MAX_FILE_LINES = 600
 MAX_FUNCTION_LINES = 120
 CORE_INCLUDE = re.compile(r'^\s*#\s*include\s*"dressed_human/core/([^/"]+)/[^"]+"')

@@ -1,0 +1,87 @@
+#include "dressed_human/core/locomotion/walker.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dressed_human {
+namespace {
+
+constexpr double kGravity = 9.81;
+// Standing is never a frozen pose: the trunk sways and breathes a little (~4 s cycle).
+constexpr double kIdleRate = 0.25;         // Hz
+constexpr double kIdleSway = 0.015;        // rad, the waist side to side
+constexpr double kIdleBreath = 0.008;      // rad, the torso forward and back
+
+}  // namespace
+
+Walker::Walker(const Skeleton& skeleton, const BodyShape& shape, SpeedGait gait, WalkerSettings settings)
+    : gait_(std::move(gait)), settings_(settings), kinematics_(skeleton, shape), feet_(skeleton, shape),
+      leg_ik_(kinematics_), follower_(settings.route) {
+  waist_ = static_cast<std::size_t>(skeleton.findJoint("waist")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kX);
+  torso_ = static_cast<std::size_t>(skeleton.findJoint("torso")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kY);
+}
+
+void Walker::place(const Eigen::Vector2d& position, double heading, double phase) {
+  position_ = position;
+  heading_ = heading;
+  phase_ = phase;
+  feet_.reset(position);
+}
+
+void Walker::followRoute(Route route) {
+  driven_.reset();
+  follower_.setRoute(std::move(route));
+}
+
+void Walker::drive(double speed, double turn_rate) {
+  driven_ = std::make_pair(std::clamp(speed, 0.0, WalkerSettings::kMaxSpeed),
+                           std::clamp(turn_rate, -settings_.route.max_turn_rate, settings_.route.max_turn_rate));
+}
+
+void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
+  dt = std::max(dt, 0.0);
+  double wanted_speed = 0.0;
+  double wanted_turn = 0.0;
+  if (driven_) {
+    wanted_speed = driven_->first;
+    wanted_turn = driven_->second;
+  } else if (follower_.hasRoute()) {
+    const RouteFollower::Steering steering = follower_.steer(position_, heading_, speed_);
+    wanted_speed = follower_.arrived() ? 0.0 : std::min(cruise_speed_, steering.speed_limit);
+    wanted_turn = steering.turn_rate;
+  }
+  wanted_speed = std::clamp(wanted_speed, 0.0, WalkerSettings::kMaxSpeed);
+  speed_ += std::clamp(wanted_speed - speed_, -settings_.acceleration * dt, settings_.acceleration * dt);
+  turn_rate_ = wanted_turn;
+  heading_ = std::remainder(heading_ + turn_rate_ * dt, 2.0 * M_PI);
+  // A lean that follows the centripetal acceleration, smoothly: toward the inside of the turn.
+  const double wanted_lean = -settings_.lean * std::atan(speed_ * turn_rate_ / kGravity);
+  lean_ += (wanted_lean - lean_) * (1.0 - std::exp(-dt / settings_.lean_time));
+
+  // Below the slowest gait the legs' range shrinks toward standing at that gait's cadence.
+  walking_ = std::clamp(speed_ / gait_.slowestSpeed(), 0.0, 1.0);
+  if (walking_ > 0.0) phase_ = std::fmod(phase_ + dt * gait_.cycleRate(speed_), 1.0);
+  Eigen::Quaterniond pelvis;
+  gait_.evaluate(phase_, speed_, walking_, angles, pelvis);
+  idleSway(dt, angles);
+
+  const Eigen::Quaterniond body = Eigen::AngleAxisd(heading_, Eigen::Vector3d::UnitZ()) *
+                                  Eigen::AngleAxisd(lean_, Eigen::Vector3d::UnitX()) * pelvis;
+  kinematics_.compute({Eigen::Vector3d::Zero(), body}, angles, pose);
+  feet_.setWalkingSpeed(speed_);
+  const Eigen::Vector3d root = feet_.place(pose, dt);
+  pose.root.translation = root;
+  for (RigidTransform& bone : pose.bone_in_world) bone.translation += root;
+  if (feet_.otherFootShift().squaredNorm() > 0.0) leg_ik_.shiftFoot(feet_.otherFoot(), feet_.otherFootShift(), angles, pose);
+  position_ = root.head<2>();
+}
+
+void Walker::idleSway(double dt, JointAngles& angles) {
+  idle_time_ += dt;
+  const double standing = 1.0 - walking_;
+  const double t = 2.0 * M_PI * kIdleRate * idle_time_;
+  angles[waist_] += standing * kIdleSway * std::sin(t);
+  angles[torso_] += standing * kIdleBreath * std::sin(2.0 * t);
+}
+
+}  // namespace dressed_human
