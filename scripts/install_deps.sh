@@ -9,11 +9,11 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libboost-dev liburdfdom-dev liburdfdom-tools libtinyxml2-dev
   # ROS 1 (Debian's own packages)
   libroscpp-dev libroslib-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
-  libsensor-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev
+  libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev
   pluginlib-dev librviz-dev rviz qtbase5-dev libgl-dev
   rosout rosbash python3-roslaunch python3-rostopic python3-rosnode python3-rosbag python3-rostest librostest-dev python3-rosgraph
   ros-robot-state-publisher joint-state-publisher tf2-tools python3-tf2-ros
-  python3-sensor-msgs python3-tf2-msgs python3-geometry-msgs
+  python3-sensor-msgs python3-nav-msgs python3-tf2-msgs python3-geometry-msgs
   # tests and benchmarks
   libgtest-dev googletest libbenchmark-dev clang libclang-rt-14-dev
   # headless rviz and screenshots

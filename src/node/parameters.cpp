@@ -73,4 +73,36 @@ std::string Parameters::requiredText(const std::string& name) const {
   return text(name, "");
 }
 
+bool Parameters::points(const std::string& name, std::vector<Eigen::Vector2d>& points) const {
+  XmlRpc::XmlRpcValue value;
+  if (!node_.getParam(name, value)) return false;
+  const std::string expected = " must be a list of [x, y] pairs in metres, e.g. [[0, 0], [4, 0], [4, 3]]";
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw ParameterError("parameter " + fullName(name) + expected + ", got " + typeName(value));
+  }
+  points.clear();
+  for (int i = 0; i < value.size(); ++i) {
+    XmlRpc::XmlRpcValue& pair = value[i];
+    if (pair.getType() != XmlRpc::XmlRpcValue::TypeArray || pair.size() != 2) {
+      throw ParameterError("parameter " + fullName(name) + expected + "; element " + std::to_string(i) + " is " +
+                           (pair.getType() == XmlRpc::XmlRpcValue::TypeArray ? "a list of " + std::to_string(pair.size())
+                                                                              : std::string(typeName(pair))));
+    }
+    Eigen::Vector2d point;
+    for (int k = 0; k < 2; ++k) {
+      XmlRpc::XmlRpcValue& coordinate = pair[k];
+      if (coordinate.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+        point[k] = static_cast<double>(coordinate);
+      } else if (coordinate.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+        point[k] = static_cast<int>(coordinate);
+      } else {
+        throw ParameterError("parameter " + fullName(name) + expected + "; element " + std::to_string(i) + " holds " +
+                             typeName(coordinate));
+      }
+    }
+    points.push_back(point);
+  }
+  return true;
+}
+
 }  // namespace dressed_human

@@ -3,6 +3,9 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include <ros/node_handle.h>
 
@@ -22,6 +25,8 @@ class Parameters {
   bool boolean(const std::string& name, bool fallback) const;
   std::string text(const std::string& name, const std::string& fallback) const;
   std::string requiredText(const std::string& name) const;
+  // A list of [x, y] pairs of finite numbers; false when the parameter is not set.
+  bool points(const std::string& name, std::vector<Eigen::Vector2d>& points) const;
   std::string fullName(const std::string& name) const { return node_.resolveName(name); }
 
  private:

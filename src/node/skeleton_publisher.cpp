@@ -57,6 +57,35 @@ void requireSameBody(const Motion& motion, const Skeleton& skeleton, const std::
   }
 }
 
+// The walking parameters. A wrong mode or gait file is fatal (nothing sensible to do instead); a
+// bad route or speed is an error the human survives: it walks the default loop or speed.
+void readWalkSettings(const Parameters& parameters, const std::string& package, SkeletonPublisherSettings& s) {
+  s.mode = parameters.text("mode", s.mode);
+  if (s.mode != "walk" && s.mode != "replay") {
+    throw ParameterError("parameter " + parameters.fullName("mode") + " must be 'walk' or 'replay', got '" + s.mode + "'");
+  }
+  s.route_end = parameters.text("route_end", s.route_end);
+  if (s.route_end != "loop" && s.route_end != "stand") {
+    throw ParameterError("parameter " + parameters.fullName("route_end") + " must be 'loop' or 'stand', got '" +
+                         s.route_end + "'");
+  }
+  s.gait_file = parameters.text("gait_file", package.empty() ? "" : package + "/config/gait/speed_gaits.yaml");
+  try {
+    s.speed = parameters.numberIn("speed", s.speed, 0.0, WalkerSettings::kMaxSpeed, "m/s");
+  } catch (const ParameterError& error) {
+    ROS_ERROR("skeleton_publisher: %s (no walking backward, no running); walking at %.1f m/s instead", error.what(), 1.2);
+    s.speed = 1.2;
+  }
+  try {
+    if (parameters.points("waypoints", s.waypoints)) {
+      validateRoute(Route{s.waypoints, s.route_end == "loop"}, "parameter " + parameters.fullName("waypoints"));
+    }
+  } catch (const std::exception& error) {  // ParameterError, LocomotionError
+    ROS_ERROR("skeleton_publisher: %s; walking the default loop instead", error.what());
+    s.waypoints.clear();
+  }
+}
+
 }  // namespace
 
 SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::NodeHandle& private_node) {
@@ -91,6 +120,7 @@ SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::N
   s.origin_y = parameters.numberIn("origin_y", s.origin_y, -kMaxOriginMetres, kMaxOriginMetres, "m");
   s.origin_yaw = parameters.numberIn("origin_yaw", s.origin_yaw, -2.0 * M_PI, 2.0 * M_PI, "rad");
   s.publish_joint_states = parameters.boolean("publish_joint_states", s.publish_joint_states);
+  readWalkSettings(parameters, package, s);
   return s;
 }
 
@@ -110,6 +140,7 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
   requireSameBody(motion, skeleton, settings_.motion_file);
   // A fitted person's URDF carries its proportions (urdf_body_shape.h): TF puts the joints there.
   kinematics_ = std::make_unique<ForwardKinematics>(skeleton, skeleton.bodyShape());
+  if (settings_.mode == "walk") startWalking(skeleton, motion, private_node);
   evaluator_ = std::make_unique<MotionEvaluator>(std::move(motion));
 
   transforms_.transforms.push_back(named(settings_.world_frame, published(skeleton.rootFrame())));
@@ -131,9 +162,38 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
   if (settings_.publish_joint_states) {
     joint_state_publisher_ = node.advertise<sensor_msgs::JointState>("joint_states", 10);
   }
-  ROS_INFO("skeleton_publisher: %s at %.1f Hz (speed x%.2f), root %s in %s", settings_.motion_file.c_str(),
+  ROS_INFO("skeleton_publisher: %s at %.1f Hz (speed x%.2f), root %s in %s, %s", settings_.motion_file.c_str(),
            settings_.rate, settings_.speed_factor, published(skeleton.rootFrame()).c_str(),
-           settings_.world_frame.c_str());
+           settings_.world_frame.c_str(), walker_ ? "walking a route" : "replaying the motion");
+}
+
+void SkeletonPublisher::startWalking(const Skeleton& skeleton, const Motion& motion, ros::NodeHandle& private_node) {
+  const NormativeGait normative = loadNormativeGaitFile(settings_.gait_file);  // LocomotionError names the file
+  try {
+    walker_ = std::make_unique<Walker>(skeleton, skeleton.bodyShape(), SpeedGait(motion, normative, skeleton, skeleton.bodyShape()));
+  } catch (const LocomotionError& error) {
+    ROS_ERROR("skeleton_publisher: %s; replaying it as recorded (parameter %s is 'walk')", error.what(),
+              private_node.resolveName("mode").c_str());
+    return;
+  }
+  walker_->setCruiseSpeed(settings_.speed);
+  placeWalker();
+  commands_ = std::make_unique<WalkCommands>(private_node, *walker_, settings_.world_frame, settings_.route_end == "loop");
+}
+
+// The walk starts at origin_x, origin_y facing origin_yaw, on the route from its first waypoint.
+void SkeletonPublisher::placeWalker() {
+  const Eigen::Vector2d origin(settings_.origin_x, settings_.origin_y);
+  Route route = settings_.waypoints.empty() ? defaultLoop(origin, settings_.origin_yaw)
+                                            : Route{settings_.waypoints, settings_.route_end == "loop"};
+  if (settings_.waypoints.empty()) {
+    // Start on the loop's first leg, not in its middle: at the last corner, facing the first.
+    const Eigen::Vector2d from = route.waypoints.back(), to = route.waypoints.front();
+    walker_->place(from, std::atan2(to.y() - from.y(), to.x() - from.x()), settings_.start_phase / (2.0 * M_PI));
+  } else {
+    walker_->place(origin, settings_.origin_yaw, settings_.start_phase / (2.0 * M_PI));
+  }
+  walker_->followRoute(std::move(route));
 }
 
 void SkeletonPublisher::publishStaticTransforms(const ros::Time& stamp) {
@@ -173,22 +233,18 @@ void SkeletonPublisher::tick() {
   }
   if (!started_) {
     start_time_ = now;
+    last_time_ = now;
     started_ = true;
     publishStaticTransforms(now);
+    if (walker_) placeWalker();
   }
+  const double dt = (now - last_time_).toSec() * settings_.speed_factor;
   last_time_ = now;
-
-  const double cycle = evaluator_->motion().period;
-  double elapsed = (now - start_time_).toSec() * settings_.speed_factor;
-  if (!settings_.loop) elapsed = std::min(elapsed, cycle);
-  const double time = elapsed + settings_.start_phase / (2.0 * M_PI) * cycle;
-
-  RigidTransform root;
-  evaluator_->evaluate(time, angles_, root, &velocities_);
-  const Eigen::AngleAxisd heading(settings_.origin_yaw, Eigen::Vector3d::UnitZ());
-  root.translation = Eigen::Vector3d(settings_.origin_x, settings_.origin_y, 0.0) + heading * root.translation;
-  root.rotation = heading * root.rotation;
-  kinematics_->compute(root, angles_, pose_);
+  if (walker_) {
+    walk(now, dt);
+  } else {
+    replay(now);
+  }
 
   auto& transforms = transforms_.transforms;
   copy(pose_.root, transforms[0].transform);
@@ -200,10 +256,34 @@ void SkeletonPublisher::tick() {
     joint_state_.header.stamp = now;
     for (std::size_t i = 0; i < kDofCount; ++i) {
       joint_state_.position[i] = angles_[i];
-      joint_state_.velocity[i] = velocities_[i] * settings_.speed_factor;
+      joint_state_.velocity[i] = velocities_[i];
     }
     joint_state_publisher_.publish(joint_state_);
   }
+}
+
+void SkeletonPublisher::walk(const ros::Time& now, double dt) {
+  commands_->checkTimeout(now);
+  walker_->step(dt, angles_, pose_);
+  for (std::size_t i = 0; i < kDofCount; ++i) {
+    velocities_[i] = dt > 0.0 ? (angles_[i] - previous_angles_[i]) / dt * settings_.speed_factor : 0.0;
+  }
+  previous_angles_ = angles_;
+}
+
+void SkeletonPublisher::replay(const ros::Time& now) {
+  const double cycle = evaluator_->motion().period;
+  double elapsed = (now - start_time_).toSec() * settings_.speed_factor;
+  if (!settings_.loop) elapsed = std::min(elapsed, cycle);
+  const double time = elapsed + settings_.start_phase / (2.0 * M_PI) * cycle;
+
+  RigidTransform root;
+  evaluator_->evaluate(time, angles_, root, &velocities_);
+  for (double& velocity : velocities_) velocity *= settings_.speed_factor;
+  const Eigen::AngleAxisd heading(settings_.origin_yaw, Eigen::Vector3d::UnitZ());
+  root.translation = Eigen::Vector3d(settings_.origin_x, settings_.origin_y, 0.0) + heading * root.translation;
+  root.rotation = heading * root.rotation;
+  kinematics_->compute(root, angles_, pose_);
 }
 
 }  // namespace dressed_human

@@ -12,12 +12,21 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/locomotion/walker.h"
 #include "dressed_human/core/motion/motion_evaluator.h"
+#include "walk_commands.h"
 
 namespace dressed_human {
 
 struct SkeletonPublisherSettings {
   std::string motion_file;
+  // "walk": along a route (waypoints, ~path, ~cmd_vel) with a speed-dependent gait and planted
+  // feet; "replay": the motion as recorded, its root moving along origin_yaw at its own speed.
+  std::string mode = "walk";
+  std::vector<Eigen::Vector2d> waypoints;  // fixed frame; empty: a loop around origin_x, origin_y
+  std::string route_end = "loop";          // "loop" or "stand" (stop at the last waypoint)
+  double speed = 1.2;                      // m/s along the route; 0: stand
+  std::string gait_file;                   // the normative gait table (config/gait/speed_gaits.yaml)
   double rate = 100.0;          // Hz
   double speed_factor = 1.0;    // motion seconds per ROS second
   double start_phase = 0.0;     // radians of the motion cycle at start
@@ -43,12 +52,19 @@ class SkeletonPublisher {
 
  private:
   void tick();
+  void startWalking(const Skeleton& skeleton, const Motion& motion, ros::NodeHandle& private_node);
+  void walk(const ros::Time& now, double dt);
+  void replay(const ros::Time& now);
+  void placeWalker();
   void publishStaticTransforms(const ros::Time& stamp);
   std::string published(const std::string& urdf_name) const { return urdf_name + extra_suffix_; }
 
   SkeletonPublisherSettings settings_;
   std::unique_ptr<ForwardKinematics> kinematics_;
   std::unique_ptr<MotionEvaluator> evaluator_;
+  std::unique_ptr<Walker> walker_;            // mode walk
+  std::unique_ptr<WalkCommands> commands_;    // its live steering
+  JointAngles previous_angles_{};
   std::string extra_suffix_;  // appended to URDF names when body_id is set and the URDF has none
 
   JointAngles angles_{};
