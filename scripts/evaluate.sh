@@ -30,6 +30,7 @@ step "Fourier order sweep (fit_motion) and chart"
   --tolerance-mm 10 --max-order 6 --name cmu_02_01_walk --sweep-csv docs/fourier_order_sweep_cmu_02_01.csv
 $PY scripts/chart_fourier_order.py docs/fourier_order_sweep_cmu_02_01.csv
 $PY scripts/chart_body_fit.py "$BIN/fit_motion"
+$PY scripts/chart_walk_speed.py "$BIN/walk_speed_table"
 
 step "tessellation accuracy and chart"
 $PY scripts/chart_tessellation.py --tool "$BIN/tessellation_accuracy"

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Speed-dependent gait table: Schwartz et al. (2008) normative curves -> config/gait/speed_gaits.yaml.
 
 Why: one fitted walk has one speed. The C++ core blends between five speed classes instead, so a

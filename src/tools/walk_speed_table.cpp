@@ -1,0 +1,100 @@
+// The walk against speed (issue 20): per speed our stride with planted feet and cadence against
+// the normative trend (Schwartz et al. 2008 scaled to our leg), and the worst stance slide per
+// step with planted feet and with the old playback (the fitted walk sped up, root moving at a
+// constant speed). scripts/chart_walk_speed.py draws docs/walk_speed.png from the two CSV files.
+//
+// Usage: walk_speed_table <source_directory> <output_directory>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "dressed_human/core/locomotion/stance_slide.h"
+#include "dressed_human/core/locomotion/walker.h"
+#include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/motion/motion_file.h"
+
+namespace {
+
+using namespace dressed_human;
+
+constexpr double kStep = 0.01;      // s, the node's default 100 Hz
+constexpr double kSettle = 3.0;     // s before measuring
+constexpr double kMeasure = 10.0;   // s measured
+
+// Planted: a Walker driven straight at `speed`.
+double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double speed, double& travelled_speed, double& lowest) {
+  Walker walker(skeleton, BodyShape(), gait);
+  walker.place({0.0, 0.0}, 0.0);
+  walker.drive(speed, 0.0);
+  JointAngles angles;
+  SkeletonPose pose;
+  StanceSlideMeter meter;
+  double start = 0.0;
+  for (int i = 0; i < static_cast<int>((kSettle + kMeasure) / kStep); ++i) {
+    walker.step(kStep, angles, pose);
+    if (i == static_cast<int>(kSettle / kStep)) start = walker.position().x();
+    if (i >= static_cast<int>(kSettle / kStep)) meter.add(walker.feet(), pose);
+  }
+  travelled_speed = (walker.position().x() - start) / kMeasure;
+  lowest = meter.lowest;
+  return meter.worstSlide();
+}
+
+// The old playback: the fitted walk at speed_factor = speed / its own speed, root x = speed t.
+double playbackSlide(const Skeleton& skeleton, const Motion& walk, double speed, double& lowest) {
+  MotionEvaluator evaluator(walk);
+  ForwardKinematics kinematics(skeleton);
+  PlantedFeet feet(skeleton, BodyShape());
+  const double factor = speed / walk.root.forward_speed;
+  JointAngles angles;
+  RigidTransform root;
+  SkeletonPose pose;
+  StanceSlideMeter meter;
+  for (int i = static_cast<int>(kSettle / kStep); i < static_cast<int>((kSettle + kMeasure) / kStep); ++i) {
+    evaluator.evaluate(i * kStep * factor, angles, root);
+    kinematics.compute(root, angles, pose);
+    meter.add(feet, pose);
+  }
+  lowest = meter.lowest;
+  return meter.worstSlide();
+}
+
+int run(const std::string& source, const std::string& output) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(source + "/urdf/human.urdf");
+  const Motion walk = loadMotionFile(source + "/config/motions/walk.yaml");
+  const SpeedGait gait(walk, loadNormativeGaitFile(source + "/config/gait/speed_gaits.yaml"), skeleton, BodyShape());
+
+  std::ofstream trend(output + "/walk_speed_trend.csv");
+  trend << "speed_m_s,our_stride_m,our_cadence_steps_min,normative_stride_m,normative_cadence_steps_min\n";
+  for (const SpeedGait::Knot& knot : gait.knots()) {
+    trend << knot.speed << ',' << knot.stride << ',' << 120.0 * knot.cycle_rate << ',' << knot.normative_stride << ','
+          << 60.0 * knot.normative_cadence << '\n';
+  }
+  std::ofstream slides(output + "/walk_slide.csv");
+  slides << "speed_m_s,planted_worst_slide_mm,playback_worst_slide_mm,planted_travel_m_s,planted_lowest_sole_mm,playback_lowest_sole_mm\n";
+  for (double speed = 0.6; speed <= 1.81; speed += 0.2) {
+    double travelled = 0.0, planted_lowest = 0.0, playback_lowest = 0.0;
+    const double planted = plantedSlide(skeleton, gait, speed, travelled, planted_lowest);
+    const double playback = playbackSlide(skeleton, walk, speed, playback_lowest);
+    slides << speed << ',' << planted * 1e3 << ',' << playback * 1e3 << ',' << travelled << ',' << planted_lowest * 1e3 << ','
+           << playback_lowest * 1e3 << '\n';
+  }
+  std::cout << "wrote " << output << "/walk_speed_trend.csv and walk_slide.csv\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::cerr << "usage: walk_speed_table <source_directory> <output_directory>\n";
+    return 2;
+  }
+  try {
+    return run(argv[1], argv[2]);
+  } catch (const std::exception& error) {
+    std::cerr << "walk_speed_table: " << error.what() << '\n';
+    return 1;
+  }
+}
