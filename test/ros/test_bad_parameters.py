@@ -5,6 +5,7 @@ import subprocess
 import unittest
 
 import roslib.packages
+import rosparam
 import rospkg
 import rostest
 
@@ -29,6 +30,48 @@ class BadParametersTest(unittest.TestCase):
         self.assertNotEqual(code, 0, "skeleton_publisher accepted %s:\n%s" % (arguments, output))
         self.assertIn("FATAL", output)
         self.assertIn(expected, output)
+
+    def assertSurvives(self, expected, *arguments, waypoints=None):
+        """A bad walking parameter is an error naming it; the node walks on with the default.
+        Lists cannot be given on a C++ node's command line: `waypoints` goes to the server."""
+        node_name = "publisher_" + self.id().split(".")[-1]
+        if waypoints is not None:
+            rosparam.set_param_raw("/%s/waypoints" % node_name, waypoints)
+        expected = expected.replace("{node}", node_name)
+        executable = roslib.packages.find_node("dressed_human", "skeleton_publisher")[0]
+        process = subprocess.Popen([executable, "__name:=" + node_name] + list(arguments), stdout=subprocess.PIPE,
+                                   stderr=subprocess.STDOUT, universal_newlines=True)
+        try:
+            output, _ = process.communicate(timeout=4)
+            self.fail("skeleton_publisher stopped (code %s) on %s:\n%s" % (process.returncode, arguments, output))
+        except subprocess.TimeoutExpired:
+            process.terminate()
+            output, _ = process.communicate(timeout=10)
+        self.assertIn("ERROR", output)
+        self.assertIn(expected, output)
+        self.assertIn("walking a route", output)
+
+    def test_waypoints_not_pairs(self):
+        self.assertSurvives("parameter /{node}/waypoints must be a list of [x, y] pairs in metres, e.g. [[0, 0], [4, 0], "
+                            "[4, 3]]; element 1 is a list of 3", waypoints=[[0, 0], [1, 2, 3]])
+
+    def test_waypoints_nan(self):
+        self.assertSurvives("parameter /{node}/waypoints: waypoint 1 is [nan, 1]", waypoints=[[0, 0], [float("nan"), 1]])
+
+    def test_waypoints_one_place_looped(self):
+        self.assertSurvives("is a closed route with fewer than two distinct places", waypoints=[[2, 2]])
+
+    def test_speed_running(self):
+        self.assertSurvives("parameter /{node}/speed must be in [0, 3] m/s, got 5", "_speed:=5")
+
+    def test_mode_unknown(self):
+        self.assertRejected("parameter /{node}/mode must be 'walk' or 'replay', got 'run'", "_mode:=run")
+
+    def test_route_end_unknown(self):
+        self.assertRejected("parameter /{node}/route_end must be 'loop' or 'stand', got 'stop'", "_route_end:=stop")
+
+    def test_gait_file_missing(self):
+        self.assertRejected("/nonexistent/gaits.yaml: cannot open gait table", "_gait_file:=/nonexistent/gaits.yaml")
 
     def test_rate_out_of_range(self):
         self.assertRejected("parameter /{node}/rate must be in (0, 10000] Hz", "_rate:=-5")
