@@ -182,10 +182,10 @@ void DressedHumanDisplay::addHuman(const std::string& suffix) {
   const std::string label = crowd ? "body" + suffix : std::string();
   const std::string model_status = crowd ? "Model " + label : "Model";
   try {
-    BodyDescription shaped = *body_;
-    shaped.shape = shape_;
+    const tf2_ros::Buffer& tf = *context_->getFrameManager()->getTF2BufferPtr();  // crowd humans' heights differ
+    const CrowdHumanBody body = crowdHumanBody(*skeleton_, urdf_, *body_, shape_, suffix, crowd ? statureInTf(tf, *skeleton_, suffix) : 1.0);
     auto human = std::make_unique<DrawnHuman>(
-        skeleton_->withSuffix(suffix), shaped, settingsFor(suffix), scene_manager_, scene_node_,
+        body.skeleton, body.description, settingsFor(suffix), scene_manager_, scene_node_,
         "dressed_human/" + getName().toStdString() + "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
             "/" + (suffix.empty() ? std::string("body") : suffix.substr(1)),
         label);

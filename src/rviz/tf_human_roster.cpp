@@ -1,11 +1,13 @@
 #include "tf_human_roster.h"
 
+#include <cmath>
 #include <sstream>
 
 #include <ros/time.h>
 #include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skeleton/skeleton.h"
+#include "dressed_human/core/skeleton/urdf_body_shape.h"
 #include "drawn_human.h"
 
 namespace dressed_human {
@@ -37,6 +39,34 @@ std::vector<std::string> freshHumansInTf(const tf2_ros::Buffer& buffer, const st
     if (freshInTf(buffer, fixed_frame, "body" + suffix)) fresh.push_back(suffix);
   }
   return fresh;
+}
+
+double statureInTf(const tf2_ros::Buffer& buffer, const Skeleton& skeleton, const std::string& suffix) {
+  const Skeleton human = skeleton.withSuffix(suffix);
+  const int knee = human.findBone("l_knee");
+  if (knee < 0) return 1.0;
+  const Bone& shank = human.bone(static_cast<std::size_t>(knee));
+  const ArticulatedJoint& joint = human.joint(static_cast<std::size_t>(shank.joint));
+  try {
+    const auto t = buffer.lookupTransform(human.frameName("l_hip"), joint.intermediate_links[0], ros::Time(0)).transform.translation;
+    const double rest = shank.rest_translation.norm();
+    const double stature = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z) / rest;
+    return rest > 0.0 && std::isfinite(stature) && stature > 0.5 && stature < 2.0 ? stature : 1.0;
+  } catch (const tf2::TransformException&) {
+    return 1.0;
+  }
+}
+
+CrowdHumanBody crowdHumanBody(const Skeleton& skeleton, const std::string& urdf, const BodyDescription& body,
+                              const BodyShape& shape, const std::string& suffix, double stature) {
+  CrowdHumanBody human{skeleton.withSuffix(suffix), body};
+  human.description.shape = shape;
+  if (std::abs(stature - 1.0) < 0.005 || !skeleton.bodyShape().isIdentity() || urdf.empty()) return human;
+  BodyShape tall;
+  for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(stature);
+  human.skeleton = Skeleton::fromUrdf(shapedUrdf(urdf, tall)).withSuffix(suffix);
+  for (Eigen::Vector3d& scale : human.description.shape.scale) scale *= stature;
+  return human;
 }
 
 }  // namespace dressed_human
