@@ -17,7 +17,8 @@ export ROS_HOSTNAME=localhost ROSCONSOLE_STDOUT_LINE_BUFFERED=1 PYTHONUNBUFFERED
 grep -qE '^127\.0\.0\.1[[:space:]].*\blocalhost\b' /etc/hosts 2>/dev/null || echo "127.0.0.1 localhost" >> /etc/hosts
 
 echo "== building (build/)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+# No benchmarks: no test runs them (scripts/evaluate.sh builds and runs them).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDRESSED_HUMAN_BENCHMARKS=OFF
 cmake --build build -j"$jobs"
 
 echo "== building the core with ASan+UBSan (build_sanitize/)"

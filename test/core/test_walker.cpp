@@ -161,6 +161,33 @@ TEST(Walker, StandsWithAnIdleSwayAtSpeedZero) {
   EXPECT_LE(stopping.ground.worstSlide(), 0.005);
 }
 
+// In a steady left turn the body leans left, about half the angle a rigid body would (atan(v w / g)),
+// measured against the same walk straight (the pelvis has a roll of its own).
+double meanLean(double turn_rate) {
+  Walker w = walker();
+  w.place({0.0, 0.0}, 0.0);
+  w.drive(1.5, turn_rate);
+  run(w, 3.0);
+  JointAngles angles;
+  SkeletonPose pose;
+  double lean = 0.0;
+  const int steps = 200;  // about two gait cycles
+  for (int i = 0; i < steps; ++i) {
+    w.step(0.01, angles, pose);
+    const Eigen::Vector3d up =
+        Eigen::AngleAxisd(-w.heading(), Eigen::Vector3d::UnitZ()) * (pose.root.rotation * Eigen::Vector3d::UnitZ());
+    lean += std::atan2(up.y(), up.z()) / steps;
+  }
+  return lean;
+}
+
+TEST(Walker, LeansIntoTurns) {
+  const double lean = meanLean(1.0) - meanLean(0.0);
+  const double expected = WalkerSettings().lean * std::atan(1.5 * 1.0 / 9.81);
+  EXPECT_NEAR(lean, expected, 0.3 * expected) << "lean " << lean << " rad against " << expected;
+  EXPECT_LT(meanLean(-1.0) - meanLean(0.0), -0.7 * expected) << "a right turn leans right";
+}
+
 TEST(Route, BadRoutesAreRefusedByName) {
   const auto message = [](const Route& route) {
     try {

@@ -43,12 +43,13 @@ SCENARIOS = {
     # 8 s of walk, looped: time jumps back five times during the observation.
     "replay": {"launch": "replay.launch", "record": 8},
     # A camera fixed in the world, looking at the middle of the recorded walk: each 16 s loop the
-    # human walks into the view, across it and out of it. At a fixed level of detail: the
+    # human walks into the view, across it and out of it (mode replay: the recorded motion walks
+    # straight on, where the default walk loops in view). At a fixed level of detail: the
     # automatic one re-lays the mesh out as the human comes closer, which hid stale bounds.
-    "replay_fixed_camera": {"launch": "replay.launch", "record": 16, "fixed_camera": True,
+    "replay_fixed_camera": {"launch": "replay.launch", "record": 16, "record_args": ["mode:=replay"], "fixed_camera": True,
                             "display": {"Level of Detail": "Fixed"}},
-    # Six humans, one display (Humans: Every Human in TF); the camera follows body_0: each human
-    # drawn where its own TF says, in every screenshot. Six publishers, rviz and this test share
+    # Six humans, one display (Humans: Every Human in TF); the camera is fixed on their area: each
+    # human drawn where its own TF says, in every screenshot. Six publishers, rviz and this test share
     # two cores: under load rviz's and this test's TF of one human differ by up to ~0.8 s of
     # walking (seen: 0.9 m at 1.2 m/s with two extra busy processes), hence the wider margin.
     "crowd": {"launch": "crowd.launch", "config": "crowd.rviz", "crowd": ["_%d" % i for i in range(6)],
@@ -63,9 +64,9 @@ def scenario_name():
     return names[0]
 
 
-def record_walk(seconds, bag, directory):
+def record_walk(seconds, bag, directory, arguments=()):
     """The shipped skeleton launch file, recorded as a user would (README)."""
-    skeleton = Launch("skeleton.launch", [], os.path.join(directory, "record.log"))
+    skeleton = Launch("skeleton.launch", list(arguments), os.path.join(directory, "record.log"))
     try:
         time.sleep(3.0)
         subprocess.run(["rosbag", "record", "--duration=%d" % seconds, "-O", bag, "/tf", "/tf_static"], check=True,
@@ -101,7 +102,7 @@ class HumanOnScreenTest(unittest.TestCase):
         view_changes = dict(scenario.get("view", {}))
         if "record" in scenario:
             bag = os.path.join(output, "walk.bag")
-            record_walk(scenario["record"], bag, output)
+            record_walk(scenario["record"], bag, output, scenario.get("record_args", ()))
             arguments.append("bag:=" + bag)
             if scenario.get("fixed_camera"):
                 (x0, y0), (x1, y1) = walk_extent(bag)
