@@ -204,8 +204,18 @@ class WalkRouteTest(unittest.TestCase):
         self.twist.publish(twist)
         self.path.publish(Path())  # no poses
         rospy.sleep(1.0)
+        elsewhere = Path()
+        elsewhere.header.frame_id = "map"
+        elsewhere.poses.append(PoseStamped())
+        self.path.publish(elsewhere)
+        running = Twist()
+        running.linear.x = 5.0
+        self.twist.publish(running)
+        rospy.sleep(1.0)
         self.assertTrue(any("cmd_vel" in w and "not finite" in w for w in self.warnings), self.warnings)
         self.assertTrue(any("/path" in w and "no waypoints" in w for w in self.warnings), self.warnings)
+        self.assertTrue(any("/path" in w and "frame 'map'" in w for w in self.warnings), self.warnings)
+        self.assertTrue(any("cmd_vel" in w and "outside the walking range" in w for w in self.warnings), self.warnings)
 
     def test_4_a_path_replaces_the_route(self):
         self.recorder.take()
