@@ -28,6 +28,7 @@
 #include "dressed_human/core/motion/motion_evaluator.h"
 #include "dressed_human/core/motion/motion_file.h"
 #include "dressed_human/core/motion/motion_fit.h"
+#include "dressed_human/core/motion/opensim_capture.h"
 #include "dressed_human/core/motion/opensim_motion_file.h"
 #include "dressed_human/core/skeleton/skeleton.h"
 
@@ -46,7 +47,9 @@ const char* const kUsage =
     "Options:\n"
     "  -o, --output FILE     write the motion YAML here (default: standard output)\n"
     "  --format bvh|mot      input format (default: from the extension)\n"
-    "  --map FILE            joint map YAML (default: built-in CMU BVH / ASF names, OpenSim gait2392)\n"
+    "  --map FILE            joint map YAML (default: built-in CMU BVH / ASF names, OpenSim body names)\n"
+    "  --osim FILE           OpenSim input: the model (OpenSim 4 .osim) the motion is of; its joints give the\n"
+    "                        body and the reference (default: config/opensim/gait2392_joints.osim, gait2392)\n"
     "  --urdf FILE           our skeleton (default: urdf/human.urdf)\n"
     "  --period SECONDS      gait period (default: estimated by autocorrelation; needs two cycles)\n"
     "  --tolerance-deg D     RMS residual every angle series must reach, degrees (default 0.5)\n"
@@ -55,7 +58,7 @@ const char* const kUsage =
     "  --order M             every series gets exactly order M (no tolerance search)\n"
     "  --skip-frames N       drop N frames at the start (default: auto, drops a leading bind-pose frame)\n"
     "  --name NAME           motion name in the file (default: the input's file name stem)\n"
-    "  --body fitted|default BVH: fit the person's proportions from the rest pose and write them as\n"
+    "  --body fitted|default fit the person's proportions from the rest pose (BVH) or model (OpenSim) and write them as\n"
     "                        the motion's body_shape (default: fitted); default: our 1.75 m body\n"
     "  --units U             BVH length unit: m, cm, mm, in, cmu (CMU's ASF units, 1/0.45 in) or\n"
     "                        metres per unit (default: the unit that makes the rest pose a human height)\n"
@@ -76,6 +79,8 @@ struct Arguments {
   std::string format;
   std::string map;
   std::string urdf = "urdf/human.urdf";
+  std::string osim = "config/opensim/gait2392_joints.osim";
+  bool osim_given = false;
   std::string name;
   std::string sweep_csv;
   std::size_t sweep_max = 12;
@@ -176,6 +181,9 @@ Arguments parseArguments(int argc, char** argv) {
       if (args.format != "bvh" && args.format != "mot") throw UsageError("--format must be 'bvh' or 'mot'");
     } else if (arg == "--map") {
       args.map = value();
+    } else if (arg == "--osim") {
+      args.osim = value();
+      args.osim_given = true;
     } else if (arg == "--urdf") {
       args.urdf = value();
     } else if (arg == "--period") {
@@ -225,12 +233,9 @@ Arguments parseArguments(int argc, char** argv) {
     else if (ext == "mot" || ext == "sto") args.format = "mot";
     else throw UsageError("cannot tell the format of '" + args.input + "' from its extension; use --format bvh|mot");
   }
+  if (args.osim_given && args.format != "mot") throw UsageError("--osim applies to OpenSim motion input only");
   if (args.format != "bvh") {
-    if (!args.units.empty()) throw UsageError("--units applies to BVH input only (OpenSim files are in metres)");
-    if (args.fit_body && args.body_given) {
-      throw UsageError("--body fitted needs a BVH input: OpenSim joint coordinates carry no skeleton to read a body from");
-    }
-    args.fit_body = false;  // said in the report and the file: "our default body"
+    if (!args.units.empty()) throw UsageError("--units applies to BVH input only (OpenSim models are in metres)");
   }
   if (args.name.empty()) args.name = stem(args.input);
   args.fit.name = args.name;
@@ -240,24 +245,31 @@ Arguments parseArguments(int argc, char** argv) {
 dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleton, bool fit_body) {
   dh::JointMapFile map_file;
   if (!args.map.empty()) map_file = dh::loadJointMapFile(args.map);
+  dh::RetargetOptions options;
+  options.fit_body = fit_body;
+  options.units = args.units;
   if (args.format == "bvh") {
     const dh::BvhClip clip = dh::loadBvhFile(args.input);
     if (!args.map.empty() && map_file.kind != "bvh") {
       throw dh::JointMapError(args.map + ": a BVH input needs a map of kind 'bvh', this one is '" + map_file.kind + "'");
     }
     const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input) : map_file.bvh;
-    dh::RetargetOptions options;
-    options.fit_body = fit_body;
-    options.units = args.units;
     return dh::retargetBvh(clip, map, skeleton, args.input, options);
   }
   const dh::OpenSimTable table = dh::loadOpenSimMotionFile(args.input);
-  if (!args.map.empty() && map_file.kind != "coordinates") {
-    throw dh::JointMapError(args.map + ": an OpenSim input needs a map of kind 'coordinates', this one is '" +
-                            map_file.kind + "'");
+  if (!args.map.empty() && map_file.kind == "coordinates") {
+    // Joint angles only: no model, so no body to fit and no joint positions to measure against.
+    if (fit_body && args.body_given) {
+      throw dh::JointMapError(args.map + ": a map of kind 'coordinates' reads joint angles only; --body fitted reads "
+                              "the body from the model (--osim, with no --map or a map of kind 'bvh' naming its bodies)");
+    }
+    return dh::retargetCoordinates(table, map_file.coordinates, skeleton, args.input);
   }
-  return dh::retargetCoordinates(table, args.map.empty() ? dh::builtinOpenSimGaitMap() : map_file.coordinates,
-                                 skeleton, args.input);
+  // On its model, the motion is a skeleton capture: bodies as joints, in metres.
+  const dh::BvhClip clip = dh::openSimMotionClip(dh::loadOpenSimModelFile(args.osim), table, args.input);
+  const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input + " on " + args.osim) : map_file.bvh;
+  options.units = "m";
+  return dh::retargetBvh(clip, map, skeleton, args.input, options);
 }
 
 std::string commandLine(int argc, char** argv) {
@@ -355,7 +367,7 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
          << "Joint positions vs the capture's own FK (metres, every mapped joint and frame, root-relative): mean "
          << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
     if (default_body) {
-      text << "\n  (on our default body, the capture scaled to our stature: mean " << format(default_body->against_capture.mean_cm, 2)
+      text << "\n  (on our default body, the capture scaled to our size (stature, or legs without a head): mean " << format(default_body->against_capture.mean_cm, 2)
            << " cm, max " << format(default_body->against_capture.max_cm, 2) << " cm)";
     }
     if (accuracy.stance_foot_height.samples > 0) {
@@ -363,7 +375,7 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
            << " cm, max " << format(accuracy.stance_foot_height.max_cm, 2) << " cm";
     }
   } else {
-    text << "Joint positions vs the capture's own FK (scaled to our stature, our default body, root-relative): mean "
+    text << "Joint positions vs the capture's own FK (scaled to our size: stature, or legs without a head; our default body, root-relative): mean "
          << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
   }
   return text.str();

@@ -53,8 +53,8 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
         self.assertRefused("unknown length unit 'parsec': expected one of m, cm, mm, in, cmu", "--units", "parsec")
         self.assertRefused("--body must be 'fitted' or 'default', got 'tall'", "--body", "tall")
         gait = os.path.join(ROOT, "data", "motion", "tutorial_normal_gait_cycle.mot")
-        for arguments, message in ((["--body", "fitted"], "--body fitted needs a BVH input"),
-                                   (["--units", "cm"], "--units applies to BVH input only")):
+        for arguments, message in ((["--units", "cm"], "--units applies to BVH input only"),
+                                   (["--osim", "x.osim", "--format", "bvh"], "--osim applies to OpenSim motion input only")):
             result = subprocess.run([FIT_MOTION, gait, "--urdf", URDF, *arguments], capture_output=True, text=True,
                                     timeout=120)
             self.assertEqual(result.returncode, 2, result.stderr)
@@ -79,6 +79,25 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
             self.assertEqual(code, 0, stderr)
             with open(default) as f:
                 self.assertNotIn("body_shape", f.read())
+
+    def test_an_opensim_motion_gets_the_body_of_its_model(self):
+        gait = os.path.join(ROOT, "data", "motion", "tutorial_normal_gait_cycle.mot")
+        model = os.path.join(ROOT, "config", "opensim", "gait2392_joints.osim")
+        with tempfile.TemporaryDirectory() as directory:
+            fitted = os.path.join(directory, "gait.yaml")
+            result = subprocess.run([FIT_MOTION, gait, "--urdf", URDF, "--osim", model, "--period", "1", "-o", fitted],
+                                    capture_output=True, text=True, timeout=120)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("Joint positions vs the capture's own FK (metres", result.stderr)
+            with open(fitted) as f:
+                self.assertIn("\nbody_shape:", f.read())
+            # A model that is not there, or not a model, is named.
+            for bad, message in ((os.path.join(directory, "none.osim"), "cannot open the OpenSim model file"),
+                                 (gait, "not valid XML")):
+                result = subprocess.run([FIT_MOTION, gait, "--urdf", URDF, "--osim", bad, "--period", "1", "-q"],
+                                        capture_output=True, text=True, timeout=120)
+                self.assertEqual(result.returncode, 1, result.stderr)
+                self.assertIn(bad + ": " + message, result.stderr)
 
     def test_a_good_output_is_written(self):
         with tempfile.TemporaryDirectory() as directory:

@@ -123,9 +123,10 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
   const Eigen::Matrix3d to_ours = bvhToOurAxes(clip, rest, map, source_name);
   const auto placePair = [&](int left, int right, int anchor, int anchor_distal, bool turn_with_anchor,
                              const char* fixed_left, const char* fixed_right, const char* what) {
-    for (const int joint : {left, right, anchor, anchor_distal}) {
+    for (const int joint : {left, right, anchor}) {
       if (map.joints[static_cast<std::size_t>(joint)].empty()) return;
     }
+    if (turn_with_anchor && map.joints[static_cast<std::size_t>(anchor_distal)].empty()) return;
     const ForwardKinematics kinematics(skeleton, proportions.shape);
     SkeletonPose pose;
     kinematics.compute(RigidTransform(), JointAngles{}, pose);

@@ -33,6 +33,22 @@ BvhJointMap asfMap() {
            "rwrist", "lfemur", "ltibia", "lfoot", "rfemur", "rtibia", "rfoot"}};
 }
 
+// OpenSim models as BVH clips (opensim_capture.h): joints named by the body they move. The
+// full-body models (Hamner, Rajagopal) add arms to gait2392's legs and back; gait2392's torso
+// carries head and arms rigidly, so its neck and arms stay at rest.
+BvhJointMap openSimFullBodyMap() {
+  return {"OpenSim full body",
+          "pelvis",
+          {"torso", "", "", "", "humerus_l", "ulna_l", "hand_l", "humerus_r", "ulna_r", "hand_r", "femur_l", "tibia_l",
+           "talus_l", "femur_r", "tibia_r", "talus_r"}};
+}
+
+BvhJointMap openSimGaitBodyMap() {
+  return {"OpenSim gait2392 bodies",
+          "pelvis",
+          {"torso", "", "", "", "", "", "", "", "", "", "femur_l", "tibia_l", "talus_l", "femur_r", "tibia_r", "talus_r"}};
+}
+
 CoordinateRotation about(const char* column, double x, double y, double z) {
   return {column, Eigen::Vector3d(x, y, z).normalized()};
 }
@@ -73,7 +89,7 @@ std::string joinNames(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<BvhJointMap>& builtinBvhJointMaps() {
-  static const std::vector<BvhJointMap> maps = {cmuBvhMap(), asfMap()};
+  static const std::vector<BvhJointMap> maps = {cmuBvhMap(), asfMap(), openSimFullBodyMap(), openSimGaitBodyMap()};
   return maps;
 }
 

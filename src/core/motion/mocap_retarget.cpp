@@ -284,7 +284,10 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
       source_high = std::max(source_high, end_height);
     }
   }
-  motion.reference_scale = skeletonStature(skeleton) / (source_high - source_low);
+  // The stature needs the top of the head; a source without one (an OpenSim gait model: legs and
+  // pelvis) is scaled by its legs, as the root is.
+  motion.reference_scale =
+      map.joints[kHead].empty() ? motion.root_scale : skeletonStature(skeleton) / (source_high - source_low);
 
   const std::size_t frames = clip.frames.size();
   motion.times.resize(frames);

@@ -6,8 +6,10 @@
 //    joint (the one at the proximal end of the same anatomical segment);
 //  - joint coordinates (OpenSim .mot): each of our joints is a chain of single-axis rotations
 //    read from columns, about axes of the OpenSim segment frame (X forward, Y up, Z right).
-// Built-in maps: CMU BVH names (Hips, LeftUpLeg, ...), ASF-style names (root, lfemur, ...) and the
-// OpenSim gait models (gait2354/gait2392 coordinate names). Other sources: a YAML map file.
+// Built-in maps: CMU BVH names (Hips, LeftUpLeg, ...), ASF-style names (root, lfemur, ...), OpenSim
+// models turned into BVH clips (opensim_capture.h: body names pelvis, femur_l, ...; with or
+// without arms) and the OpenSim gait models' coordinates (gait2354/gait2392 coordinate names, for
+// a motion without its model). Other sources: a YAML map file.
 //
 // YAML layout (see data/motion/README.md for full examples):
 //   kind: bvh                 # the source joint for every one of our 16 joints (~: held at rest)
@@ -37,6 +39,7 @@ namespace human_joint {
 constexpr int kWaist = 0;
 constexpr int kTorso = 1;
 constexpr int kNeck = 2;
+constexpr int kHead = 3;
 constexpr int kLeftShoulder = 4;
 constexpr int kRightShoulder = 7;
 constexpr int kLeftHip = 10;

@@ -36,14 +36,14 @@ struct SampledMotion {
   std::array<bool, kJointCount> driven{};    // false: the source does not move this joint (held at rest)
   // The source skeleton's own forward kinematics, for the accuracy metric: the proximal joint of
   // every driven bone, our axes, relative to our root. Without a fitted body: relative to the
-  // source root, scaled to our stature; with one: metres, relative to where our root is placed in
+  // source root, scaled to our stature (our legs without a mapped head); with one: metres, relative to where our root is placed in
   // the capture's world. Empty when the source has no skeleton (joint coordinates).
   std::vector<JointPositions> reference_joint_positions;
   // With a fitted body: the lowest point of each foot of the capture (the mapped ankle's subtree,
   // joints and end sites; left, right), height in the capture's world, metres.
   std::vector<std::array<double, 2>> reference_lowest_foot;
   double root_scale = 1.0;       // metres per source unit for the root translation (leg length ratio)
-  double reference_scale = 1.0;  // metres per source unit for the reference positions (stature ratio)
+  double reference_scale = 1.0;  // metres per source unit for the reference positions (stature ratio; leg ratio without a head)
   // The captured person's proportions (body_proportions.h): set when RetargetOptions::fit_body;
   // otherwise our default body (identity shape).
   bool body_fitted = false;

@@ -1,0 +1,23 @@
+#pragma once
+// An OpenSim motion on its model as a BVH clip: one BVH joint per model joint, named by the body
+// it moves, with the model's forward kinematics in its channels. Fitting then treats it as any
+// skeleton capture: the body's proportions come from the model's joint layout (its zero pose is
+// the rest pose), the reference joint positions and feet from the model's own kinematics,
+// including the knee's rolling translation.
+
+#include <string>
+
+#include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/motion/opensim_model.h"
+#include "dressed_human/core/motion/opensim_motion_file.h"
+
+namespace dressed_human {
+
+// Rotational coordinates from degrees when the table says inDegrees=yes; a coordinate the table
+// lacks keeps the model's default. Throws OpenSimModelError naming the source when the table has
+// none of the model's coordinates, its times are not evenly spaced (within 1 %), the model has
+// no joint or several joints on the ground, or a joint's frames are turned in the zero pose (a
+// rest pose a BVH offset cannot carry).
+BvhClip openSimMotionClip(const OpenSimModel& model, const OpenSimTable& table, const std::string& source_name);
+
+}  // namespace dressed_human
