@@ -29,6 +29,27 @@ std::string factorText(double value) {
   return text;
 }
 
+// The overall factor: the limbs' mean (thighs, shanks, upper arms, forearms), which capture
+// skeletons agree on; the rest stature where no limb is mapped. It is every bone's a and b, and
+// c of the bones no segment measured.
+void applyOverallFactor(const Skeleton& skeleton, const std::array<bool, kBoneCount>& measured, double stature,
+                        BodyProportions& proportions) {
+  double sum = 0.0;
+  int limbs = 0;
+  for (const char* limb : {"l_hip", "r_hip", "l_knee", "r_knee", "l_shoulder", "r_shoulder", "l_elbow", "r_elbow"}) {
+    const auto bone = static_cast<std::size_t>(skeleton.findBone(limb));
+    if (!measured[bone]) continue;
+    sum += proportions.shape.scale[bone].z();
+    ++limbs;
+  }
+  proportions.overall = limbs > 0 ? sum / limbs : stature;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    proportions.shape.scale[b].x() = proportions.overall;
+    proportions.shape.scale[b].y() = proportions.overall;
+    if (!measured[b]) proportions.shape.scale[b].z() = proportions.overall;
+  }
+}
+
 }  // namespace
 
 BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
@@ -76,22 +97,7 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
     proportions.shape.scale[bone].z() = check(proportions.source_length[bone] / ours, segment + "'s length");
     measured[bone] = true;
   }
-  // The overall factor: the limbs' mean (thighs, shanks, upper arms, forearms), which capture
-  // skeletons agree on; the rest stature where no limb is mapped.
-  double sum = 0.0;
-  int limbs = 0;
-  for (const char* limb : {"l_hip", "r_hip", "l_knee", "r_knee", "l_shoulder", "r_shoulder", "l_elbow", "r_elbow"}) {
-    const auto bone = static_cast<std::size_t>(skeleton.findBone(limb));
-    if (!measured[bone]) continue;
-    sum += proportions.shape.scale[bone].z();
-    ++limbs;
-  }
-  proportions.overall = limbs > 0 ? sum / limbs : stature;
-  for (std::size_t b = 0; b < kBoneCount; ++b) {
-    proportions.shape.scale[b].x() = proportions.overall;
-    proportions.shape.scale[b].y() = proportions.overall;
-    if (!measured[b]) proportions.shape.scale[b].z() = proportions.overall;
-  }
+  applyOverallFactor(skeleton, measured, stature, proportions);
 
   // The fixed bones set the widths: each one's c moves the joints it carries along its axis, so
   // the distance between the left and right joint is linear in c; two evaluations solve for it.
@@ -140,7 +146,11 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
         metres_per_unit * (laid.transpose() * (to_ours * (0.5 * (source(left) + source(right)) - source(anchor))));
     const Eigen::Vector3d ours =
         frame.transpose() * (0.5 * (at(left).translation + at(right).translation) - at(anchor).translation);
-    const Eigen::Vector3d shift = target - ours;  // in the frame of both fixed bones' parent
+    // In the frame of both fixed bones' parent: the anchor's when turned with it, else from the body frame.
+    const int parent = skeleton.bone(static_cast<std::size_t>(skeleton.findBone(fixed_left))).parent;
+    Eigen::Matrix3d to_parent = Eigen::Matrix3d::Identity();
+    if (!turn_with_anchor && parent >= 0) to_parent = pose.bone_in_world[static_cast<std::size_t>(parent)].rotation.toRotationMatrix().transpose();
+    const Eigen::Vector3d shift = to_parent * (target - ours);
     if (shift.cwiseAbs().maxCoeff() > kMaxShapeOffset) {
       throw MotionError(source_name + ": the " + what + " lie " + factorText(shift.norm()) +
                         " m from ours: a wrong joint map?");
@@ -148,7 +158,11 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
     for (const char* bone : {fixed_left, fixed_right}) proportions.shape.offset[static_cast<std::size_t>(skeleton.findBone(bone))] += shift;
   };
   placePair(kLeftHip, kRightHip, kWaist, kTorso, false, "l_pelvis", "r_pelvis", "hip joints");
-  placePair(kLeftShoulder, kRightShoulder, kTorso, kNeck, true, "l_clavicle", "r_clavicle", "shoulder joints");
+  // A source whose chest is one rigid piece from the low back up (OpenSim's torso) has no chest
+  // joint: the shoulders are placed relative to the waist joint, in the body frame.
+  const bool chest = !map.joints[kTorso].empty();
+  placePair(kLeftShoulder, kRightShoulder, chest ? kTorso : kWaist, chest ? kNeck : kTorso, chest, "l_clavicle", "r_clavicle",
+            "shoulder joints");
   return proportions;
 }
 
