@@ -64,6 +64,12 @@ std::string scaledModel(double scale) {
   return scaled;
 }
 
+std::string replaced(const std::string& what, const std::string& with, std::string text = modelText()) {
+  const std::size_t at = text.find(what);
+  EXPECT_NE(at, std::string::npos) << what;
+  return text.replace(at, what.size(), with);
+}
+
 TEST(OpenSimModel, TheShippedGait2392ReadsAsOpenSimDefinesIt) {
   const OpenSimModel model = loadOpenSimModelFile(kModelPath);
   EXPECT_EQ(model.bodies.size(), 12u);
@@ -182,6 +188,40 @@ TEST(OpenSimCapture, TheGaitWalkOnItsFittedBodyMeetsTheModelsJointsAndFeet) {
   EXPECT_LE(accuracy.max_rms_degrees, 6.0);
 }
 
+// gait2392 with arms welded to its torso (as the full-body models carry them, but rigid): the
+// torso then branches into two arms, and our chest must still point up the middle.
+std::string modelWithArms() {
+  std::string bodies, joints;
+  const auto weld = [&](const std::string& name, const std::string& parent, const std::string& child, const std::string& at) {
+    bodies += "<Body name=\"" + child + "\" />";
+    joints += "<WeldJoint name=\"" + name + "\"><socket_parent_frame>" + parent + "_offset</socket_parent_frame>"
+              "<socket_child_frame>/bodyset/" + child + "</socket_child_frame><frames><PhysicalOffsetFrame name=\"" +
+              parent + "_offset\"><socket_parent>/bodyset/" + parent + "</socket_parent><translation>" + at +
+              "</translation><orientation>0 0 0</orientation></PhysicalOffsetFrame></frames></WeldJoint>";
+  };
+  for (const std::string side : {"r", "l"}) {
+    const std::string z = side == "r" ? "0.17" : "-0.17";
+    weld("acromial_" + side, "torso", "humerus_" + side, "0.003 0.372 " + z);
+    weld("elbow_" + side, "humerus_" + side, "ulna_" + side, "0.013 -0.286 0");
+    weld("wrist_" + side, "ulna_" + side, "hand_" + side, "0 -0.24 0");
+  }
+  std::string text = replaced("<Body name=\"torso\" />", "<Body name=\"torso\" />" + bodies);
+  return replaced("</objects>\n    </JointSet>", joints + "</objects>\n    </JointSet>", text);
+}
+
+TEST(OpenSimCapture, AModelWithArmsPutsThemWhereItsTorsoCarriesThem) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
+  const OpenSimModel model = parseOpenSimModel(modelWithArms(), "arms.osim");
+  SampledMotion sampled;
+  const FitAccuracy accuracy = fittedWalk(model, skeleton, sampled);
+  EXPECT_TRUE(sampled.driven[static_cast<std::size_t>(skeleton.bone(static_cast<std::size_t>(skeleton.findBone("l_elbow"))).joint)]);
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    if (!sampled.driven[j]) continue;
+    EXPECT_LE(accuracy.joint_against_capture[j].max_cm, 5.0) << humanJointNames()[j];
+  }
+  EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
+}
+
 TEST(OpenSimCapture, AModelScaledByAKnownFactorGivesThatBodyWithinOnePercent) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
   SampledMotion base;
@@ -207,12 +247,6 @@ void expectModelError(const std::string& xml, const std::string& message) {
     EXPECT_EQ(std::string(error.what()).rfind("bad.osim: ", 0), 0u) << error.what();
     EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
   }
-}
-
-std::string replaced(const std::string& what, const std::string& with, std::string text = modelText()) {
-  const std::size_t at = text.find(what);
-  EXPECT_NE(at, std::string::npos) << what;
-  return text.replace(at, what.size(), with);
 }
 
 // The first element `name` of the model renamed `other`, its closing tag too.

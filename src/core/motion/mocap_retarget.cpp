@@ -33,10 +33,24 @@ RestPose ourRestPose(const Skeleton& skeleton) {
   return rest;
 }
 
-// Rest direction of a source segment: towards the first descendant (joint or end site) that is
-// not at the same place; zero-length helper joints (CMU's LHipJoint, LeftFingerBase) are skipped.
+// Rest direction of a source segment: towards the middle of its children where it branches (an
+// OpenSim torso carrying both arms, a hand with fingers and thumb), else towards the first
+// descendant (joint or end site) that is not at the same place; zero-length helper joints (CMU's
+// LHipJoint, LeftFingerBase) are skipped.
 Eigen::Vector3d firstDistinctDescendant(const BvhClip& clip, const BvhPose& rest, int joint) {
   const Eigen::Vector3d& origin = rest.position[static_cast<std::size_t>(joint)];
+  std::vector<Eigen::Vector3d> branches;
+  for (const Eigen::Vector3d& end : clip.joints[static_cast<std::size_t>(joint)].end_sites) branches.push_back(end);
+  for (const int child : clip.joints[static_cast<std::size_t>(joint)].children) {
+    branches.push_back(rest.position[static_cast<std::size_t>(child)] - origin);
+  }
+  branches.erase(std::remove_if(branches.begin(), branches.end(), [](const Eigen::Vector3d& d) { return d.norm() < 1e-9; }),
+                 branches.end());
+  if (branches.size() > 1) {
+    Eigen::Vector3d middle = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& d : branches) middle += d / static_cast<double>(branches.size());
+    if (middle.norm() > 1e-9) return middle;
+  }
   std::vector<int> stack = {joint};
   while (!stack.empty()) {
     const auto j = static_cast<std::size_t>(stack.back());
