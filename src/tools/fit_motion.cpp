@@ -367,15 +367,18 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
          << "Joint positions vs the capture's own FK (metres, every mapped joint and frame, root-relative): mean "
          << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
     if (default_body) {
-      text << "\n  (on our default body, the capture scaled to our size (stature, or legs without a head): mean " << format(default_body->against_capture.mean_cm, 2)
+      text << "\n  (on our default body, the capture scaled to our size (stature, or legs without a head): mean "
+         << format(default_body->against_capture.mean_cm, 2)
            << " cm, max " << format(default_body->against_capture.max_cm, 2) << " cm)";
     }
     if (accuracy.stance_foot_height.samples > 0) {
       text << "\nLowest foot point in stance vs the capture's: mean " << format(accuracy.stance_foot_height.mean_cm, 2)
-           << " cm, max " << format(accuracy.stance_foot_height.max_cm, 2) << " cm";
+           << " cm, max " << format(accuracy.stance_foot_height.max_cm, 2) << " cm (the capture's floor rises "
+           << format(100.0 * sampled.floor_rise_per_second, 2) << " cm/s along the record: levelled)";
     }
   } else {
-    text << "Joint positions vs the capture's own FK (scaled to our size: stature, or legs without a head; our default body, root-relative): mean "
+    text << "Joint positions vs the capture's own FK (scaled to our size: stature, or legs without a head; our default "
+            "body, root-relative): mean "
          << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
   }
   return text.str();

@@ -143,11 +143,13 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
   EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
   EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
   EXPECT_GT(default_accuracy.against_capture.mean_cm, 4.0 * accuracy.against_capture.mean_cm);
-  // Feet: 1.11 cm mean, 2.42 cm max in stance (the foot aimed at its toe tip; at its ball, as the
-  // other bones' first descendant, about twice that).
+  // Feet, the goal: the lowest foot point in stance within 1 cm of the capture's. It takes
+  // the foot tilted to the capture's toe height (aimed along the segment: 1.11 / 2.42 cm) and the
+  // capture's rising floor levelled (not levelled: 1.29 / 2.80 cm).
   EXPECT_GT(accuracy.stance_foot_height.samples, 100u);
-  EXPECT_LT(accuracy.stance_foot_height.mean_cm, 1.2);
-  EXPECT_LT(accuracy.stance_foot_height.max_cm, 3.0);
+  EXPECT_LT(accuracy.stance_foot_height.mean_cm, 0.5);
+  EXPECT_LE(accuracy.stance_foot_height.max_cm, 1.0);
+  EXPECT_NEAR(fitted_body.floor_rise_per_second, 0.021, 0.005);  // the left foot lands 3 cm higher a cycle later
   // The angles are those of the fit on our default body (the shape moves no rotation; the period,
   // estimated from all series with the root among them, differs in the 7th digit).
   EXPECT_NEAR(accuracy.max_rms_degrees, default_accuracy.max_rms_degrees, 1e-3);

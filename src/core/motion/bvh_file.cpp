@@ -278,17 +278,30 @@ BvhPose bvhRestPose(const BvhClip& clip) {
   return chainPose(clip, rotation, translation);
 }
 
-Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint) {
-  Eigen::Vector3d farthest = Eigen::Vector3d::Zero();
-  const auto consider = [&](const Eigen::Vector3d& point) {
-    const Eigen::Vector3d d = point - pose.position[joint];
-    if (d.norm() > farthest.norm()) farthest = d;
+BvhPoint bvhFarthestPointBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint) {
+  BvhPoint farthest{joint, -1};
+  double distance = 0.0;
+  const auto consider = [&](const BvhPoint& point) {
+    const double d = (bvhPointPosition(clip, pose, point) - pose.position[joint]).norm();
+    if (d > distance) {
+      distance = d;
+      farthest = point;
+    }
   };
   for (const std::size_t j : bvhSubtree(clip, joint)) {
-    consider(pose.position[j]);
-    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) consider(pose.position[j] + pose.rotation[j] * end);
+    consider({j, -1});
+    for (std::size_t e = 0; e < clip.joints[j].end_sites.size(); ++e) consider({j, static_cast<int>(e)});
   }
   return farthest;
+}
+
+Eigen::Vector3d bvhPointPosition(const BvhClip& clip, const BvhPose& pose, const BvhPoint& point) {
+  const Eigen::Vector3d& at = pose.position[point.joint];
+  return point.end_site < 0 ? at : Eigen::Vector3d(at + pose.rotation[point.joint] * clip.joints[point.joint].end_sites[static_cast<std::size_t>(point.end_site)]);
+}
+
+Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint) {
+  return bvhPointPosition(clip, pose, bvhFarthestPointBelow(clip, pose, joint)) - pose.position[joint];
 }
 
 std::vector<std::size_t> bvhSubtree(const BvhClip& clip, std::size_t joint) {

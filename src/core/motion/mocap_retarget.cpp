@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "dressed_human/core/motion/motion.h"
 
@@ -100,6 +101,44 @@ Eigen::Matrix3d chainRotation(const std::vector<CoordinateRotation>& chain, cons
   return rotation;
 }
 
+// A capture's floor that rises or sinks along the record (a tilted calibration, CMU 02_01: the
+// left foot lands 3 cm higher a cycle later) cannot be followed by a periodic motion: its feet
+// would float above the ground in one cycle and sink into it in the next. The floor is where a
+// foot rests: the lower foot's lowest point while it hardly moves up or down (under 5 cm/s),
+// fitted by a line in time; the root and the reference feet are levelled by it. A level record
+// gives a flat line whatever part of a cycle it covers (the resting foot's height is the floor's).
+void levelFloor(SampledMotion& motion) {
+  constexpr double kRestingSpeed = 0.05;  // m/s
+  const std::size_t frames = motion.times.size();
+  std::vector<std::pair<double, double>> resting;  // time, floor height
+  for (std::size_t f = 1; f + 1 < frames; ++f) {
+    const auto& feet = motion.reference_lowest_foot;
+    const std::size_t lower = feet[f][0] <= feet[f][1] ? 0 : 1;
+    const double speed = (feet[f + 1][lower] - feet[f - 1][lower]) / (motion.times[f + 1] - motion.times[f - 1]);
+    if (std::abs(speed) < kRestingSpeed) resting.emplace_back(motion.times[f], feet[f][lower]);
+  }
+  motion.floor_rise_per_second = 0.0;
+  if (resting.size() < 10 || resting.back().first - resting.front().first < 0.5) return;
+  double mean_t = 0.0;
+  double mean_floor = 0.0;
+  for (const auto& [t, floor] : resting) {
+    mean_t += t / static_cast<double>(resting.size());
+    mean_floor += floor / static_cast<double>(resting.size());
+  }
+  double covariance = 0.0;
+  double variance = 0.0;
+  for (const auto& [t, floor] : resting) {
+    covariance += (t - mean_t) * (floor - mean_floor);
+    variance += (t - mean_t) * (t - mean_t);
+  }
+  motion.floor_rise_per_second = covariance / variance;
+  for (std::size_t f = 0; f < frames; ++f) {
+    const double rise = motion.floor_rise_per_second * (motion.times[f] - mean_t);
+    motion.root[f].translation.z() -= rise;
+    for (double& lowest : motion.reference_lowest_foot[f]) lowest -= rise;
+  }
+}
+
 // With a fitted body (its unit and proportions found here), the root and the reference in metres
 // of the capture: our joints (FK with the fitted shape on the retargeted angles) and the
 // capture's, both relative to the source root, differ by a constant offset of our root in the
@@ -160,6 +199,20 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
       motion.reference_lowest_foot[f][side] = feet[side].empty() ? 0.0 : lowest;
     }
   }
+  if (!feet[0].empty() && !feet[1].empty()) levelFloor(motion);
+}
+
+// Where a rigid foot points: the capture's toes bend (at push-off the ankle-to-toe-tip line is
+// shorter than at rest), ours cannot; aimed along that line our toe tip would dig below the
+// capture's. So the foot keeps the line's heading and tilts so that its tip, at the rest length,
+// is as high as the capture's toe tip: where the foot meets the ground is what shows.
+Eigen::Vector3d footAim(const BvhClip& clip, const BvhPose& pose, const BvhPoint& toe_tip, std::size_t ankle, double rest,
+                        const Eigen::Matrix3d& to_ours) {
+  const Eigen::Vector3d line = to_ours * (bvhPointPosition(clip, pose, toe_tip) - pose.position[ankle]);
+  const Eigen::Vector3d heading(line.x(), line.y(), 0.0);
+  if (!(rest > 1e-9) || heading.norm() < 1e-9 || std::abs(line.z()) >= rest) return line;
+  const double drop = line.z() / rest;
+  return heading.normalized() * std::sqrt(1.0 - drop * drop) + Eigen::Vector3d(0, 0, drop);
 }
 
 }  // namespace
@@ -240,6 +293,8 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   // rest segment. World target of bone b = to_ours * G_source * to_ours^T * offset_b.
   std::array<Eigen::Matrix3d, kJointCount> rest_offset;
   std::array<std::size_t, kJointCount> source_joint{};
+  std::array<std::optional<BvhPoint>, kJointCount> toe_tip;  // a foot's farthest point, which its bone points at
+  std::array<double, kJointCount> toe_rest_length{};
   SampledMotion motion;
   motion.source = source_name;
   for (std::size_t j = 0; j < kJointCount; ++j) {
@@ -251,11 +306,16 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     // A foot points at its farthest point (the toe tip), which its length reaches (body_proportions.h):
     // in a flat stance the sole's line, where the first descendant (the ball) tilts it into the ground.
     const bool foot = j == static_cast<std::size_t>(kLeftAnkle) || j == static_cast<std::size_t>(kRightAnkle);
+    const bool own_tip = foot && (distal < 0 || map.joints[static_cast<std::size_t>(distal)].empty());
+    if (own_tip) {
+      toe_tip[j] = bvhFarthestPointBelow(clip, source_rest, source_joint[j]);
+      toe_rest_length[j] = bvhFarthestBelow(clip, source_rest, source_joint[j]).norm();
+    }
     Eigen::Vector3d direction = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty()
                                     ? source_rest.position[sourceIndex(map.joints[static_cast<std::size_t>(distal)])] -
                                           source_rest.position[source_joint[j]]
-                                : foot ? bvhFarthestBelow(clip, source_rest, source_joint[j])
-                                       : firstDistinctDescendant(clip, source_rest, s);
+                                : own_tip ? bvhFarthestBelow(clip, source_rest, source_joint[j])
+                                          : firstDistinctDescendant(clip, source_rest, s);
     if (direction.norm() < 1e-9) direction = firstDistinctDescendant(clip, source_rest, s);
     const std::size_t bone = static_cast<std::size_t>(skeleton.joint(j).bone);
     Eigen::Matrix3d offset = our_rest.rotation[bone];
@@ -318,6 +378,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
       target_pointer[j] = nullptr;
       if (!motion.driven[j]) continue;
       target[j] = to_ours * pose.rotation[source_joint[j]] * to_ours.transpose() * rest_offset[j];
+      if (toe_tip[j]) target[j] = toMatrix(Eigen::Quaterniond::FromTwoVectors(target[j].col(2), footAim(clip, pose, *toe_tip[j], source_joint[j], toe_rest_length[j], to_ours))) * target[j];
       target_pointer[j] = &target[j];
       motion.reference_joint_positions[f][j] =
           motion.reference_scale * (to_ours * (pose.position[source_joint[j]] - pose.position[root]));

@@ -54,8 +54,16 @@ BvhPose bvhForwardKinematics(const BvhClip& clip, std::size_t frame);
 BvhPose bvhRestPose(const BvhClip& clip);
 // `joint` and every joint below it.
 std::vector<std::size_t> bvhSubtree(const BvhClip& clip, std::size_t joint);
-// From `joint` to the farthest joint or end site of its subtree in `pose` (zero for a lone joint
-// without end sites): a segment's extent where it ends in markers (a foot's toe tip).
+// A joint, or one of its end sites.
+struct BvhPoint {
+  std::size_t joint = 0;
+  int end_site = -1;  // -1: the joint itself
+};
+Eigen::Vector3d bvhPointPosition(const BvhClip& clip, const BvhPose& pose, const BvhPoint& point);
+// The joint or end site of `joint`'s subtree farthest from it in `pose` (`joint` itself for a lone
+// joint without end sites): where a segment that ends in markers ends (a foot's toe tip).
+BvhPoint bvhFarthestPointBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint);
+// From `joint` to that point.
 Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint);
 
 // Throws BvhError "source:line: what" for any malformed input: unknown keywords, bad or missing

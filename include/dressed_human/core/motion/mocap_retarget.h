@@ -40,8 +40,11 @@ struct SampledMotion {
   // the capture's world. Empty when the source has no skeleton (joint coordinates).
   std::vector<JointPositions> reference_joint_positions;
   // With a fitted body: the lowest point of each foot of the capture (the mapped ankle's subtree,
-  // joints and end sites; left, right), height in the capture's world, metres.
+  // joints and end sites; left, right), height in the capture's world, metres, levelled as the root.
   std::vector<std::array<double, 2>> reference_lowest_foot;
+  // With a fitted body: how fast the capture's floor (the resting lower foot's lowest point, a line
+  // fitted in time) rises, m/s; the root and the reference feet are levelled by it.
+  double floor_rise_per_second = 0.0;
   double root_scale = 1.0;       // metres per source unit for the root translation (leg length ratio)
   double reference_scale = 1.0;  // metres per source unit for the reference positions (stature ratio; leg ratio without a head)
   // The captured person's proportions (body_proportions.h): set when RetargetOptions::fit_body;
