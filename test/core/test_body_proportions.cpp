@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "bvh_test_support.h"
 #include "dressed_human/core/io/text_file.h"
@@ -69,6 +70,65 @@ TEST(BodyProportions, OurSkeletonScaledByAKnownFactorIsRecoveredWithinOnePercent
         EXPECT_NEAR(fitted.shape.scale[b][k], scale, 0.01 * scale) << skeleton.bone(b).name << " factor " << k;
       }
       EXPECT_LT(fitted.shape.offset[b].norm(), 1e-6) << skeleton.bone(b).name;  // our own layout
+    }
+  }
+}
+
+// Our skeleton's BVH (CMU names) renamed as another rig names its joints.
+std::string renamedBvh(std::string text, const std::vector<std::pair<std::string, std::string>>& names,
+                       const std::string& name_space) {
+  for (const auto& [cmu, other] : names) {
+    for (const std::string keyword : {"ROOT ", "JOINT "}) {
+      const std::size_t at = text.find(keyword + cmu + "\n");
+      if (at != std::string::npos) text.replace(at, keyword.size() + cmu.size(), keyword + "@" + other);
+    }
+  }
+  for (std::size_t at = text.find('@'); at != std::string::npos; at = text.find('@', at)) text.replace(at, 1, name_space);
+  return text;
+}
+
+TEST(BodyProportions, RigsNamedAsAnimationToolsNameThemAreRecognisedAndFitted) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
+  BodyShape shape;
+  for (Eigen::Vector3d& s : shape.scale) s.setConstant(1.1);
+  const std::string ours = bvhOfOurSkeleton(skeleton, somePoses(), shape);
+  const std::vector<std::pair<std::string, std::string>> mixamo = {
+      {"Spine", "Spine2"}, {"LowerBack", "Spine"}, {"Neck1", "Neck"}, {"Hips", "Hips"}, {"Head", "Head"},
+      {"LeftArm", "LeftArm"}, {"LeftForeArm", "LeftForeArm"}, {"LeftHand", "LeftHand"}, {"RightArm", "RightArm"},
+      {"RightForeArm", "RightForeArm"}, {"RightHand", "RightHand"}, {"LeftUpLeg", "LeftUpLeg"}, {"LeftLeg", "LeftLeg"},
+      {"LeftFoot", "LeftFoot"}, {"RightUpLeg", "RightUpLeg"}, {"RightLeg", "RightLeg"}, {"RightFoot", "RightFoot"}};
+  const std::vector<std::pair<std::string, std::string>> unreal = {
+      {"Spine", "spine_03"}, {"LowerBack", "spine_01"}, {"Neck1", "neck_01"}, {"Hips", "pelvis"}, {"Head", "head"},
+      {"LeftArm", "upperarm_l"}, {"LeftForeArm", "lowerarm_l"}, {"LeftHand", "hand_l"}, {"RightArm", "upperarm_r"},
+      {"RightForeArm", "lowerarm_r"}, {"RightHand", "hand_r"}, {"LeftUpLeg", "thigh_l"}, {"LeftLeg", "calf_l"},
+      {"LeftFoot", "foot_l"}, {"RightUpLeg", "thigh_r"}, {"RightLeg", "calf_r"}, {"RightFoot", "foot_r"}};
+  const std::vector<std::pair<std::string, std::string>> bandai = {
+      {"Spine", "Chest"}, {"LowerBack", "Spine"}, {"Neck1", "Neck"}, {"Hips", "Hips"}, {"Head", "Head"},
+      {"LeftArm", "UpperArm_L"}, {"LeftForeArm", "LowerArm_L"}, {"LeftHand", "Hand_L"}, {"RightArm", "UpperArm_R"},
+      {"RightForeArm", "LowerArm_R"}, {"RightHand", "Hand_R"}, {"LeftUpLeg", "UpperLeg_L"}, {"LeftLeg", "LowerLeg_L"},
+      {"LeftFoot", "Foot_L"}, {"RightUpLeg", "UpperLeg_R"}, {"RightLeg", "LowerLeg_R"}, {"RightFoot", "Foot_R"}};
+  for (const auto& [rig, names, name_space] :
+       {std::make_tuple("HumanIK / Mixamo", mixamo, std::string("mixamorig:")),
+        std::make_tuple("Unreal mannequin", unreal, std::string()),
+        std::make_tuple("Unity humanoid / Bandai", bandai, std::string())}) {
+    const BvhClip clip = parseBvh(renamedBvh(ours, names, name_space), "rig.bvh");
+    const BvhJointMap map = chooseBvhJointMap(clip, "rig.bvh");
+    EXPECT_EQ(map.name, rig);
+    EXPECT_EQ(map.root, clip.joints[0].name);
+    RetargetOptions options;
+    options.fit_body = true;
+    const SampledMotion motion = retargetBvh(clip, map, skeleton, "rig.bvh", options);
+    EXPECT_NEAR(motion.proportions.overall, 1.1, 0.011) << rig;
+    for (std::size_t f = 0; f < motion.angles.size(); ++f) {
+      const ForwardKinematics kinematics(skeleton, motion.proportions.shape);
+      SkeletonPose pose;
+      RigidTransform body;
+      body.rotation = motion.root[f].rotation;
+      kinematics.compute(body, motion.angles[f], pose);
+      for (std::size_t j = 0; j < kJointCount; ++j) {
+        const Eigen::Vector3d ours_at = pose.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation;
+        EXPECT_LT((ours_at - motion.reference_joint_positions[f][j]).norm(), 0.005) << rig << " joint " << j;
+      }
     }
   }
 }

@@ -1,6 +1,8 @@
 #include "dressed_human/core/motion/mocap_joint_map.h"
 #include "dressed_human/core/io/text_file.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +33,34 @@ BvhJointMap asfMap() {
           "root",
           {"lowerback", "upperback", "upperneck", "head", "lhumerus", "lradius", "lwrist", "rhumerus", "rradius",
            "rwrist", "lfemur", "ltibia", "lfoot", "rfemur", "rtibia", "rfoot"}};
+}
+
+// Rigs named as animation tools name them, each name with the alternatives its variants use: the
+// HumanIK / Mixamo / LAFAN1 convention (Hips, Spine..Spine2, LeftUpLeg; Mixamo's joints carry a
+// "mixamorig:" namespace, which resolution strips), Unity's humanoid and the Bandai-Namco capture
+// set (UpperLeg_L), and Unreal's mannequin (pelvis, spine_01, thigh_l). The spine by place, as for
+// CMU: the waist at the lowest spine joint, the torso mid-back, the neck at its base.
+BvhJointMap humanIkMap() {
+  return {"HumanIK / Mixamo",
+          "Hips",
+          {"Spine", "Spine2|Spine1|Chest", "Neck|Neck1", "Head", "LeftArm", "LeftForeArm", "LeftHand", "RightArm",
+           "RightForeArm", "RightHand", "LeftUpLeg", "LeftLeg", "LeftFoot", "RightUpLeg", "RightLeg", "RightFoot"}};
+}
+
+BvhJointMap unityHumanoidMap() {
+  return {"Unity humanoid / Bandai",
+          "Hips",
+          {"Spine", "Chest|UpperChest", "Neck", "Head", "LeftUpperArm|UpperArm_L", "LeftLowerArm|LowerArm_L", "LeftHand|Hand_L",
+           "RightUpperArm|UpperArm_R", "RightLowerArm|LowerArm_R", "RightHand|Hand_R", "LeftUpperLeg|UpperLeg_L",
+           "LeftLowerLeg|LowerLeg_L", "LeftFoot|Foot_L", "RightUpperLeg|UpperLeg_R", "RightLowerLeg|LowerLeg_R",
+           "RightFoot|Foot_R"}};
+}
+
+BvhJointMap unrealMap() {
+  return {"Unreal mannequin",
+          "pelvis",
+          {"spine_01", "spine_03|spine_02", "neck_01", "head", "upperarm_l", "lowerarm_l", "hand_l", "upperarm_r",
+           "lowerarm_r", "hand_r", "thigh_l", "calf_l", "foot_l", "thigh_r", "calf_r", "foot_r"}};
 }
 
 // OpenSim models as BVH clips (opensim_capture.h): joints named by the body they move. The
@@ -71,6 +101,42 @@ CoordinateJointMap openSimGaitMap() {
   return map;
 }
 
+// A clip joint named `name` (letter case aside), or `name` in the clip's namespace ("mixamorig:").
+int findNamed(const BvhClip& clip, const std::string& name) {
+  const auto same = [](const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+             return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+  };
+  for (std::size_t j = 0; j < clip.joints.size(); ++j) {
+    const std::string& joint = clip.joints[j].name;
+    const std::size_t colon = joint.rfind(':');
+    if (same(joint, name) || (colon != std::string::npos && same(joint.substr(colon + 1), name))) return static_cast<int>(j);
+  }
+  return -1;
+}
+
+// The clip's own name for one of `alternatives` ("Spine2|Spine1"), the first found; the
+// alternatives themselves when none is.
+std::string resolveName(const BvhClip& clip, const std::string& alternatives) {
+  if (alternatives.empty() || clip.findJoint(alternatives) >= 0) return alternatives;
+  std::size_t start = 0;
+  while (start <= alternatives.size()) {
+    const std::size_t bar = std::min(alternatives.find('|', start), alternatives.size());
+    const int joint = findNamed(clip, alternatives.substr(start, bar - start));
+    if (joint >= 0) return clip.joints[static_cast<std::size_t>(joint)].name;
+    start = bar + 1;
+  }
+  return alternatives;
+}
+
+BvhJointMap resolveMap(const BvhJointMap& map, const BvhClip& clip) {
+  BvhJointMap resolved = map;
+  resolved.root = resolveName(clip, map.root);
+  for (std::string& joint : resolved.joints) joint = resolveName(clip, joint);
+  return resolved;
+}
+
 std::vector<std::string> missingJoints(const BvhJointMap& map, const BvhClip& clip) {
   std::vector<std::string> missing;
   if (clip.findJoint(map.root) < 0) missing.push_back(map.root);
@@ -89,7 +155,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<BvhJointMap>& builtinBvhJointMaps() {
-  static const std::vector<BvhJointMap> maps = {cmuBvhMap(), asfMap(), openSimFullBodyMap(), openSimGaitBodyMap()};
+  static const std::vector<BvhJointMap> maps = {cmuBvhMap(),         asfMap(),    humanIkMap(),        unityHumanoidMap(),
+                                                unrealMap(),         openSimFullBodyMap(), openSimGaitBodyMap()};
   return maps;
 }
 
@@ -114,7 +181,9 @@ void checkBvhJointMap(const BvhJointMap& map, const BvhClip& clip, const std::st
 BvhJointMap chooseBvhJointMap(const BvhClip& clip, const std::string& source_name) {
   const BvhJointMap* best = nullptr;
   std::size_t best_missing = 0;
-  for (const BvhJointMap& map : builtinBvhJointMaps()) {
+  std::vector<BvhJointMap> resolved;
+  for (const BvhJointMap& map : builtinBvhJointMaps()) resolved.push_back(resolveMap(map, clip));
+  for (const BvhJointMap& map : resolved) {
     const std::size_t missing = missingJoints(map, clip).size();
     if (!best || missing < best_missing) {
       best = &map;

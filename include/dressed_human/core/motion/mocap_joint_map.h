@@ -6,7 +6,9 @@
 //    joint (the one at the proximal end of the same anatomical segment);
 //  - joint coordinates (OpenSim .mot): each of our joints is a chain of single-axis rotations
 //    read from columns, about axes of the OpenSim segment frame (X forward, Y up, Z right).
-// Built-in maps: CMU BVH names (Hips, LeftUpLeg, ...), ASF-style names (root, lfemur, ...), OpenSim
+// Built-in maps: CMU BVH names (Hips, LeftUpLeg, ...), ASF-style names (root, lfemur, ...), the
+// HumanIK / Mixamo, Unity humanoid / Bandai and Unreal rigs (names with alternatives, letter case
+// and a "mixamorig:"-style namespace aside), OpenSim
 // models turned into BVH clips (opensim_capture.h: body names pelvis, femur_l, ...; with or
 // without arms) and the OpenSim gait models' coordinates (gait2354/gait2392 coordinate names, for
 // a motion without its model). Other sources: a YAML map file.
