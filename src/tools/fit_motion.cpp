@@ -266,11 +266,21 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
     }
     return dh::retargetCoordinates(table, map_file.coordinates, skeleton, args.input);
   }
-  // On its model, the motion is a skeleton capture: bodies as joints, in metres.
-  const dh::BvhClip clip = dh::openSimMotionClip(dh::loadOpenSimModelFile(args.osim), table, args.input);
+  // On its model, the motion is a skeleton capture: bodies as joints, in metres. Without the
+  // subject's own model, the generic one is sized to the motion.
+  dh::OpenSimModel model = dh::loadOpenSimModelFile(args.osim);
+  std::string model_note = "the subject's model " + args.osim;
+  if (!args.osim_given) {
+    const dh::OpenSimScale scale = dh::estimateOpenSimScale(model, table);
+    if (scale.estimated) model = model.scaled(scale.factor);
+    model_note = "the generic model " + args.osim + " " + scale.why + " (give the subject's model with --osim)";
+  }
+  const dh::BvhClip clip = dh::openSimMotionClip(model, table, args.input);
   const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input + " on " + args.osim) : map_file.bvh;
   options.units = "m";
-  return dh::retargetBvh(clip, map, skeleton, args.input, options);
+  dh::SampledMotion sampled = dh::retargetBvh(clip, map, skeleton, args.input, options);
+  sampled.units.reason = "an OpenSim model's; on " + model_note;
+  return sampled;
 }
 
 std::string commandLine(int argc, char** argv) {

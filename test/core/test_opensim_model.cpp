@@ -138,13 +138,10 @@ TEST(OpenSimCapture, TheClipCarriesTheModelsOwnKinematics) {
       const int column = table.findColumn(model.coordinates[c].name);
       if (column >= 0) q[c] = table.rows[row][static_cast<std::size_t>(column)] * (model.coordinates[c].rotational ? M_PI / 180.0 : 1.0);
     }
-    std::vector<Eigen::Isometry3d> world(model.bodies.size());
+    const std::vector<Eigen::Isometry3d> world = model.bodyTransforms(q);
     const BvhPose pose = bvhForwardKinematics(clip, row);
     for (std::size_t j = 0; j < model.joints.size(); ++j) {
-      const OpenSimJoint& joint = model.joints[j];
-      const Eigen::Isometry3d local = model.jointTransform(j, q);
-      const auto child = static_cast<std::size_t>(joint.child_body);
-      world[child] = joint.parent_body < 0 ? local : world[static_cast<std::size_t>(joint.parent_body)] * local;
+      const auto child = static_cast<std::size_t>(model.joints[j].child_body);
       EXPECT_LT((pose.position[j] - world[child].translation()).norm(), 1e-9) << clip.joints[j].name << " row " << row;
       EXPECT_LT((pose.rotation[j] - world[child].linear()).norm(), 1e-9) << clip.joints[j].name << " row " << row;
     }
@@ -237,6 +234,44 @@ TEST(OpenSimCapture, AModelScaledByAKnownFactorGivesThatBodyWithinOnePercent) {
     EXPECT_NEAR(sampled.proportions.overall / base.proportions.overall, scale, 0.01 * scale);
     EXPECT_LE(accuracy.against_capture.max_cm, 5.0 * scale) << scale;
   }
+}
+
+// A person of the generic model's shape at `scale`, standing on the floor (y = 0) on the right leg
+// while the left swings slowly: what an OpenSim motion of a scaled subject looks like.
+OpenSimTable swayingStance(double scale, bool with_height) {
+  std::ostringstream text;
+  text << "stance\nversion=1\nnRows=60\nnColumns=" << (with_height ? 4 : 3) << "\ninDegrees=yes\nendheader\n"
+       << "time\thip_flexion_l\tknee_angle_l" << (with_height ? "\tpelvis_ty" : "") << "\n";
+  for (int r = 0; r < 60; ++r) {
+    const double t = 0.02 * r;
+    text << t << "\t" << 20.0 * std::sin(2.0 * t) << "\t" << -30.0 * (1.0 - std::cos(2.0 * t));
+    if (with_height) text << "\t" << 0.95 * scale;
+    text << "\n";
+  }
+  return parseOpenSimMotion(text.str(), "stance.mot");
+}
+
+TEST(OpenSimCapture, AGenericModelIsSizedToAMotionOfAScaledSubject) {
+  const OpenSimModel model = loadOpenSimModelFile(kModelPath);
+  for (const double scale : {0.9, 1.1}) {
+    const OpenSimScale estimate = estimateOpenSimScale(model, swayingStance(scale, true));
+    EXPECT_TRUE(estimate.estimated) << estimate.why;
+    EXPECT_NEAR(estimate.factor, scale, 0.01 * scale) << estimate.why;
+    // The scaled model stands the motion's feet on the floor again.
+    const OpenSimModel sized = model.scaled(estimate.factor);
+    std::vector<double> q = sized.defaultCoordinates();
+    q[static_cast<std::size_t>(sized.findCoordinate("pelvis_ty"))] = 0.95 * scale;
+    double lowest = 1.0;
+    for (const Eigen::Isometry3d& body : sized.bodyTransforms(q)) lowest = std::min(lowest, body.translation().y());
+    EXPECT_NEAR(lowest, 0.016 * scale, 0.005);  // 1 % of the 0.93 m from pelvis to foot is 9 mm
+  }
+  const OpenSimScale without_height = estimateOpenSimScale(model, swayingStance(1.1, false));
+  EXPECT_FALSE(without_height.estimated);
+  EXPECT_EQ(without_height.factor, 1.0);
+  EXPECT_NE(without_height.why.find("no height of its root body"), std::string::npos) << without_height.why;
+  const OpenSimScale floating = estimateOpenSimScale(model, swayingStance(1.6, true));
+  EXPECT_FALSE(floating.estimated);
+  EXPECT_NE(floating.why.find("the floor is not at y = 0?"), std::string::npos) << floating.why;
 }
 
 void expectModelError(const std::string& xml, const std::string& message) {

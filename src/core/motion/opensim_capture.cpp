@@ -1,6 +1,9 @@
 #include "dressed_human/core/motion/opensim_capture.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "dressed_human/core/motion/mocap_retarget.h"
 
@@ -38,17 +41,79 @@ std::vector<double> rowCoordinates(const OpenSimModel& model, const OpenSimTable
   return values;
 }
 
+std::vector<int> tableColumns(const OpenSimModel& model, const OpenSimTable& table) {
+  std::vector<int> columns(model.coordinates.size());
+  for (std::size_t c = 0; c < columns.size(); ++c) columns[c] = table.findColumn(model.coordinates[c].name);
+  return columns;
+}
+
+// The lowest body origin's height.
+double lowestHeight(const std::vector<Eigen::Isometry3d>& bodies) {
+  double lowest = bodies.empty() ? 0.0 : bodies[0].translation().y();
+  for (const Eigen::Isometry3d& body : bodies) lowest = std::min(lowest, body.translation().y());
+  return lowest;
+}
+
+std::string number(double value) {
+  std::ostringstream text;
+  text << std::setprecision(4) << value;
+  return text.str();
+}
+
 }  // namespace
+
+OpenSimScale estimateOpenSimScale(const OpenSimModel& model, const OpenSimTable& table) {
+  OpenSimScale scale;
+  const std::vector<int> columns = tableColumns(model, table);
+  bool vertical = false;
+  for (const OpenSimTransformAxis& axis : model.joints.empty() ? std::array<OpenSimTransformAxis, 3>{} : model.joints[0].translations) {
+    vertical = vertical || (axis.coordinate >= 0 && columns[static_cast<std::size_t>(axis.coordinate)] >= 0 &&
+                            std::abs(axis.axis.y()) > 0.99);
+  }
+  if (!vertical) {
+    scale.why = "the motion has no height of its root body; the model is used as it is";
+    return scale;
+  }
+  const double standing = lowestHeight(model.bodyTransforms(model.defaultCoordinates()));
+  if (!(standing >= 0.0 && standing <= 0.1)) {
+    scale.why = "the model's default pose does not stand on the floor (its lowest joint " + number(standing) +
+                " m above y = 0); the model is used as it is";
+    return scale;
+  }
+  const std::size_t rows = table.rows.size();
+  std::vector<double> pelvis(rows), drop(rows);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::vector<Eigen::Isometry3d> bodies = model.bodyTransforms(rowCoordinates(model, table, columns, r));
+    pelvis[r] = bodies[static_cast<std::size_t>(model.joints[0].child_body)].translation().y();
+    drop[r] = lowestHeight(bodies) - pelvis[r];
+  }
+  std::vector<double> factors;
+  for (std::size_t r = 1; r + 1 < rows; ++r) {
+    const double speed = (pelvis[r + 1] + drop[r + 1] - pelvis[r - 1] - drop[r - 1]) / (table.times[r + 1] - table.times[r - 1]);
+    if (std::abs(speed) < 0.05 && standing - drop[r] > 0.0) factors.push_back(pelvis[r] / (standing - drop[r]));
+  }
+  if (factors.size() < 10) {
+    scale.why = "fewer than ten frames with a resting foot; the model is used as it is";
+    return scale;
+  }
+  std::nth_element(factors.begin(), factors.begin() + static_cast<std::ptrdiff_t>(factors.size() / 2), factors.end());
+  const double factor = factors[factors.size() / 2];
+  if (!(factor >= 0.7 && factor <= 1.4)) {
+    scale.why = "the pelvis height gives a scale of " + number(factor) +
+                ", no person's: the floor is not at y = 0? The model is used as it is";
+    return scale;
+  }
+  scale.factor = factor;
+  scale.estimated = true;
+  scale.why = "scaled by " + number(factor) + " so that the resting feet stand on the floor (y = 0) as in the model's default pose";
+  return scale;
+}
 
 BvhClip openSimMotionClip(const OpenSimModel& model, const OpenSimTable& table, const std::string& source_name) {
   const std::string where = source_name + " on the model " + (model.name.empty() ? "(unnamed)" : model.name);
   checkEvenTimes(table, source_name);
-  std::vector<int> columns(model.coordinates.size());
-  bool any = false;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    columns[c] = table.findColumn(model.coordinates[c].name);
-    any = any || columns[c] >= 0;
-  }
+  const std::vector<int> columns = tableColumns(model, table);
+  const bool any = std::any_of(columns.begin(), columns.end(), [](int column) { return column >= 0; });
   if (!any) throw OpenSimModelError(where + ": the motion has none of the model's coordinates (a motion of another model?)");
 
   BvhClip clip;

@@ -387,6 +387,35 @@ Eigen::Isometry3d OpenSimModel::jointTransform(std::size_t joint, const std::vec
   return j.parent_offset * moved * j.child_offset.inverse();
 }
 
+std::vector<Eigen::Isometry3d> OpenSimModel::bodyTransforms(const std::vector<double>& coordinate_values) const {
+  std::vector<Eigen::Isometry3d> world(bodies.size(), Eigen::Isometry3d::Identity());
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const OpenSimJoint& joint = joints[j];
+    const Eigen::Isometry3d local = jointTransform(j, coordinate_values);
+    world[static_cast<std::size_t>(joint.child_body)] =
+        joint.parent_body < 0 ? local : world[static_cast<std::size_t>(joint.parent_body)] * local;
+  }
+  return world;
+}
+
+std::vector<double> OpenSimModel::defaultCoordinates() const {
+  std::vector<double> values;
+  for (const OpenSimCoordinate& c : coordinates) values.push_back(c.default_value);
+  return values;
+}
+
+OpenSimModel OpenSimModel::scaled(double factor) const {
+  OpenSimModel model = *this;
+  for (OpenSimJoint& joint : model.joints) {
+    joint.parent_offset.translation() *= factor;
+    joint.child_offset.translation() *= factor;
+    for (OpenSimTransformAxis& axis : joint.translations) {
+      if (axis.coordinate < 0 || coordinates[static_cast<std::size_t>(axis.coordinate)].rotational) axis.function.scale *= factor;
+    }
+  }
+  return model;
+}
+
 OpenSimModel parseOpenSimModel(const std::string& xml, const std::string& source_name) {
   return ModelReader(xml, source_name).read();
 }

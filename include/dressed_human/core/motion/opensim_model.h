@@ -70,6 +70,13 @@ struct OpenSimModel {
   int findCoordinate(const std::string& coordinate) const;  // -1 when absent
   // The child body's frame in the parent body's frame, for coordinate values in model units.
   Eigen::Isometry3d jointTransform(std::size_t joint, const std::vector<double>& coordinate_values) const;
+  // Every body in the ground's frame.
+  std::vector<Eigen::Isometry3d> bodyTransforms(const std::vector<double>& coordinate_values) const;
+  std::vector<double> defaultCoordinates() const;
+  // The model with every length times `factor` (offset frames, and translations that follow a
+  // rotation or are constant, like the knee's), as OpenSim's scale tool does for a uniform
+  // factor; translational coordinates (the pelvis's place) are positions, not lengths, and stay.
+  OpenSimModel scaled(double factor) const;
 };
 
 // Throws OpenSimModelError "source: what" naming the joint, frame or function: not XML, no
