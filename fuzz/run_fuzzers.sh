@@ -1,8 +1,8 @@
 #!/bin/sh
-# Builds the libFuzzer targets of the file parsers (motion capture BVH and .mot, motion YAML, body
-# YAML) with clang (outside the CMake build) and runs each for the given number of seconds.
+# Builds the libFuzzer targets of the file parsers (motion capture BVH and .mot, OpenSim models,
+# motion YAML, body YAML) with clang (outside the CMake build) and runs each for the given number of seconds.
 #   fuzz/run_fuzzers.sh [seconds=60] [build-dir=build_fuzz]
-# Seeds: data/motion/*.bvh|mot, config/motions/*.yaml, config/bodies/*.yaml and fuzz/seeds/;
+# Seeds: data/motion/*.bvh|mot, fuzz/seeds/*.osim (a leg of gait2392), config/motions/*.yaml, config/bodies/*.yaml and fuzz/seeds/;
 # inputs are capped at 16 KB (large ones only slow the mutations down; the shipped walk is 13 KB).
 # Crashes land in <build-dir>/<target>/crash-*; the script exits non-zero when a target fails.
 # Needs clang++ (apt-get install clang).
@@ -25,6 +25,7 @@ build_target() {  # name, core sources (below src/core), then libraries
 }
 build_target fuzz_bvh_parser motion/bvh_file.cpp io/text_file.cpp
 build_target fuzz_mot_parser motion/opensim_motion_file.cpp io/text_file.cpp
+build_target fuzz_opensim_model motion/opensim_model.cpp io/text_file.cpp -ltinyxml2
 # The skeleton layer (the body shape of a motion's body_shape and a body's shape: bone layout and
 # groups; a URDF's recorded shape through tinyxml2).
 skeleton="skeleton/body_description.cpp skeleton/skeleton.cpp skeleton/forward_kinematics.cpp skeleton/urdf_body_shape.cpp"
@@ -47,9 +48,10 @@ run_target() {  # name, seed files...
   return $status
 }
 failed=0
-for target in fuzz_bvh_parser fuzz_mot_parser fuzz_motion_yaml fuzz_body_yaml; do mkdir -p "$build/$target"; done
+for target in fuzz_bvh_parser fuzz_mot_parser fuzz_opensim_model fuzz_motion_yaml fuzz_body_yaml; do mkdir -p "$build/$target"; done
 run_target fuzz_bvh_parser "$here"/data/motion/*.bvh "$here"/fuzz/seeds/*.bvh || failed=1
 run_target fuzz_mot_parser "$here"/data/motion/*.mot "$here"/fuzz/seeds/*.mot || failed=1
+run_target fuzz_opensim_model "$here"/fuzz/seeds/*.osim || failed=1
 run_target fuzz_motion_yaml "$here"/config/motions/*.yaml || failed=1
 run_target fuzz_body_yaml "$here"/config/bodies/*.yaml || failed=1
 if [ -n "$(ls "$build"/fuzz_*/crash-* "$build"/fuzz_*/timeout-* 2>/dev/null)" ]; then failed=1; fi

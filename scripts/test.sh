@@ -33,7 +33,7 @@ echo "== core tests under ASan+UBSan"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build_sanitize --output-on-failure -j"$jobs" || status=1
 
-echo "== fuzzing the file parsers: BVH, .mot, motion YAML, body YAML (short run; fuzz/run_fuzzers.sh 600 for the long one)"
+echo "== fuzzing the file parsers: BVH, .mot, OpenSim model, motion YAML, body YAML (short run; fuzz/run_fuzzers.sh 600 for the long one)"
 fuzz/run_fuzzers.sh "${FUZZ_SECONDS:-20}" "$root/build_fuzz" || status=1
 
 # Last, so that ctest's summary closes the output.

@@ -158,6 +158,10 @@ BvhClip openSimMotionClip(const OpenSimModel& model, const OpenSimTable& table, 
         channel[k] = moved[k];
         channel[3 + k] = yxz[k] * kRadiansToDegrees;
       }
+      if (!moved.allFinite() || !yxz.allFinite() || moved.cwiseAbs().maxCoeff() > 1e4) {
+        throw OpenSimModelError(where + ": row " + std::to_string(r + 1) + " puts body '" + clip.joints[j].name +
+                                "' out of reach (a coordinate far beyond its range?)");
+      }
     }
   }
   return clip;

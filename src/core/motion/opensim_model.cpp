@@ -14,6 +14,11 @@ namespace {
 
 using tinyxml2::XMLElement;
 
+// Lengths (m), angles (rad) and function values beyond this are no person's model: refused, so
+// that nothing downstream overflows.
+constexpr double kMaxNumber = 1000.0;
+constexpr const char* kMaxNumberText = "1000";
+
 std::vector<double> numbers(const XMLElement* element) {
   std::vector<double> values;
   if (!element || !element->GetText()) return values;
@@ -133,7 +138,9 @@ class ModelReader {
   Eigen::Vector3d vector3(const XMLElement* element, const std::string& what) const {
     const std::vector<double> v = numbers(element);
     if (v.size() != 3 || !std::isfinite(v[0])) fail(what + " must be three finite numbers, got '" + words(element) + "'");
-    return {v[0], v[1], v[2]};
+    const Eigen::Vector3d vector(v[0], v[1], v[2]);
+    if (vector.cwiseAbs().maxCoeff() > kMaxNumber) fail(what + " '" + words(element) + "' is beyond " + kMaxNumberText);
+    return vector;
   }
 
   // A body from a socket path ("/bodyset/pelvis", "../pelvis", "/ground"); -1 for the ground.
@@ -204,8 +211,9 @@ class ModelReader {
     }
     const auto count = [&](const char* child, std::size_t least) {
       std::vector<double> v = numbers(element->FirstChildElement(child));
-      if (v.size() < least || !std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); })) {
-        fail(where + " " + kind + " <" + child + "> needs at least " + std::to_string(least) + " finite numbers, got '" +
+      if (v.size() < least || !std::all_of(v.begin(), v.end(), [](double x) { return std::abs(x) <= kMaxNumber; })) {
+        fail(where + " " + kind + " <" + child + "> needs at least " + std::to_string(least) + " finite numbers within " +
+             kMaxNumberText + ", got '" +
              words(element->FirstChildElement(child)) + "'");
       }
       return v;
@@ -228,6 +236,11 @@ class ModelReader {
         if (!(f.x[i] > f.x[i - 1])) fail(where + " SimmSpline x must increase, it does not at knot " + std::to_string(i + 1));
       }
       fitSimmSpline(f);
+      for (const std::vector<double>* c : {&f.b, &f.c, &f.d}) {
+        if (!std::all_of(c->begin(), c->end(), [](double x) { return std::abs(x) <= 1e12; })) {
+          fail(where + " SimmSpline knots are too close for a spline through them");
+        }
+      }
     } else {
       fail(where + " uses a " + kind + ", which is not read (LinearFunction, Constant, PolynomialFunction, SimmSpline, "
                    "MultiplierFunction are)");
