@@ -11,6 +11,7 @@
 #include "dressed_human/core/relief/skin_relief.h"
 #include "dressed_human/core/relief/wrinkle_map.h"
 
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include <iostream>
 #include <sstream>
 #include <initializer_list>
+#include <utility>
 #include <string>
 
 namespace {
@@ -66,6 +68,40 @@ void writeGaussianErrors(const std::string& directory) {
   }
 }
 
+// The smooth folds (the exact tile blurred, fourier_low_pass.h) against the exact ones, by
+// harmonics kept per cell: height RMS error over h1 and the time to make a map (the cost).
+void writeSmoothFoldErrors(const std::string& directory) {
+  std::ofstream table(directory + "/smooth_fold_error.csv");
+  table << "pattern,alpha,harmonics_per_cell,rms_error,h1,ms_per_map\n";
+  for (const auto& [chain, kind] : {std::make_pair("I", PatternKind::I), std::make_pair("YY", PatternKind::Y),
+                                    std::make_pair("X", PatternKind::X)}) {
+    for (const double alpha : {0.8, 0.6}) {
+      WrinkleMapSpec spec;
+      spec.width_pixels = 256;
+      spec.height_pixels = 256;
+      spec.chain = chain;
+      spec.cells_around = 4;
+      spec.rows = 2;
+      spec.alpha = {alpha};
+      const ReliefMap exact = makeWrinkleMap(spec);
+      spec.surface = WrinkleSurface::smoothFolds;
+      for (int harmonics = 2; harmonics <= 24; harmonics += 2) {
+        spec.smooth_harmonics_per_cell = harmonics;
+        const auto start = std::chrono::steady_clock::now();
+        const ReliefMap smooth = makeWrinkleMap(spec);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        double squares = 0.0;
+        for (std::size_t i = 0; i < exact.heights.size(); ++i) {
+          squares += (smooth.heights[i] - exact.heights[i]) * (smooth.heights[i] - exact.heights[i]);
+        }
+        table << patternName(kind) << ',' << alpha << ',' << harmonics << ','
+              << std::sqrt(squares / static_cast<double>(exact.heights.size())) << ','
+              << solveBuckling(kind, alpha, spec.cell).h1 << ',' << ms << '\n';
+      }
+    }
+  }
+}
+
 void writeWrinkles(const std::string& directory) {
   for (const char* chain : {"X", "YY", "I"}) {
     for (double alpha : {1.0, 0.95, 0.9, 0.8, 0.7, 0.6}) {
@@ -81,6 +117,8 @@ void writeWrinkles(const std::string& directory) {
       spec.surface = WrinkleSurface::gaussianApproximation;
       spec.gaussian_terms = 8;
       writeShaded(directory + "/wrinkle_" + chain + "_gauss8_alpha" + percent(alpha) + ".png", makeWrinkleMap(spec));
+      spec.surface = WrinkleSurface::smoothFolds;
+      writeShaded(directory + "/wrinkle_" + chain + "_smooth_alpha" + percent(alpha) + ".png", makeWrinkleMap(spec));
     }
   }
   // One map, compression growing row by row (behind a bending knee).
@@ -95,6 +133,8 @@ void writeWrinkles(const std::string& directory) {
   writeShaded(directory + "/wrinkle_growth_exact.png", makeWrinkleMap(growth));
   growth.surface = WrinkleSurface::gaussianApproximation;
   writeShaded(directory + "/wrinkle_growth_gauss8.png", makeWrinkleMap(growth));
+  growth.surface = WrinkleSurface::smoothFolds;
+  writeShaded(directory + "/wrinkle_growth_smooth.png", makeWrinkleMap(growth));
 }
 
 SkinReliefParameters baseSkin() {
@@ -192,6 +232,7 @@ int main(int argc, char** argv) {
   try {
     writeBucklingTables(directory);
     writeGaussianErrors(directory);
+    writeSmoothFoldErrors(directory);
     writeWrinkles(directory);
     writeSkinSweeps(directory);
   } catch (const std::exception& error) {

@@ -89,6 +89,9 @@ WrinkleMapSpec garmentWrinkleMapSpec() {
   spec.cells_around = 2;
   spec.rows = 2;
   spec.alpha = {0.8};
+  // Soft folds, not the exact tile's creases (issue 21): the tile blurred through its own Fourier
+  // series, within 5 % of the exact folds' height (wrinkle_map.h).
+  spec.surface = WrinkleSurface::smoothFolds;
   return spec;
 }
 

@@ -1,6 +1,7 @@
 #include "dressed_human/core/relief/wrinkle_map.h"
 
 #include "dressed_human/core/relief/buckling_chain.h"
+#include "dressed_human/core/relief/fourier_low_pass.h"
 #include "dressed_human/core/relief/gaussian_fold_fit.h"
 
 #include <cmath>
@@ -88,6 +89,7 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
     throw std::invalid_argument(message.str());
   }
   if (spec.surface == WrinkleSurface::gaussianApproximation) requirePositive(spec.gaussian_terms, "gaussian_terms");
+  if (spec.surface == WrinkleSurface::smoothFolds) requirePositive(spec.smooth_harmonics_per_cell, "smooth_harmonics_per_cell");
 
   std::string around;
   for (int column = 0; column < spec.cells_around; ++column) around += spec.chain[static_cast<std::size_t>(column) % spec.chain.size()];
@@ -139,7 +141,20 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
       map.slope_v[at] = static_cast<float>(spec.amplitude * sample.slope.y());
     }
   }
-  return map;
+  if (spec.surface != WrinkleSurface::smoothFolds) return map;
+  // A pixel row of a cell row compressed to alpha spans 2 alpha L_y / (pixels per cell row).
+  std::vector<double> metres_per_pixel_v(map.heights.size());
+  for (int pixel_row = 0; pixel_row < spec.height_pixels; ++pixel_row) {
+    const int row = std::min(static_cast<int>((pixel_row + 0.5) * cells_per_pixel_v), spec.rows - 1);
+    for (int pixel_column = 0; pixel_column < spec.width_pixels; ++pixel_column) {
+      const int column = std::min(static_cast<int>((pixel_column + 0.5) * cells_per_pixel_u), spec.cells_around - 1);
+      metres_per_pixel_v[map.index(pixel_column, pixel_row)] =
+          2.0 * ly * cell_surfaces[static_cast<std::size_t>(row * spec.cells_around + column)]->pattern->solution().alpha *
+          cells_per_pixel_v;
+    }
+  }
+  return lowPassRelief(map, spec.smooth_harmonics_per_cell * spec.cells_around, spec.smooth_harmonics_per_cell * spec.rows,
+                       2.0 * lx * cells_per_pixel_u, metres_per_pixel_v);
 }
 
 }  // namespace dressed_human
