@@ -11,6 +11,7 @@
 #include "dressed_human/core/relief/skin_relief.h"
 #include "dressed_human/core/relief/wrinkle_map.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -87,9 +88,13 @@ void writeSmoothFoldErrors(const std::string& directory) {
       spec.surface = WrinkleSurface::smoothFolds;
       for (int harmonics = 2; harmonics <= 24; harmonics += 2) {
         spec.smooth_harmonics_per_cell = harmonics;
-        const auto start = std::chrono::steady_clock::now();
-        const ReliefMap smooth = makeWrinkleMap(spec);
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        ReliefMap smooth;
+        double ms = 1e300;  // the fastest of three: other processes only add time
+        for (int round = 0; round < 3; ++round) {
+          const auto start = std::chrono::steady_clock::now();
+          smooth = makeWrinkleMap(spec);
+          ms = std::min(ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
         double squares = 0.0;
         for (std::size_t i = 0; i < exact.heights.size(); ++i) {
           squares += (smooth.heights[i] - exact.heights[i]) * (smooth.heights[i] - exact.heights[i]);
