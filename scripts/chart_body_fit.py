@@ -32,7 +32,7 @@ def sweep(tool, capture, name, extra):
         report = subprocess.run([tool, capture, "--urdf", os.path.join(ROOT, "urdf", "human.urdf"), "-o",
                                  os.path.join(directory, "walk.yaml"), "--sweep-csv", path, "--sweep-max", "10",
                                  "--timing-calls", "1000", "-v"] + extra,
-                                capture_output=True, text=True, check=True).stderr
+                                capture_output=True, text=True, check=True, cwd=ROOT).stderr
     with open(path) as f:
         rows = list(csv.DictReader(f))
     if not rows or rows[0]["body_fitted"] != "1":
@@ -64,11 +64,11 @@ def main():
     if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
         print(__doc__)
         return 0 if len(sys.argv) >= 2 else 2
-    tool = sys.argv[1]
+    tool = os.path.abspath(sys.argv[1])
     capture = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "data", "motion", "cmu_02_01_walk.bvh")
     rows, report, sweep_path = sweep(tool, capture, "cmu_02_01", [])
     gait = os.path.join(ROOT, "data", "motion", "tutorial_normal_gait_cycle.mot")
-    model = os.path.join(ROOT, "config", "opensim", "gait2392_joints.osim")
+    model = os.path.join("config", "opensim", "gait2392_joints.osim")  # relative: the report names it
     osim_rows, osim_report, osim_path = sweep(tool, gait, "opensim_gait2392", ["--osim", model, "--period", "1"])
     column = lambda name: [float(r[name]) for r in rows]
     osim_column = lambda name: [float(r[name]) for r in osim_rows]

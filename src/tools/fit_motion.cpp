@@ -269,7 +269,7 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
   // On its model, the motion is a skeleton capture: bodies as joints, in metres. Without the
   // subject's own model, the generic one is sized to the motion.
   dh::OpenSimModel model = dh::loadOpenSimModelFile(args.osim);
-  std::string model_note = "the subject's model " + args.osim;
+  std::string model_note = "the model " + args.osim;
   if (!args.osim_given) {
     const dh::OpenSimScale scale = dh::estimateOpenSimScale(model, table);
     if (scale.estimated) model = model.scaled(scale.factor);

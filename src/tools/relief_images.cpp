@@ -69,6 +69,18 @@ void writeGaussianErrors(const std::string& directory) {
   }
 }
 
+// The tile the wrinkle figures and the smooth-fold table share: 4 cells around, 2 rows, 256^2.
+WrinkleMapSpec foldTile(const char* chain, double alpha) {
+  WrinkleMapSpec spec;
+  spec.width_pixels = 256;
+  spec.height_pixels = 256;
+  spec.chain = chain;
+  spec.cells_around = 4;
+  spec.rows = 2;
+  spec.alpha = {alpha};
+  return spec;
+}
+
 // The smooth folds (the exact tile blurred, fourier_low_pass.h) against the exact ones, by
 // harmonics kept per cell: height RMS error over h1 and the time to make a map (the cost).
 void writeSmoothFoldErrors(const std::string& directory) {
@@ -77,13 +89,7 @@ void writeSmoothFoldErrors(const std::string& directory) {
   for (const auto& [chain, kind] : {std::make_pair("I", PatternKind::I), std::make_pair("YY", PatternKind::Y),
                                     std::make_pair("X", PatternKind::X)}) {
     for (const double alpha : {0.8, 0.6}) {
-      WrinkleMapSpec spec;
-      spec.width_pixels = 256;
-      spec.height_pixels = 256;
-      spec.chain = chain;
-      spec.cells_around = 4;
-      spec.rows = 2;
-      spec.alpha = {alpha};
+      WrinkleMapSpec spec = foldTile(chain, alpha);
       const ReliefMap exact = makeWrinkleMap(spec);
       spec.surface = WrinkleSurface::smoothFolds;
       for (int harmonics = 2; harmonics <= 24; harmonics += 2) {
@@ -95,12 +101,7 @@ void writeSmoothFoldErrors(const std::string& directory) {
           smooth = makeWrinkleMap(spec);
           ms = std::min(ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
-        double squares = 0.0;
-        for (std::size_t i = 0; i < exact.heights.size(); ++i) {
-          squares += (smooth.heights[i] - exact.heights[i]) * (smooth.heights[i] - exact.heights[i]);
-        }
-        table << patternName(kind) << ',' << alpha << ',' << harmonics << ','
-              << std::sqrt(squares / static_cast<double>(exact.heights.size())) << ','
+        table << patternName(kind) << ',' << alpha << ',' << harmonics << ',' << rmsHeightDifference(smooth, exact) << ','
               << solveBuckling(kind, alpha, spec.cell).h1 << ',' << ms << '\n';
       }
     }
@@ -110,13 +111,7 @@ void writeSmoothFoldErrors(const std::string& directory) {
 void writeWrinkles(const std::string& directory) {
   for (const char* chain : {"X", "YY", "I"}) {
     for (double alpha : {1.0, 0.95, 0.9, 0.8, 0.7, 0.6}) {
-      WrinkleMapSpec spec;
-      spec.width_pixels = 256;
-      spec.height_pixels = 256;
-      spec.chain = chain;
-      spec.cells_around = 4;
-      spec.rows = 2;
-      spec.alpha = {alpha};
+      WrinkleMapSpec spec = foldTile(chain, alpha);
       spec.amplitude = 0.35;  // bump strength: the exact folds are 45 degrees steep at alpha 0.7
       writeShaded(directory + "/wrinkle_" + chain + "_alpha" + percent(alpha) + ".png", makeWrinkleMap(spec));
       spec.surface = WrinkleSurface::gaussianApproximation;

@@ -311,6 +311,15 @@ TEST(OpenSimModel, BadModelsAreRefusedByName) {
                    "translation must be three finite numbers, got '0 nan 0'");
   expectModelError(replaced("<Body name=\"torso\" />", "<Body name=\"torso\" /><Body name=\"head\" />"),
                    "body 'head' is joined to the ground by no chain of joints");
+  expectModelError(replaced("<translation>0 -0.42999999999999999 0</translation>", "<translation>0 -4300 0</translation>"),
+                   "translation '0 -4300 0' is beyond 1000");
+  expectModelError(replaced("<y> -0.0032 0.00179", "<y> -1000 1000", replaced("<x> -2.0944 -1.74533", "<x> -2.0944 -2.094399999")),
+                   "joint 'knee_r' (CustomJoint) translation1 SimmSpline knots are too close for a spline through them");
+  expectModelError(replaced("<socket_child_frame>talus_l_offset</socket_child_frame>",
+                            "<socket_child_frame>/bodyset/talus_r</socket_child_frame>"),
+                   "body 'talus_r' is the child of two joints ('ankle_r', 'ankle_l')");
+  expectModelError(replaced("<coordinates>knee_angle_r</coordinates>", "<coordinates>knee_angle_r hip_flexion_r</coordinates>"),
+                   "depends on several coordinates (knee_angle_r hip_flexion_r), which is not read");
   EXPECT_THROW(loadOpenSimModelFile(kSource + "/no/such/model.osim"), OpenSimModelError);
 }
 
@@ -327,6 +336,8 @@ TEST(OpenSimCapture, MotionsThatDoNotFitTheModelAreRefusedByName) {
   };
   refused(header + "time\tshoulder_flex\n0\t1\n0.1\t2\n0.2\t3\n", "has none of the model's coordinates");
   refused(header + "time\tknee_angle_r\n0\t1\n0.1\t2\n0.35\t3\n", "rows 1 and 2 are not one even time step apart");
+  // A knee bent 1e9 degrees puts the tibia, through its translation splines, 100 km away.
+  refused(header + "time\tknee_angle_r\n0\t1\n0.1\t1e9\n0.2\t3\n", "row 2 puts body 'tibia_r' out of reach");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "dressed_human/core/relief/buckling_solution.h"
+#include "dressed_human/core/relief/fourier_low_pass.h"
 
 namespace dressed_human {
 namespace {
@@ -129,13 +130,8 @@ TEST(SmoothFolds, AreWithinFivePercentOfTheExactFoldsHeight) {
       const ReliefMap exact = makeWrinkleMap(spec);
       spec.surface = WrinkleSurface::smoothFolds;
       const ReliefMap smooth = makeWrinkleMap(spec);
-      double squares = 0.0;
-      for (std::size_t i = 0; i < exact.heights.size(); ++i) {
-        const double d = smooth.heights[i] - exact.heights[i];
-        squares += d * d;
-      }
       const double h1 = solveBuckling(kind, alpha, spec.cell).h1;
-      const double rms = std::sqrt(squares / static_cast<double>(exact.heights.size()));
+      const double rms = rmsHeightDifference(smooth, exact);
       EXPECT_LE(rms, 0.05 * h1) << chain << " alpha " << alpha << ": RMS " << rms / h1 << " h1";
     }
   }
@@ -176,6 +172,18 @@ TEST(SmoothFolds, UncompressedClothStaysFlat) {
   EXPECT_LT(std::max(std::abs(map.minimumHeight()), std::abs(map.maximumHeight())), 1e-6);
   spec.smooth_harmonics_per_cell = 0;
   EXPECT_THROW(makeWrinkleMap(spec), std::invalid_argument);
+  EXPECT_EQ(rmsHeightDifference(map, map), 0.0);
+  EXPECT_THROW(rmsHeightDifference(map, ReliefMap(2, 2)), std::invalid_argument);
+  // Harmonics that would alias, and physical pixel sizes that are missing or not positive.
+  const std::vector<double> pixel_v(map.heights.size(), 0.01);
+  EXPECT_NO_THROW(lowPassRelief(map, 4, 4, 0.01, pixel_v));
+  EXPECT_THROW(lowPassRelief(map, map.width / 2, 4, 0.01, pixel_v), std::invalid_argument);
+  EXPECT_THROW(lowPassRelief(map, 4, -1, 0.01, pixel_v), std::invalid_argument);
+  EXPECT_THROW(lowPassRelief(map, 4, 4, 0.0, pixel_v), std::invalid_argument);
+  EXPECT_THROW(lowPassRelief(map, 4, 4, 0.01, std::vector<double>(3, 0.01)), std::invalid_argument);
+  std::vector<double> negative = pixel_v;
+  negative[7] = -0.01;
+  EXPECT_THROW(lowPassRelief(map, 4, 4, 0.01, negative), std::invalid_argument);
 }
 
 }  // namespace

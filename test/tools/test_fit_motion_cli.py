@@ -91,6 +91,20 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
             self.assertIn("Joint positions vs the capture's own FK (metres", result.stderr)
             with open(fitted) as f:
                 self.assertIn("\nbody_shape:", f.read())
+            # A map of joint coordinates reads angles without a model: it cannot give a fitted body.
+            coordinates = os.path.join(directory, "coordinates.yaml")
+            joints = ["waist", "torso", "neck", "head", "l_shoulder", "l_elbow", "l_wrist", "r_shoulder", "r_elbow",
+                      "r_wrist", "l_hip", "l_knee", "l_ankle", "r_hip", "r_knee", "r_ankle"]
+            with open(coordinates, "w") as f:
+                f.write("kind: coordinates\nroot: {translation: [pelvis_tx, pelvis_ty, pelvis_tz], "
+                        "rotation: [[pelvis_tilt, 0, 0, 1]]}\njoints: {%s}\n" % ", ".join(
+                            j + (": [[knee_angle_l, 0, 0, 1]]" if j == "l_knee" else ": []") for j in joints))
+            for body, code in ((["--body", "fitted"], 1), ([], 0)):
+                result = subprocess.run([FIT_MOTION, gait, "--urdf", URDF, "--map", coordinates, "--period", "1", "-q",
+                                         "-o", fitted, *body], capture_output=True, text=True, timeout=120)
+                self.assertEqual(result.returncode, code, result.stderr)
+                if code:
+                    self.assertIn(coordinates + ": a map of kind 'coordinates' reads joint angles only", result.stderr)
             # A model that is not there, or not a model, is named.
             for bad, message in ((os.path.join(directory, "none.osim"), "cannot open the OpenSim model file"),
                                  (gait, "not valid XML")):

@@ -202,13 +202,19 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
   if (!feet[0].empty() && !feet[1].empty()) levelFloor(motion);
 }
 
+struct ToeTip {
+  BvhPoint point;
+  double rest_length = 0.0;  // from the ankle, in the rest pose
+};
+
 // Where a rigid foot points: the capture's toes bend (at push-off the ankle-to-toe-tip line is
 // shorter than at rest), ours cannot; aimed along that line our toe tip would dig below the
 // capture's. So the foot keeps the line's heading and tilts so that its tip, at the rest length,
 // is as high as the capture's toe tip: where the foot meets the ground is what shows.
-Eigen::Vector3d footAim(const BvhClip& clip, const BvhPose& pose, const BvhPoint& toe_tip, std::size_t ankle, double rest,
+Eigen::Vector3d footAim(const BvhClip& clip, const BvhPose& pose, const ToeTip& toe_tip, std::size_t ankle,
                         const Eigen::Matrix3d& to_ours) {
-  const Eigen::Vector3d line = to_ours * (bvhPointPosition(clip, pose, toe_tip) - pose.position[ankle]);
+  const Eigen::Vector3d line = to_ours * (bvhPointPosition(clip, pose, toe_tip.point) - pose.position[ankle]);
+  const double rest = toe_tip.rest_length;
   const Eigen::Vector3d heading(line.x(), line.y(), 0.0);
   if (!(rest > 1e-9) || heading.norm() < 1e-9 || std::abs(line.z()) >= rest) return line;
   const double drop = line.z() / rest;
@@ -293,8 +299,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   // rest segment. World target of bone b = to_ours * G_source * to_ours^T * offset_b.
   std::array<Eigen::Matrix3d, kJointCount> rest_offset;
   std::array<std::size_t, kJointCount> source_joint{};
-  std::array<std::optional<BvhPoint>, kJointCount> toe_tip;  // a foot's farthest point, which its bone points at
-  std::array<double, kJointCount> toe_rest_length{};
+  std::array<std::optional<ToeTip>, kJointCount> toe_tip;  // a foot's farthest point, which its bone points at
   SampledMotion motion;
   motion.source = source_name;
   for (std::size_t j = 0; j < kJointCount; ++j) {
@@ -307,14 +312,16 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     // in a flat stance the sole's line, where the first descendant (the ball) tilts it into the ground.
     const bool foot = j == static_cast<std::size_t>(kLeftAnkle) || j == static_cast<std::size_t>(kRightAnkle);
     const bool own_tip = foot && (distal < 0 || map.joints[static_cast<std::size_t>(distal)].empty());
+    Eigen::Vector3d to_tip = Eigen::Vector3d::Zero();
     if (own_tip) {
-      toe_tip[j] = bvhFarthestPointBelow(clip, source_rest, source_joint[j]);
-      toe_rest_length[j] = bvhFarthestBelow(clip, source_rest, source_joint[j]).norm();
+      const BvhPoint tip = bvhFarthestPointBelow(clip, source_rest, source_joint[j]);
+      to_tip = bvhPointPosition(clip, source_rest, tip) - source_rest.position[source_joint[j]];
+      toe_tip[j] = ToeTip{tip, to_tip.norm()};
     }
     Eigen::Vector3d direction = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty()
                                     ? source_rest.position[sourceIndex(map.joints[static_cast<std::size_t>(distal)])] -
                                           source_rest.position[source_joint[j]]
-                                : own_tip ? bvhFarthestBelow(clip, source_rest, source_joint[j])
+                                : own_tip ? to_tip
                                           : firstDistinctDescendant(clip, source_rest, s);
     if (direction.norm() < 1e-9) direction = firstDistinctDescendant(clip, source_rest, s);
     const std::size_t bone = static_cast<std::size_t>(skeleton.joint(j).bone);
@@ -378,7 +385,10 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
       target_pointer[j] = nullptr;
       if (!motion.driven[j]) continue;
       target[j] = to_ours * pose.rotation[source_joint[j]] * to_ours.transpose() * rest_offset[j];
-      if (toe_tip[j]) target[j] = toMatrix(Eigen::Quaterniond::FromTwoVectors(target[j].col(2), footAim(clip, pose, *toe_tip[j], source_joint[j], toe_rest_length[j], to_ours))) * target[j];
+      if (toe_tip[j]) {
+        const Eigen::Vector3d aim = footAim(clip, pose, *toe_tip[j], source_joint[j], to_ours);
+        target[j] = toMatrix(Eigen::Quaterniond::FromTwoVectors(target[j].col(2), aim)) * target[j];
+      }
       target_pointer[j] = &target[j];
       motion.reference_joint_positions[f][j] =
           motion.reference_scale * (to_ours * (pose.position[source_joint[j]] - pose.position[root]));

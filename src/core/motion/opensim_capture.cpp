@@ -65,8 +65,9 @@ std::string number(double value) {
 OpenSimScale estimateOpenSimScale(const OpenSimModel& model, const OpenSimTable& table) {
   OpenSimScale scale;
   const std::vector<int> columns = tableColumns(model, table);
-  bool vertical = false;
-  for (const OpenSimTransformAxis& axis : model.joints.empty() ? std::array<OpenSimTransformAxis, 3>{} : model.joints[0].translations) {
+  bool vertical = false;  // the root body's height is a coordinate the motion has
+  for (std::size_t k = 0; !model.joints.empty() && k < 3; ++k) {
+    const OpenSimTransformAxis& axis = model.joints[0].translations[k];
     vertical = vertical || (axis.coordinate >= 0 && columns[static_cast<std::size_t>(axis.coordinate)] >= 0 &&
                             std::abs(axis.axis.y()) > 0.99);
   }

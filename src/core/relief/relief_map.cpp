@@ -33,6 +33,19 @@ float ReliefMap::maximumHeight() const {
   return heights.empty() ? 0.0f : *std::max_element(heights.begin(), heights.end());
 }
 
+double rmsHeightDifference(const ReliefMap& a, const ReliefMap& b) {
+  if (a.width != b.width || a.height != b.height) {
+    throw std::invalid_argument("rmsHeightDifference: maps of " + std::to_string(a.width) + " x " + std::to_string(a.height) +
+                                " and " + std::to_string(b.width) + " x " + std::to_string(b.height) + " pixels");
+  }
+  double squares = 0.0;
+  for (std::size_t i = 0; i < a.heights.size(); ++i) {
+    const double d = static_cast<double>(a.heights[i]) - static_cast<double>(b.heights[i]);
+    squares += d * d;
+  }
+  return a.heights.empty() ? 0.0 : std::sqrt(squares / static_cast<double>(a.heights.size()));
+}
+
 std::vector<ReliefMap> buildMipChain(ReliefMap base, int max_levels) {
   if (max_levels < 0) {
     std::ostringstream message;

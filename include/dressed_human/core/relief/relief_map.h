@@ -33,6 +33,10 @@ struct ReliefMap {
   float maximumHeight() const;
 };
 
+/// RMS of the height difference of two maps of one size (how far an approximation is from the
+/// surface it stands for). Throws std::invalid_argument for maps of different sizes.
+double rmsHeightDifference(const ReliefMap& a, const ReliefMap& b);
+
 /// Mip chain: level 0 is `base`, each next level averages 2x2 blocks of height and gradient (the
 /// gradient of the box-filtered height, so normals stay consistent with heights). Stops at 1x1,
 /// at an odd dimension, or after max_levels levels (0 = no limit).
