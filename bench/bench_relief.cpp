@@ -19,6 +19,7 @@
 #include "dressed_human/core/motion/motion_evaluator.h"
 #include "dressed_human/core/motion/motion_file.h"
 #include "dressed_human/core/surfaces/tessellation.h"
+#include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/relief/wrinkle_placement.h"
 
 #include <memory>

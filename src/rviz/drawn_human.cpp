@@ -48,10 +48,11 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
 }
 
 void DrawnHuman::resetReliefVisibility(double skin_cell_size) {
-  // Both reliefs are tiled once per patch: skin cells at the cell size's fraction of a tile,
-  // cloth folds about half a buckling cell apart (cells_around cells per tile).
+  // Skin cells at the cell size's fraction of a tile (one per patch); cloth folds about half a
+  // buckling cell apart (cells_around cells per tile, kFoldTilesPerPatch tiles per patch).
   const double skin = model_.reliefTileSize(ReliefKind::kSkin) * skin_cell_size;
-  const double cloth = model_.reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around);
+  const double cloth =
+      model_.reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around * kFoldTilesPerPatch);
   relief_visibility_[0] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
   relief_visibility_[1] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
   visual_.setReliefShown(ReliefKind::kSkin, true);
@@ -63,7 +64,7 @@ void DrawnHuman::setDisplacement(const ReliefMapJobs& jobs, bool displaced, floa
   // Until a map has been built its kind stays undisplaced; the display calls again when it comes.
   model_.setDisplacement(ReliefKind::kSkin, displaced ? jobs.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f, skin_strength);
   model_.setDisplacement(ReliefKind::kCloth, displaced ? jobs.map(ReliefKind::kCloth) : nullptr, 1.0f,
-                         ReliefMapJobs::clothHeightToTile(), wrinkle_strength);
+                         ReliefMapJobs::clothHeightToTile(), wrinkle_strength, jobs.foldTiles());
 }
 
 void DrawnHuman::clearStatuses(DisplayStatus& status) {

@@ -200,7 +200,7 @@ void DressedHumanDisplay::addHuman(const std::string& suffix) {
 void DressedHumanDisplay::configure(DrawnHuman& human, bool report) {
   human.visual().setVisible(isEnabled());
   for (const FinishedReliefMap& done : normal_maps_) {
-    if (done.map) human.visual().setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
+    human.visual().setNormalMap(done);
   }
   human.resetReliefVisibility(relief_properties_->skinParameters().cell_size);
   applyVertexEvaluation(human, report);
@@ -287,7 +287,7 @@ void DressedHumanDisplay::pollReliefMaps() {
     if (done.map) {
       normal_maps_[done.kind == ReliefKind::kSkin ? 0 : 1] = done;
       for (auto& human : humans_) {
-        human.second->visual().setNormalMap(done.kind, done.normal_rgb, done.map->width, done.map->height, 1.0f);
+        human.second->visual().setNormalMap(done);
       }
       status_.clear(status);
     } else {

@@ -31,7 +31,8 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.name = source.name;
       part.relief = source.relief;
       part.bezier_vertices = bezier_vertices;
-      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices);
+      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices,
+                                                       source.relief == ReliefKind::kCloth);
       part.material->setBackFacesCulled(source.closed);
       part.mesh = std::make_unique<SurfaceMeshObject>(scene_manager_, node_, part.material->name());
       part.mesh->setVisible(visible_);
@@ -49,7 +50,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.colour_set = true;
     }
     if (source.evaluated) {
-      part.mesh->update(*source.mesh, source.relief_weight, source.bounds);
+      part.mesh->update(*source.mesh, source.relief_weight, source.fold_axis, source.bounds);
       continue;
     }
     part.material->setPatches(*source.patches);
@@ -88,13 +89,14 @@ void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
   }
 }
 
-void HumanVisual::setNormalMap(ReliefKind kind, const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width,
-                               int height, float tiling) {
+void HumanVisual::setNormalMap(const FinishedReliefMap& finished) {
+  if (!finished.map) return;  // a failed build: the display reports its error
+  const ReliefKind kind = finished.kind;
   NormalMap& map = kind == ReliefKind::kSkin ? skin_map_ : cloth_map_;
-  map.rgb = rgb;
-  map.width = width;
-  map.height = height;
-  map.tiling = tiling;
+  map.bytes = finished.normal_bytes;
+  map.channels = finished.normal_channels;
+  map.width = finished.map->width;
+  map.height = finished.map->height;
   for (Part& part : parts_) {
     if (part.relief == kind) applyMaps(part);
   }
@@ -105,8 +107,7 @@ void HumanVisual::applyMaps(Part& part) const {
   part.material->setReliefStrength(part.relief == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_);
   part.material->setReliefShown(relief_shown_[part.relief == ReliefKind::kSkin ? 0 : 1]);
   if (map.width > 0) {
-    part.material->setNormalMap(map.rgb, map.width, map.height);
-    part.material->setReliefTiling(map.tiling);
+    part.material->setNormalMap(map.bytes, map.channels, map.width, map.height);
   }
 }
 

@@ -12,6 +12,7 @@
 #include <OgreSceneNode.h>
 
 #include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/model/relief_map_jobs.h"
 #include "relief_material.h"
 #include "skeleton_visual.h"
 #include "surface_mesh_object.h"
@@ -31,8 +32,9 @@ class HumanVisual {
   void setReliefStrength(ReliefKind kind, float strength);
   // false: parts of `kind` drawn with the plain material (ReliefMaterial::setReliefShown).
   void setReliefShown(ReliefKind kind, bool shown);
-  void setNormalMap(ReliefKind kind, const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width,
-                    int height, float tiling);
+  // A finished map's texture (3 channels for the skin, 4 for the garments' fold tiles), tiled once
+  // per patch, on every part of its kind.
+  void setNormalMap(const FinishedReliefMap& finished);
   // Bones as lines drawn over everything (SkeletonVisual); updated only while shown.
   void setSkeletonVisible(bool visible);
   void updateSkeleton(const ForwardKinematics& kinematics, const std::array<RigidTransform, kBoneCount>& bones);
@@ -48,9 +50,8 @@ class HumanVisual {
     std::unique_ptr<SurfaceMeshObject> mesh;
   };
   struct NormalMap {
-    std::shared_ptr<const std::vector<std::uint8_t>> rgb;
-    int width = 0, height = 0;
-    float tiling = 1.0f;
+    std::shared_ptr<const std::vector<std::uint8_t>> bytes;
+    int channels = 3, width = 0, height = 0;
   };
   void applyMaps(Part& part) const;
 

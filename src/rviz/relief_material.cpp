@@ -26,6 +26,7 @@ const char* const kBaseMaterial = "dressed_human/ReliefSurface";
 const char* const kBezierMaterial = "dressed_human/ReliefBezierSurface";
 const char* const kReliefFragment = "dressed_human/ReliefSurfaceFragment";
 const char* const kPlainFragment = "dressed_human/PlainSurfaceFragment";
+const char* const kFoldFragment = "dressed_human/FoldSurfaceFragment";
 
 std::string mediaDirectory() {
   const std::string package = ros::package::getPath("dressed_human");
@@ -59,7 +60,7 @@ std::string programProblem(const std::string& material_name) {
 
 // One Ogre texture per normal map of the process, alive while a material uses it.
 struct ReliefMaterial::SharedTexture {
-  std::shared_ptr<const std::vector<std::uint8_t>> rgb;  // the key; kept so its address stays unique
+  std::shared_ptr<const std::vector<std::uint8_t>> bytes;  // the key; kept so its address stays unique
   Ogre::TexturePtr texture;
   ~SharedTexture() {
     if (texture) Ogre::TextureManager::getSingleton().remove(texture);
@@ -139,14 +140,24 @@ std::string ReliefMaterial::softwareRenderer() {
   return "";
 }
 
-ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_vertices)
-    : name_(unique_name), bezier_vertices_(bezier_vertices) {
+ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_vertices, bool oriented_folds)
+    : name_(unique_name),
+      bezier_vertices_(bezier_vertices),
+      relief_fragment_(oriented_folds ? kFoldFragment : kReliefFragment),
+      normal_channels_(oriented_folds ? 4 : 3) {
   loadMediaOnce();
   material_ = Ogre::MaterialManager::getSingleton()
                   .getByName(bezier_vertices ? kBezierMaterial : kBaseMaterial, kGroup)
                   ->clone(name_);
-  static const auto flat = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 255});
-  setNormalMap(flat, 1, 1);  // flat until a relief map arrives
+  if (oriented_folds) {
+    material_->getTechnique(0)->getPass(0)->setFragmentProgram(relief_fragment_);
+    applyFragmentParameters();
+  }
+  // Flat until a relief map arrives: normals (0, 0, 1), or both fold tiles' x, y zero.
+  static const auto flat_rgb = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 255});
+  static const auto flat_folds =
+      std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 128, 128});
+  setNormalMap(oriented_folds ? flat_folds : flat_rgb, normal_channels_, 1, 1);
 }
 
 ReliefMaterial::~ReliefMaterial() {
@@ -163,7 +174,7 @@ void ReliefMaterial::applyFragmentParameters() {
 void ReliefMaterial::setReliefShown(bool shown) {
   if (shown == relief_shown_) return;
   relief_shown_ = shown;
-  material_->getTechnique(0)->getPass(0)->setFragmentProgram(shown ? kReliefFragment : kPlainFragment);
+  material_->getTechnique(0)->getPass(0)->setFragmentProgram(shown ? relief_fragment_ : kPlainFragment);
   applyFragmentParameters();
 }
 
@@ -187,10 +198,6 @@ void ReliefMaterial::setBackFacesCulled(bool culled) {
 void ReliefMaterial::setReliefStrength(float strength) {
   relief_strength_ = strength;
   applyFragmentParameters();
-}
-
-void ReliefMaterial::setReliefTiling(float repeats_per_patch) {
-  vertexParameters(material_)->setNamedConstant("reliefTiling", repeats_per_patch);
 }
 
 void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
@@ -235,25 +242,30 @@ void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constant
   parameters->setNamedConstant("wrinkleInverseSaturation", constants->inverse_saturation);
 }
 
-void ReliefMaterial::setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width, int height) {
-  if (!rgb || width <= 0 || height <= 0 ||
-      rgb->size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {
-    throw std::invalid_argument("normal map of " + std::to_string(rgb ? rgb->size() : 0) + " bytes does not match " +
-                                std::to_string(width) + " x " + std::to_string(height) + " RGB");
+void ReliefMaterial::setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& bytes, int channels, int width,
+                                  int height) {
+  if (channels != normal_channels_) {
+    throw std::invalid_argument("material " + name_ + " takes a normal map of " + std::to_string(normal_channels_) +
+                                " channels, given " + std::to_string(channels));
   }
-  std::shared_ptr<SharedTexture> shared = shared_textures[rgb.get()].lock();
+  if (!bytes || width <= 0 || height <= 0 ||
+      bytes->size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels)) {
+    throw std::invalid_argument("normal map of " + std::to_string(bytes ? bytes->size() : 0) + " bytes does not match " +
+                                std::to_string(width) + " x " + std::to_string(height) + " x " + std::to_string(channels));
+  }
+  std::shared_ptr<SharedTexture> shared = shared_textures[bytes.get()].lock();
   if (!shared) {
     shared = std::make_shared<SharedTexture>();
-    shared->rgb = rgb;
+    shared->bytes = bytes;
     Ogre::Image image;
-    image.loadDynamicImage(const_cast<Ogre::uchar*>(rgb->data()), static_cast<Ogre::uint32>(width),
-                           static_cast<Ogre::uint32>(height), Ogre::PF_BYTE_RGB);
+    image.loadDynamicImage(const_cast<Ogre::uchar*>(bytes->data()), static_cast<Ogre::uint32>(width),
+                           static_cast<Ogre::uint32>(height), channels == 4 ? Ogre::PF_BYTE_RGBA : Ogre::PF_BYTE_RGB);
     shared->texture = Ogre::TextureManager::getSingleton().loadImage(
         "dressed_human/normal_map_" + std::to_string(++texture_count), kGroup, image, Ogre::TEX_TYPE_2D, Ogre::MIP_DEFAULT);
     for (auto entry = shared_textures.begin(); entry != shared_textures.end();) {
-      entry = entry->second.expired() && entry->first != rgb.get() ? shared_textures.erase(entry) : std::next(entry);
+      entry = entry->second.expired() && entry->first != bytes.get() ? shared_textures.erase(entry) : std::next(entry);
     }
-    shared_textures[rgb.get()] = shared;
+    shared_textures[bytes.get()] = shared;
   }
   texture_ = shared;
   material_->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTexture(texture_->texture);

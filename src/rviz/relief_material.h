@@ -15,7 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "dressed_human/core/surfaces/bezier_patch.h"
-#include "dressed_human/core/relief/wrinkle_placement.h"
+#include "dressed_human/core/relief/vertex_compression.h"
 
 namespace dressed_human {
 
@@ -35,8 +35,9 @@ class ReliefMaterial {
   static std::string softwareRenderer();
 
   // bezier_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
-  // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout).
-  ReliefMaterial(const std::string& unique_name, bool bezier_vertices);
+  // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout). oriented_folds: a garment's, whose
+  // map holds the two fold tiles (encodeFoldTilesRgba, 4 channels) turned by the fold axis.
+  ReliefMaterial(const std::string& unique_name, bool bezier_vertices, bool oriented_folds);
   ~ReliefMaterial();
   ReliefMaterial(const ReliefMaterial&) = delete;
   ReliefMaterial& operator=(const ReliefMaterial&) = delete;
@@ -51,10 +52,11 @@ class ReliefMaterial {
   // one, for a relief too small to see (ReliefVisibility). Colour and strength carry over.
   void setReliefShown(bool shown);
   bool reliefShown() const { return relief_shown_; }
-  void setReliefTiling(float repeats_per_patch);
-  // RGB8 tangent-space normals (n * 0.5 + 0.5), width * height * 3 bytes, with mipmaps. One
-  // texture per map in the process: every material given the same bytes shares it.
-  void setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& rgb, int width, int height);
+  // 8-bit tangent-space normals (n * 0.5 + 0.5), width * height * channels bytes, with mipmaps:
+  // RGB (3 channels) for the skin, the fold tiles' RGBA (4) for garments; another count throws
+  // std::invalid_argument. One texture per map in the process: every material given the same
+  // bytes shares it.
+  void setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& bytes, int channels, int width, int height);
   // Bezier vertices only: the posed patches (at most kMaxPatches, else std::invalid_argument)
   // and, for garments, the wrinkle strength's constants (null: the relief shows everywhere).
   void setPatches(const std::vector<BezierPatch>& patches);
@@ -67,6 +69,8 @@ class ReliefMaterial {
   Ogre::MaterialPtr material_;
   std::shared_ptr<SharedTexture> texture_;
   bool bezier_vertices_;
+  const char* relief_fragment_;  // the fragment program showing the relief
+  int normal_channels_;
   WrinkleStrengthConstants wrinkle_strength_;  // as last set (zeros: none)
   bool wrinkle_strength_set_ = false;
   bool relief_shown_ = true;

@@ -53,10 +53,16 @@ void SurfaceMeshObject::setBounds(const Eigen::AlignedBox3f& bounds) {
 }
 
 void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight,
-                               const Eigen::AlignedBox3f& bounds) {
+                               const std::vector<Eigen::Vector2f>* fold_axis, const Eigen::AlignedBox3f& bounds) {
   layout_id_ = 0;
   const std::size_t vertices = mesh.positions.size();
   const std::size_t indices = mesh.indices.size();
+  if ((relief_weight != nullptr && relief_weight->size() != vertices) ||
+      (fold_axis != nullptr && fold_axis->size() != vertices)) {
+    throw std::invalid_argument("mesh with " + std::to_string(vertices) + " vertices has " +
+                                std::to_string(relief_weight ? relief_weight->size() : vertices) + " relief weights and " +
+                                std::to_string(fold_axis ? fold_axis->size() : vertices) + " fold axes");
+  }
   if (!beginFilling(vertices, indices)) return;
   for (std::size_t i = 0; i < vertices; ++i) {
     const Eigen::Vector3f& p = mesh.positions[i];
@@ -67,7 +73,8 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float
     object_->normal(n.x(), n.y(), n.z());
     object_->tangent(t.x(), t.y(), t.z());
     object_->textureCoord(uv.x(), uv.y());
-    object_->textureCoord(relief_weight != nullptr && i < relief_weight->size() ? (*relief_weight)[i] : 1.0f);
+    const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[i] : Eigen::Vector2f::Zero();
+    object_->textureCoord(relief_weight != nullptr ? (*relief_weight)[i] : 1.0f, axis.x(), axis.y());
   }
   for (std::size_t i = 0; i < indices; ++i) object_->index(mesh.indices[i]);
   object_->end();

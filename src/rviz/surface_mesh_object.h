@@ -25,9 +25,11 @@ class SurfaceMeshObject {
   SurfaceMeshObject(const SurfaceMeshObject&) = delete;
   SurfaceMeshObject& operator=(const SurfaceMeshObject&) = delete;
 
-  // `relief_weight`: per vertex, how much relief shows (second texture coordinate); null: 1.
+  // Second texture coordinate, per vertex: `relief_weight` (how much relief shows; null: 1) and
+  // `fold_axis` (which way garment folds run, SurfacePart::fold_axis; null: zeros).
   // `bounds`: encloses the posed surface (SurfacePart::bounds).
-  void update(const TriangleMesh& mesh, const std::vector<float>* relief_weight, const Eigen::AlignedBox3f& bounds);
+  void update(const TriangleMesh& mesh, const std::vector<float>* relief_weight,
+              const std::vector<Eigen::Vector2f>* fold_axis, const Eigen::AlignedBox3f& bounds);
   // Per vertex (u, v, patch) as the position and the garment's rest metric (VertexCompression::
   // inverseRestMetric; null: zeros) as texture coordinate 0. Nothing is sent while `layout_id`
   // stays the same; `bounds` (the posed surface's) is set every frame, since the (u, v, patch)

@@ -32,14 +32,28 @@ TEST(ReliefMapJobs, BuildsBothMapsOffThisThread) {
   ASSERT_EQ(done.size(), 2u);
   for (const FinishedReliefMap& map : done) {
     ASSERT_TRUE(map.map) << map.error;
-    ASSERT_TRUE(map.normal_rgb);
-    EXPECT_EQ(*map.normal_rgb, encodeNormalMapRgb(*map.map));
+    ASSERT_TRUE(map.normal_bytes);
+    if (map.kind == ReliefKind::kSkin) {
+      EXPECT_EQ(map.normal_channels, 3);
+      EXPECT_EQ(*map.normal_bytes, encodeNormalMapRgb(*map.map));
+      EXPECT_FALSE(map.fold_tiles);
+    } else {
+      ASSERT_TRUE(map.fold_tiles);
+      EXPECT_EQ(map.normal_channels, 4);
+      EXPECT_EQ(*map.normal_bytes, encodeFoldTilesRgba(*map.fold_tiles));
+      EXPECT_EQ(map.map.get(), &map.fold_tiles->strong);
+    }
     EXPECT_EQ(jobs.map(map.kind), map.map);
   }
   EXPECT_EQ(jobs.map(ReliefKind::kSkin)->width, ReliefMapJobs::kSkinMapSize);
   const ReliefMap wrinkles = makeWrinkleMap(garmentWrinkleMapSpec());
   ASSERT_EQ(jobs.map(ReliefKind::kCloth)->width, wrinkles.height);
   EXPECT_EQ(jobs.map(ReliefKind::kCloth)->heights, transposed(wrinkles).heights);
+  // Square pixels are square in space (oriented_folds.h turns the slopes with the lookups).
+  const WrinkleMapSpec spec = garmentWrinkleMapSpec();
+  EXPECT_NEAR(2.0 * spec.cell.half_width_x * spec.cells_around,
+              2.0 * spec.alpha[0] * spec.cell.half_length_y * spec.rows, 1e-12);
+  EXPECT_EQ(spec.width_pixels, spec.height_pixels);
   EXPECT_GT(ReliefMapJobs::clothHeightToTile(), 0.0f);
   EXPECT_TRUE(jobs.poll().empty());
 }
@@ -65,7 +79,7 @@ TEST(ReliefMapJobs, JobsAskingForTheSameMapShareOneBuild) {
     ASSERT_NE(maps[0].kind, maps[1].kind);
     for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
       EXPECT_EQ(ofKind(maps, kind).map, ofKind(done[0], kind).map);  // the same map, not a copy
-      EXPECT_EQ(ofKind(maps, kind).normal_rgb, ofKind(done[0], kind).normal_rgb);
+      EXPECT_EQ(ofKind(maps, kind).normal_bytes, ofKind(done[0], kind).normal_bytes);
     }
   }
   const std::shared_ptr<const ReliefMap> skin = ofKind(done[0], ReliefKind::kSkin).map;

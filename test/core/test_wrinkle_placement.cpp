@@ -1,5 +1,6 @@
 // Wrinkle placement (issue 6): compression measured on the posed garment against its rest pose,
 // alpha -> pattern and amplitude, the per-pose wrinkle map and the per-vertex API.
+#include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/relief/wrinkle_placement.h"
 
 #include "dressed_human/core/surfaces/tessellation.h"

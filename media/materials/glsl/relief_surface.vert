@@ -14,12 +14,12 @@ attribute vec4 vertex;              // Bezier: (u, v, patch index, 1)
 attribute vec3 normal;
 attribute vec3 tangent;
 attribute vec4 uv0;                 // Bezier: the rest metric (a, b, c, det) of G_rest^-1 (garments)
-attribute vec4 uv1;                 // x: how much of the relief shows here (wrinkles follow compression)
+attribute vec4 uv1;                 // x: how much of the relief shows here (wrinkles follow compression),
+                                    // yz: which way garment folds run (VertexStretch::fold_axis)
 
 uniform mat4 worldViewProj;
 uniform vec4 lightPositionObject;   // w = 0 for rviz's directional light
 uniform vec4 cameraPositionObject;
-uniform float reliefTiling;
 
 #ifdef EVALUATE_BEZIER
 // P_ij of patch p at 16 p + 4 j + i (i along u). 192 patches: relief_material.h kMaxPatches.
@@ -31,6 +31,7 @@ uniform float wrinkleInverseSaturation;
 
 varying vec2 reliefUv;
 varying float reliefWeight;
+varying vec2 foldAxis;
 varying vec3 lightTangent;
 varying vec3 viewTangent;
 varying vec3 lightObject;
@@ -59,9 +60,10 @@ void evaluatePatch(int base, vec2 uv, out vec3 position, out vec3 du, out vec3 d
   du = bv.x * row(base, dbu) + bv.y * row(base + 4, dbu) + bv.z * row(base + 8, dbu) + bv.w * row(base + 12, dbu);
 }
 
-// vertexStretchAt (wrinkle_placement.h) transcribed: alpha = sqrt of the smaller eigenvalue of
-// G_rest^-1 G_posed, strength from alpha by the threshold and saturation.
-float wrinkleStrength(vec4 inverse, vec3 du, vec3 dv) {
+// vertexStretchAt (wrinkle_placement.cpp) transcribed: alpha = sqrt of the smaller eigenvalue of
+// M = G_rest^-1 G_posed, strength from alpha by the threshold and saturation; the fold axis from
+// the eigenvector of the larger eigenvalue, as a double angle scaled by the anisotropy.
+float wrinkleStrength(vec4 inverse, vec3 du, vec3 dv, out vec2 axis) {
   float e = dot(du, du), f = dot(du, dv), g = dot(dv, dv);
   float m11 = inverse.x * e + inverse.y * f, m12 = inverse.x * f + inverse.y * g;
   float m21 = inverse.y * e + inverse.z * f, m22 = inverse.y * f + inverse.z * g;
@@ -71,6 +73,12 @@ float wrinkleStrength(vec4 inverse, vec3 du, vec3 dv) {
   float lambda_min = max(0.0, inverse.w * det_posed / max(lambda_max, 1e-30));
   bool defined = inverse.w > 0.0 && det_posed > 1e-6 * e * g;
   float alpha = defined ? min(1.0, sqrt(lambda_min)) : 1.0;
+  vec2 from_first = vec2(m12, lambda_max - m11), from_second = vec2(lambda_max - m22, m21);
+  vec2 d = dot(from_first, from_first) >= dot(from_second, from_second) ? from_first : from_second;
+  float length2 = dot(d, d), sum = lambda_max + lambda_min;
+  axis = defined && length2 > 0.0 && sum > 0.0
+             ? vec2(d.x * d.x - d.y * d.y, 2.0 * d.x * d.y) * ((lambda_max - lambda_min) / sum / length2)
+             : vec2(0.0);
   float effective = min(1.0, alpha * wrinkleInverseThreshold);
   return min(1.0, sqrt(max(0.0, 1.0 - effective * effective)) * wrinkleInverseSaturation);
 }
@@ -91,14 +99,17 @@ void main() {
   }
   n = normalize(n);
   vec3 tangent_u = du;
-  reliefUv = vertex.xy * reliefTiling;
-  reliefWeight = wrinkleWeighting > 0.5 ? wrinkleStrength(uv0, du, dv) : 1.0;
+  reliefUv = vertex.xy;  // one relief tile per patch
+  vec2 axis = vec2(0.0);
+  reliefWeight = wrinkleWeighting > 0.5 ? wrinkleStrength(uv0, du, dv, axis) : 1.0;
+  foldAxis = axis;
 #else
   vec3 position = vertex.xyz;
   vec3 n = normalize(normal);
   vec3 tangent_u = tangent;
-  reliefUv = uv0.xy * reliefTiling;
+  reliefUv = uv0.xy;
   reliefWeight = uv1.x;
+  foldAxis = uv1.yz;
 #endif
   gl_Position = worldViewProj * vec4(position, 1.0);
 

@@ -207,11 +207,14 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
       }
       if (evaluate) {
         dressed.wrinkle_weights.resize(part.mesh->vertexCount());
-        compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data());
+        dressed.fold_axes.resize(part.mesh->vertexCount());
+        compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data(), dressed.fold_axes.data());
         part.relief_weight = &dressed.wrinkle_weights;
+        part.fold_axis = &dressed.fold_axes;
         part.inverse_rest_metric = nullptr;
       } else {
         part.relief_weight = nullptr;
+        part.fold_axis = nullptr;
         part.inverse_rest_metric = &compression.inverseRestMetric();
       }
       part.wrinkle_constants = compression.strengthConstants();
@@ -219,6 +222,7 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     if (displacement.map) {
       ReliefDisplacement settings = displacement.settings;
       settings.weights = part.relief_weight;
+      settings.fold_axes = part.fold_axis;
       displaceMesh(*part.mesh, settings, displaced_meshes_[p]);
       part.mesh = &displaced_meshes_[p];
       part.bounds = vertexBounds(part.mesh->positions);
@@ -229,9 +233,10 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
 }
 
 void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling,
-                                 float height_to_tile, float amplitude) {
-  Displacement displacement{std::move(map), ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
+                                 float height_to_tile, float amplitude, std::shared_ptr<const FoldTiles> folds) {
+  Displacement displacement{std::move(map), std::move(folds), ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
   displacement.settings.map = displacement.map.get();
+  displacement.settings.folds = displacement.map ? displacement.folds.get() : nullptr;
   if (displacement.map) checkReliefDisplacement(displacement.settings);  // now, not at the next update
   displacements_[static_cast<std::size_t>(kind)] = std::move(displacement);
   displaced_meshes_.resize(parts_.size());

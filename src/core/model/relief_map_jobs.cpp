@@ -41,9 +41,8 @@ std::shared_ptr<ReliefMapJobs::SharedBuild> obtain(ReliefKind kind, const SkinRe
                      FinishedReliefMap done;
                      done.kind = kind;
                      try {
-                       auto map = std::make_shared<const ReliefMap>(build());
-                       done.normal_rgb = std::make_shared<const std::vector<std::uint8_t>>(encodeNormalMapRgb(*map));
-                       done.map = std::move(map);
+                       done = build();
+                       done.kind = kind;
                      } catch (const std::exception& error) {
                        done.error = error.what();
                      }
@@ -77,22 +76,33 @@ ReliefMap transposed(const ReliefMap& map) {
 }
 
 WrinkleMapSpec garmentWrinkleMapSpec() {
-  // X-pattern buckling at mild compression (SPEC §4); a few large cells per patch, as cloth
-  // buckles at the scale of a hand, not of a knit. Y-Y chains: the pattern wrinkle placement
-  // picks for the default garments' patches (their surfaces turn about half a bend angle per
-  // cell; wrinkle_placement.h), at a strong compression; the per-vertex wrinkle weight from the
-  // posed garment (HumanModel) decides where and how much of it shows. The map compresses along
+  // Y-Y chains (SPEC §4), the pattern wrinkle placement picks for the default garments' patches
+  // (their surfaces turn about half a bend angle per cell; wrinkle_placement.h), at a strong
+  // compression; a few large cells per patch, as cloth buckles at the scale of a hand, not of a
+  // knit. The per-vertex wrinkle strength and fold axis from the posed garment (HumanModel)
+  // decide where, how much and which way it shows (oriented_folds.h). The map compresses along
   // its rows (v); knees and elbows compress garments along the limb, patch u: hence the
-  // transpose (ReliefMapJobs::startCloth).
+  // transpose (garmentFoldTiles).
   WrinkleMapSpec spec;
   spec.chain = "YY";
   spec.cells_around = 2;
   spec.rows = 2;
   spec.alpha = {0.8};
+  // Cells square once compressed (2 L_x = 2 alpha L_y): the tile is square in space as in
+  // pixels, so its slopes turn with the lookups of oriented_folds.h.
+  spec.cell.half_length_y = spec.cell.half_width_x / spec.alpha[0];
   // Soft folds, not the exact tile's creases (issue 21): the tile blurred through its own Fourier
   // series, within 5 % of the exact folds' height (wrinkle_map.h).
   spec.surface = WrinkleSurface::smoothFolds;
   return spec;
+}
+
+FoldTiles garmentFoldTiles(int pixels) {
+  WrinkleMapSpec strong = garmentWrinkleMapSpec();
+  strong.width_pixels = strong.height_pixels = pixels;
+  WrinkleMapSpec slight = strong;
+  slight.chain = "I";
+  return FoldTiles(transposed(makeWrinkleMap(slight)), transposed(makeWrinkleMap(strong)));
 }
 
 // A build another ReliefMapJobs shares goes on for it; the last holder of a build waits for its
@@ -113,15 +123,27 @@ void ReliefMapJobs::requestSkin(const SkinReliefParameters& parameters) {
 
 void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
   // A 512^2 map takes a noticeable fraction of a second; a bad parameter throws inside the job.
-  jobs_[index(ReliefKind::kSkin)].running = obtain(
-      ReliefKind::kSkin, parameters, [parameters] { return SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize); });
+  jobs_[index(ReliefKind::kSkin)].running = obtain(ReliefKind::kSkin, parameters, [parameters] {
+    FinishedReliefMap done;
+    auto map = std::make_shared<const ReliefMap>(SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize));
+    done.normal_bytes = std::make_shared<const std::vector<std::uint8_t>>(encodeNormalMapRgb(*map));
+    done.normal_channels = 3;
+    done.map = std::move(map);
+    return done;
+  });
   skin_started_ = parameters;
 }
 
 void ReliefMapJobs::startCloth() {
-  const WrinkleMapSpec spec = garmentWrinkleMapSpec();
-  jobs_[index(ReliefKind::kCloth)].running =
-      obtain(ReliefKind::kCloth, SkinReliefParameters(), [spec] { return transposed(makeWrinkleMap(spec)); });
+  jobs_[index(ReliefKind::kCloth)].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), [] {
+    FinishedReliefMap done;
+    auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles());
+    done.normal_bytes = std::make_shared<const std::vector<std::uint8_t>>(encodeFoldTilesRgba(*tiles));
+    done.normal_channels = 4;
+    done.map = std::shared_ptr<const ReliefMap>(tiles, &tiles->strong);
+    done.fold_tiles = std::move(tiles);
+    return done;
+  });
 }
 
 float ReliefMapJobs::clothHeightToTile() {
@@ -138,6 +160,7 @@ std::vector<FinishedReliefMap> ReliefMapJobs::poll() {
     finished.push_back(job.running->result.get());
     if (finished.back().map) {
       job.map = finished.back().map;
+      job.fold_tiles = finished.back().fold_tiles;
       job.held = job.running;
     }
     job.running.reset();

@@ -46,6 +46,10 @@ void checkReliefDisplacement(const ReliefDisplacement& displacement) {
     throw std::invalid_argument("relief displacement: height_to_tile " + std::to_string(displacement.height_to_tile) +
                                 " must be > 0");
   }
+  if (displacement.folds != nullptr && displacement.tiling != 1.0f) {
+    throw std::invalid_argument("relief displacement: fold tiles are laid out per patch; tiling " +
+                                std::to_string(displacement.tiling) + " must be 1");
+  }
   if (!(displacement.amplitude >= 0.0f) || !std::isfinite(displacement.amplitude)) {
     throw std::invalid_argument("relief displacement: amplitude " + std::to_string(displacement.amplitude) +
                                 " must be finite and >= 0");
@@ -60,6 +64,10 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     throw std::invalid_argument("relief displacement: " + std::to_string(displacement.weights->size()) +
                                 " vertex weights for " + std::to_string(n) + " vertices");
   }
+  if (displacement.fold_axes != nullptr && displacement.fold_axes->size() != n) {
+    throw std::invalid_argument("relief displacement: " + std::to_string(displacement.fold_axes->size()) +
+                                " fold axes for " + std::to_string(n) + " vertices");
+  }
   out.positions.resize(n);
   out.normals.resize(n);
   out.tangents_u = base.tangents_u;
@@ -70,10 +78,16 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
   out.triangle_patch = base.triangle_patch;
   const double tiling = displacement.tiling;
   for (std::size_t i = 0; i < n; ++i) {
-    const double amplitude = displacement.amplitude * (displacement.weights ? (*displacement.weights)[i] : 1.0f);
+    const float weight = displacement.weights ? (*displacement.weights)[i] : 1.0f;
     const Eigen::Vector3d normal = base.normals[i].cast<double>();
     const Eigen::Vector3d fu = base.tangents_u[i].cast<double>(), fv = base.tangents_v[i].cast<double>();
-    const ReliefSample relief = sampleReliefMap(*map, base.uv[i].x() * tiling, base.uv[i].y() * tiling);
+    // Fold tiles take the weight as the wrinkle strength (their pattern and amplitude).
+    const double amplitude = displacement.amplitude * (displacement.folds ? 1.0f : weight);
+    const ReliefSample relief =
+        displacement.folds
+            ? orientedFolds(*displacement.folds, base.uv[i].cast<double>(),
+                            displacement.fold_axes ? (*displacement.fold_axes)[i] : Eigen::Vector2f::Zero(), weight)
+            : sampleReliefMap(*map, base.uv[i].x() * tiling, base.uv[i].y() * tiling);
     const double lu = fu.norm(), lv = fv.norm();
     // At a pole one derivative vanishes: the tile has no size there and nothing moves.
     const double metres_per_tile = std::sqrt(lu * lv) / tiling;

@@ -20,10 +20,6 @@ std::string str(const T& value) {
   return out.str();
 }
 
-// Below this (relative to E G) a first fundamental form counts as singular: a pole, where the
-// patch gives no two independent directions and the stretch is undefined.
-constexpr double kSingularMetric = 1e-12;
-
 // Eigen-decomposition of M = G_rest^-1 G_posed, written out for 2x2 so that M = I gives
 // eigenvalues 1 to rounding (the usual tr/2 +- sqrt(tr^2/4 - det) loses half the digits at a
 // double eigenvalue: 1e-16 under the root becomes 1e-8).
@@ -85,7 +81,9 @@ PatternKind firstKind(const std::string& chain) {
   }
 }
 
-void validate(const WrinklePlacementOptions& o) {
+}  // namespace
+
+void checkWrinklePlacementOptions(const WrinklePlacementOptions& o) {
   if (!(o.alpha_threshold > 0.0 && o.alpha_threshold <= 1.0)) {
     throw std::invalid_argument("WrinklePlacementOptions.alpha_threshold must be in (0, 1], got " + str(o.alpha_threshold));
   }
@@ -112,47 +110,7 @@ void validate(const WrinklePlacementOptions& o) {
   }
 }
 
-struct VertexStretchInput {
-  const Eigen::Vector4f* inverse_rest_metric;
-  const Eigen::Vector3f* tangents_u;
-  const Eigen::Vector3f* tangents_v;
-  std::size_t count;
-  WrinkleStrengthConstants constants;
-};
-
-// sqrt of the smaller eigenvalue of G_rest^-1 G_posed, clamped to 1; 1 where undefined. Selects
-// rather than branches (the per-frame kernel below inlines it).
-inline float stretchAlpha(const Eigen::Vector4f& inverse, const Eigen::Vector3f& tu, const Eigen::Vector3f& tv) {
-  const float e = tu.squaredNorm(), f = tu.dot(tv), g = tv.squaredNorm();
-  const float m11 = inverse.x() * e + inverse.y() * f;
-  const float m12 = inverse.x() * f + inverse.y() * g;
-  const float m21 = inverse.y() * e + inverse.z() * f;
-  const float m22 = inverse.y() * f + inverse.z() * g;
-  const float half_difference = 0.5f * (m11 - m22);
-  const float lambda_max = 0.5f * (m11 + m22) + std::sqrt(std::max(0.0f, half_difference * half_difference + m12 * m21));
-  const float det_posed = e * g - f * f;
-  const float lambda_min = std::max(0.0f, inverse.w() * det_posed / std::max(lambda_max, 1e-30f));
-  // A pole at rest (inverse zero) or in this pose (rank < 2): no stretch defined.
-  const bool defined = inverse.w() > 0.0f && det_posed > 1e-6f * e * g;
-  return defined ? std::min(1.0f, std::sqrt(lambda_min)) : 1.0f;
-}
-
-inline float strengthOf(float alpha, const WrinkleStrengthConstants& constants) {
-  const float effective = std::min(1.0f, alpha * constants.inverse_threshold);
-  return std::min(1.0f, std::sqrt(std::max(0.0f, 1.0f - effective * effective)) * constants.inverse_saturation);
-}
-
-// The per-frame kernel of VertexCompression::evaluate, outputs chosen at compile time (no
-// per-vertex tests of the output pointers). Not vectorized by GCC at -O3 (sqrt's errno path is
-// control flow); ~11 ns per vertex measured (bench_relief).
-template <bool kAlpha, bool kStrength>
-void vertexStretch(const VertexStretchInput& in, float* alpha, float* strength) {
-  for (std::size_t i = 0; i < in.count; ++i) {
-    const float a = stretchAlpha(in.inverse_rest_metric[i], in.tangents_u[i], in.tangents_v[i]);
-    if constexpr (kAlpha) alpha[i] = a;
-    if constexpr (kStrength) strength[i] = strengthOf(a, in.constants);
-  }
-}
+namespace {
 
 bool isSleeve(const std::string& piece) { return piece == "l_sleeve" || piece == "r_sleeve"; }
 bool isLeg(const std::string& piece) { return piece == "l_leg" || piece == "r_leg"; }
@@ -288,7 +246,7 @@ void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentCont
 WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skeleton, const BodyShape& shape,
                                    const WrinklePlacementOptions& options)
     : options_(options) {
-  validate(options_);
+  checkWrinklePlacementOptions(options_);
   ForwardKinematics fk(skeleton, shape);
   JointAngles zero{};
   zero.fill(0.0);
@@ -519,82 +477,6 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
     }
   }
   return result;
-}
-
-VertexCompression::VertexCompression(const WrinklePlacementOptions& options) : options_(options) { validate(options_); }
-
-void VertexCompression::prepare(const TriangleMesh& mesh, const std::vector<BezierPatch>& rest_patches) {
-  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  const std::size_t vertices = mesh.vertexCount();
-  if (mesh.uv.size() != vertices) {
-    throw std::invalid_argument("VertexCompression: mesh has " + str(mesh.uv.size()) + " uv for " + str(vertices) + " vertices");
-  }
-  vertex_patch_.assign(vertices, kNone);
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const std::uint32_t patch = mesh.triangle_patch.at(t);
-    if (patch >= rest_patches.size()) {
-      throw std::invalid_argument("VertexCompression: triangle " + str(t) + " lies on patch " + str(patch) + " of " +
-                                  str(rest_patches.size()) + " rest patches");
-    }
-    for (int k = 0; k < 3; ++k) {
-      std::uint32_t& owner = vertex_patch_.at(mesh.indices[3 * t + static_cast<std::size_t>(k)]);
-      owner = std::min(owner, patch);
-    }
-  }
-  uv_ = mesh.uv;
-  inverse_rest_metric_.resize(vertices);
-  for (std::size_t i = 0; i < vertices; ++i) {
-    if (vertex_patch_[i] == kNone) throw std::invalid_argument("VertexCompression: vertex " + str(i) + " is on no triangle");
-    const double u = std::clamp(static_cast<double>(uv_[i].x()), 0.0, 1.0);
-    const double v = std::clamp(static_cast<double>(uv_[i].y()), 0.0, 1.0);
-    const PatchDerivatives d = rest_patches[vertex_patch_[i]].derivatives(u, v);
-    const double e = d.d_du.squaredNorm(), f = d.d_du.dot(d.d_dv), g = d.d_dv.squaredNorm();
-    const double det = e * g - f * f;
-    if (!(det > kSingularMetric * e * g)) {
-      inverse_rest_metric_[i].setZero();  // a pole: no stretch defined, reported as alpha = 1
-      continue;
-    }
-    inverse_rest_metric_[i] = Eigen::Vector4d(g / det, -f / det, e / det, 1.0 / det).cast<float>();
-  }
-}
-
-VertexStretch vertexStretchAt(const Eigen::Vector4f& inverse_rest_metric, const Eigen::Vector3f& d_du,
-                              const Eigen::Vector3f& d_dv, const WrinkleStrengthConstants& constants) {
-  const float alpha = stretchAlpha(inverse_rest_metric, d_du, d_dv);
-  return {alpha, strengthOf(alpha, constants)};
-}
-
-WrinkleStrengthConstants VertexCompression::strengthConstants() const {
-  return {static_cast<float>(1.0 / options_.alpha_threshold),
-          static_cast<float>(1.0 / std::sqrt(1.0 - options_.saturation_alpha * options_.saturation_alpha))};
-}
-
-bool VertexCompression::preparedFor(const TriangleMesh& mesh) const {
-  return mesh.uv.size() == uv_.size() && std::equal(uv_.begin(), uv_.end(), mesh.uv.begin());
-}
-
-void VertexCompression::evaluate(const TriangleMesh& posed_mesh, float* alpha, float* strength) const {
-  const std::size_t vertices = inverse_rest_metric_.size();
-  if (posed_mesh.tangents_u.size() != vertices || posed_mesh.tangents_v.size() != vertices) {
-    throw std::invalid_argument("VertexCompression: posed mesh has " + str(posed_mesh.tangents_u.size()) +
-                                " vertices, prepared for " + str(vertices));
-  }
-  const VertexStretchInput input{inverse_rest_metric_.data(), posed_mesh.tangents_u.data(), posed_mesh.tangents_v.data(), vertices,
-                                 strengthConstants()};
-  if (alpha && strength) {
-    vertexStretch<true, true>(input, alpha, strength);
-  } else if (alpha) {
-    vertexStretch<true, false>(input, alpha, strength);
-  } else if (strength) {
-    vertexStretch<false, true>(input, alpha, strength);
-  }
-}
-
-void VertexCompression::update(const TriangleMesh& posed_mesh, const std::vector<BezierPatch>& rest_patches,
-                               std::vector<float>& strength) {
-  if (!preparedFor(posed_mesh)) prepare(posed_mesh, rest_patches);
-  strength.resize(posed_mesh.vertexCount());
-  evaluate(posed_mesh, nullptr, strength.data());
 }
 
 }  // namespace dressed_human

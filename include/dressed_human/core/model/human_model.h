@@ -18,7 +18,7 @@
 #include "dressed_human/core/relief/mesh_displacement.h"
 #include "dressed_human/core/surfaces/skin.h"
 #include "dressed_human/core/surfaces/tessellation.h"
-#include "dressed_human/core/relief/wrinkle_placement.h"
+#include "dressed_human/core/relief/vertex_compression.h"
 
 namespace dressed_human {
 
@@ -37,6 +37,9 @@ struct SurfacePart {
   // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
   // wrinkles behind a bent knee, none on a straight leg.
   const std::vector<float>* relief_weight = nullptr;
+  // Garments, per vertex of `mesh`: which way the folds run (VertexStretch::fold_axis,
+  // oriented_folds.h); null for the skin and when the renderer evaluates the vertices.
+  const std::vector<Eigen::Vector2f>* fold_axis = nullptr;
   // false: `mesh` is only the layout (uv, vertex_patch, indices; positions, normals, tangents
   // unspecified) and relief_weight is null. The renderer evaluates `patches` at (vertex_patch, uv)
   // itself and, for garments, the wrinkle strength from `inverse_rest_metric` and
@@ -95,10 +98,11 @@ class HumanModel {
               const LevelOfDetail& lod);
 
   // Relief as displaced geometry (mesh_displacement.h) for every part of `kind`, from the next
-  // update() on; a null map turns it off (bump mapping is then the renderer's business). The
-  // model keeps the map alive. Throws std::invalid_argument naming a bad setting.
+  // update() on; a null map turns it off (bump mapping is then the renderer's business). For
+  // garments, `folds` (the map being its strong tile) draws the oriented folds the shader draws.
+  // The model keeps the maps alive. Throws std::invalid_argument naming a bad setting.
   void setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling, float height_to_tile,
-                       float amplitude);
+                       float amplitude, std::shared_ptr<const FoldTiles> folds = nullptr);
 
   // From the next update() on; kCpu by default.
   void setVertexEvaluation(VertexEvaluation evaluation) { vertex_evaluation_ = evaluation; }
@@ -143,6 +147,7 @@ class HumanModel {
     VertexCompression compression;             // the per-vertex compression measure
     std::uint64_t compressed_layout = 0;       // Tessellator::layoutId() `compression` was prepared for
     std::vector<float> wrinkle_weights;        // per vertex, last levels used
+    std::vector<Eigen::Vector2f> fold_axes;    // per vertex, last levels used
   };
   std::vector<DressedGarment> garments_;
   std::array<double, 2> relief_tile_size_{{0.0, 0.0}};  // by ReliefKind
@@ -157,6 +162,7 @@ class HumanModel {
   VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;
+    std::shared_ptr<const FoldTiles> folds;
     ReliefDisplacement settings;
   };
   std::array<Displacement, 2> displacements_;  // by ReliefKind

@@ -15,18 +15,24 @@
 #include <vector>
 
 #include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/relief/oriented_folds.h"
 #include "dressed_human/core/relief/relief_map.h"
 #include "dressed_human/core/relief/skin_relief.h"
 #include "dressed_human/core/relief/wrinkle_map.h"
 
 namespace dressed_human {
 
-// One finished build: the map and its normal map (encodeNormalMapRgb), or what the build threw.
+// One finished build: the map and its texture, or what the build threw.
 struct FinishedReliefMap {
   ReliefKind kind = ReliefKind::kSkin;
-  std::shared_ptr<const ReliefMap> map;  // null: the build failed
-  // encodeNormalMapRgb(*map), shared like the map (a renderer may key its texture by it).
-  std::shared_ptr<const std::vector<std::uint8_t>> normal_rgb;
+  // Skin: the Voronoi relief. Cloth: the strong (Y-Y) fold tile of `fold_tiles`. Null: the build
+  // failed.
+  std::shared_ptr<const ReliefMap> map;
+  std::shared_ptr<const FoldTiles> fold_tiles;  // cloth only
+  // The texture a renderer samples, shared like the map (a renderer may key its texture by it):
+  // skin encodeNormalMapRgb(*map), 3 channels; cloth encodeFoldTilesRgba(*fold_tiles), 4.
+  std::shared_ptr<const std::vector<std::uint8_t>> normal_bytes;
+  int normal_channels = 3;
   std::string error;
 };
 
@@ -45,7 +51,7 @@ class ReliefMapJobs {
   // Starts building the skin map for `parameters` (kSkinMapSize square); while one is building,
   // the request waits and poll() starts it when that one ends (if the parameters differ).
   void requestSkin(const SkinReliefParameters& parameters);
-  // Starts building the garments' wrinkle map (garmentWrinkleMapSpec(), transposed).
+  // Starts building the garments' fold tiles (garmentFoldTiles()).
   void startCloth();
   // Heights of the wrinkle map per tile width (for HumanModel::setDisplacement).
   static float clothHeightToTile();
@@ -54,6 +60,8 @@ class ReliefMapJobs {
   std::vector<FinishedReliefMap> poll();
   // The newest map of `kind` built without an error; null before.
   const std::shared_ptr<const ReliefMap>& map(ReliefKind kind) const { return jobs_[index(kind)].map; }
+  // The newest fold tiles built without an error (the cloth map's); null before.
+  const std::shared_ptr<const FoldTiles>& foldTiles() const { return jobs_[index(ReliefKind::kCloth)].fold_tiles; }
 
   // Maps built in this process so far (each shared build counts once).
   static std::size_t buildCount();
@@ -65,6 +73,7 @@ class ReliefMapJobs {
     std::shared_ptr<SharedBuild> running;  // null: none since the last poll() delivered it
     std::shared_ptr<SharedBuild> held;     // the build whose map is in use: keeps it shared
     std::shared_ptr<const ReliefMap> map;
+    std::shared_ptr<const FoldTiles> fold_tiles;
   };
   static std::size_t index(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }
   bool busy(ReliefKind kind) const;
@@ -75,8 +84,13 @@ class ReliefMapJobs {
   SkinReliefParameters skin_requested_;  // the newest request
 };
 
-// The garments' wrinkle texture: Y-Y chains at a strong compression (see relief_map_jobs.cpp).
+// The garments' strong fold tile before its transpose: Y-Y chains at a strong compression, cells
+// square once compressed (see relief_map_jobs.cpp).
 WrinkleMapSpec garmentWrinkleMapSpec();
+// The garments' two fold tiles (oriented_folds.h): I and garmentWrinkleMapSpec()'s Y-Y, both
+// transposed so that they compress along u, `pixels` square (throws std::invalid_argument as
+// makeWrinkleMap for a bad size). About 0.4 s for both at 512.
+FoldTiles garmentFoldTiles(int pixels = 512);
 // The map with u and v swapped (heights and slopes).
 ReliefMap transposed(const ReliefMap& map);
 

@@ -13,6 +13,7 @@
 // the two relief modes agree where the surface is locally isometric to the tile.
 #pragma once
 
+#include "dressed_human/core/relief/oriented_folds.h"
 #include "dressed_human/core/relief/relief_sample.h"
 #include "dressed_human/core/relief/relief_map.h"
 #include "dressed_human/core/surfaces/tessellation.h"
@@ -26,6 +27,11 @@ struct ReliefDisplacement {
   float amplitude = 1.0f;          ///< relief strength (as the shader's), >= 0
   /// Optional per-vertex factor on the amplitude (SurfacePart::relief_weight); null: 1.
   const std::vector<float>* weights = nullptr;
+  /// Garments: the fold tiles (oriented_folds.h) drawn instead of `map`, turned by the vertices'
+  /// fold axes (SurfacePart::fold_axis; null: none preferred) and patterned by `weights` as the
+  /// shader does; heights are then for a tile one patch across (tiling must be 1).
+  const FoldTiles* folds = nullptr;
+  const std::vector<Eigen::Vector2f>* fold_axes = nullptr;
 };
 
 /// Height and slopes of the map at tile coordinates (any real values: the map wraps),
@@ -33,12 +39,12 @@ struct ReliefDisplacement {
 ReliefSample sampleReliefMap(const ReliefMap& map, double tile_u, double tile_v);
 
 /// Throws std::invalid_argument naming a bad field (no map, empty map, tiling or
-/// height_to_tile <= 0, negative or non-finite amplitude).
+/// height_to_tile <= 0, negative or non-finite amplitude, fold tiles with a tiling other than 1).
 void checkReliefDisplacement(const ReliefDisplacement& displacement);
 
 /// `out` = `base` with every vertex moved along its normal and normals tilted by the relief
 /// (tangents and uv copied). Allocation-free once `out` has had the same size. Throws as
-/// checkReliefDisplacement, or when `weights` does not have one entry per vertex.
+/// checkReliefDisplacement, or when `weights` or `fold_axes` does not have one entry per vertex.
 void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displacement, TriangleMesh& out);
 
 }  // namespace dressed_human

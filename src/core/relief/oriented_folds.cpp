@@ -1,0 +1,121 @@
+#include "dressed_human/core/relief/oriented_folds.h"
+
+#include "dressed_human/core/relief/mesh_displacement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace dressed_human {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::uint8_t encodeUnit(double value) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp((value + 1.0) * 0.5, 0.0, 1.0) * 255.0));
+}
+
+}  // namespace
+
+const std::array<FoldOrientation, kFoldOrientations>& foldOrientations() {
+  static const std::array<FoldOrientation, kFoldOrientations> orientations = [] {
+    std::array<FoldOrientation, kFoldOrientations> table{{{1, 0, 3, 0.0},
+                                                          {3, 1, 1, 0.0},
+                                                          {3, 2, 1, 0.0},
+                                                          {1, 1, 2, 0.0},
+                                                          {2, 3, 1, 0.0},
+                                                          {1, 3, 1, 0.0},
+                                                          {0, 1, 3, 0.0},
+                                                          {-1, 3, 1, 0.0},
+                                                          {-2, 3, 1, 0.0},
+                                                          {-1, 1, 2, 0.0},
+                                                          {-3, 2, 1, 0.0},
+                                                          {-3, 1, 1, 0.0}}};
+    for (FoldOrientation& o : table) o.degrees = std::atan2(o.q, o.p) * 180.0 / kPi;
+    return table;
+  }();
+  return orientations;
+}
+
+FoldBlend foldOrientationBlend(const Eigen::Vector2f& fold_axis) {
+  const Eigen::Vector2f axis = fold_axis + Eigen::Vector2f(-kFoldAxisBias, 0.0f);
+  // The folds' angle in [0, 180): half the double angle.
+  double degrees = 0.5 * std::atan2(static_cast<double>(axis.y()), static_cast<double>(axis.x())) * 180.0 / kPi;
+  if (degrees < 0.0) degrees += 180.0;
+  const auto& table = foldOrientations();
+  int first = kFoldOrientations - 1;
+  while (first > 0 && table[static_cast<std::size_t>(first)].degrees > degrees) --first;
+  const int second = (first + 1) % kFoldOrientations;
+  const double next = second == 0 ? 180.0 : table[static_cast<std::size_t>(second)].degrees;
+  const double t = std::clamp((degrees - table[static_cast<std::size_t>(first)].degrees) /
+                                  (next - table[static_cast<std::size_t>(first)].degrees),
+                              0.0, 1.0);
+  const float s = static_cast<float>(t * t * (3.0 - 2.0 * t));
+  return {first, second, 1.0f - s, s};
+}
+
+Eigen::Vector2d foldTileCoordinate(int orientation, const Eigen::Vector2d& uv) {
+  const FoldOrientation& o = foldOrientations()[static_cast<std::size_t>(orientation)];
+  return o.scale * Eigen::Vector2d(o.q * uv.x() - o.p * uv.y(), o.p * uv.x() + o.q * uv.y());
+}
+
+double foldHeightScale(int orientation) {
+  const FoldOrientation& o = foldOrientations()[static_cast<std::size_t>(orientation)];
+  return 1.0 / (o.scale * std::hypot(o.p, o.q));
+}
+
+float strongPatternWeight(float strength) {
+  const float t = std::clamp((strength - 0.4f) / 0.4f, 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+FoldTiles::FoldTiles(ReliefMap slight_tile, ReliefMap strong_tile)
+    : slight(std::move(slight_tile)), strong(std::move(strong_tile)) {
+  if (slight.width <= 0 || slight.height <= 0 || slight.width != strong.width || slight.height != strong.height) {
+    throw std::invalid_argument("fold tiles of " + std::to_string(slight.width) + " x " + std::to_string(slight.height) +
+                                " and " + std::to_string(strong.width) + " x " + std::to_string(strong.height) +
+                                " pixels: they must be one non-empty size");
+  }
+}
+
+ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
+                           float strength) {
+  const FoldBlend blend = foldOrientationBlend(fold_axis);
+  const double strong = strongPatternWeight(strength);
+  ReliefSample sum;
+  for (const auto& [k, weight] : {std::make_pair(blend.first, blend.first_weight), std::make_pair(blend.second, blend.second_weight)}) {
+    if (weight <= 0.0f) continue;
+    const Eigen::Vector2d at = foldTileCoordinate(k, uv);
+    const ReliefSample slight = sampleReliefMap(tiles.slight, at.x(), at.y());
+    const ReliefSample strong_sample = sampleReliefMap(tiles.strong, at.x(), at.y());
+    const double height = (1.0 - strong) * slight.height + strong * strong_sample.height;
+    const Eigen::Vector2d g = (1.0 - strong) * slight.slope + strong * strong_sample.slope;
+    // h(A uv) c: gradient c A^T grad h, and c A^T = R^T, a rotation: the slope keeps its size.
+    const FoldOrientation& o = foldOrientations()[static_cast<std::size_t>(k)];
+    const double c = 1.0 / std::hypot(o.p, o.q);
+    sum.height += weight * foldHeightScale(k) * height;
+    sum.slope += weight * c * Eigen::Vector2d(o.q * g.x() + o.p * g.y(), -o.p * g.x() + o.q * g.y());
+  }
+  sum.height *= strength;
+  sum.slope *= strength;
+  return sum;
+}
+
+std::vector<std::uint8_t> encodeFoldTilesRgba(const FoldTiles& tiles) {
+  std::vector<std::uint8_t> rgba;
+  rgba.reserve(static_cast<std::size_t>(tiles.slight.width) * static_cast<std::size_t>(tiles.slight.height) * 4);
+  for (int row = 0; row < tiles.slight.height; ++row) {
+    for (int column = 0; column < tiles.slight.width; ++column) {
+      for (const ReliefMap* map : {&tiles.slight, &tiles.strong}) {
+        const Eigen::Vector3f n = map->normalAt(column, row);
+        rgba.push_back(encodeUnit(n.x()));
+        rgba.push_back(encodeUnit(n.y()));
+      }
+    }
+  }
+  return rgba;
+}
+
+}  // namespace dressed_human
