@@ -50,12 +50,12 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.colour_set = true;
     }
     if (source.evaluated) {
-      part.mesh->update(*source.mesh, source.relief_weight, source.fold_axis, source.bounds);
+      part.mesh->update(*source.mesh, *source.corners, source.relief_weight, source.fold_axis, source.bounds);
       continue;
     }
     part.material->setPatches(*source.patches);
     part.material->setWrinkleStrength(source.inverse_rest_metric ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, source.inverse_rest_metric, source.layout_id, source.bounds);
+    part.mesh->updateLayout(*source.mesh, *source.corners, source.inverse_rest_metric, source.layout_id, source.bounds);
   }
 }
 

@@ -52,37 +52,40 @@ void SurfaceMeshObject::setBounds(const Eigen::AlignedBox3f& bounds) {
   object_->getParentSceneNode()->needUpdate();
 }
 
-void SurfaceMeshObject::update(const TriangleMesh& mesh, const std::vector<float>* relief_weight,
-                               const std::vector<Eigen::Vector2f>* fold_axis, const Eigen::AlignedBox3f& bounds) {
+void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit& corners,
+                               const std::vector<float>* relief_weight, const std::vector<Eigen::Vector2f>* fold_axis,
+                               const Eigen::AlignedBox3f& bounds) {
   layout_id_ = 0;
   const std::size_t vertices = mesh.positions.size();
-  const std::size_t indices = mesh.indices.size();
   if ((relief_weight != nullptr && relief_weight->size() != vertices) ||
       (fold_axis != nullptr && fold_axis->size() != vertices)) {
     throw std::invalid_argument("mesh with " + std::to_string(vertices) + " vertices has " +
                                 std::to_string(relief_weight ? relief_weight->size() : vertices) + " relief weights and " +
                                 std::to_string(fold_axis ? fold_axis->size() : vertices) + " fold axes");
   }
-  if (!beginFilling(vertices, indices)) return;
-  for (std::size_t i = 0; i < vertices; ++i) {
-    const Eigen::Vector3f& p = mesh.positions[i];
-    const Eigen::Vector3f& n = mesh.normals[i];
-    const Eigen::Vector3f& t = mesh.tangents_u[i];
-    const Eigen::Vector2f& uv = mesh.uv[i];
+  checkCorners(corners, vertices);
+  if (!beginFilling(corners.source.size(), corners.indices.size())) return;
+  for (std::size_t i = 0; i < corners.source.size(); ++i) {
+    const std::uint32_t v = corners.source[i];
+    const Eigen::Vector3f& p = mesh.positions[v];
+    const Eigen::Vector3f& n = mesh.normals[v];
+    const Eigen::Vector3f& t = mesh.tangents_u[v];
+    const Eigen::Vector2f& uv = corners.uv[i];
     object_->position(p.x(), p.y(), p.z());
     object_->normal(n.x(), n.y(), n.z());
     object_->tangent(t.x(), t.y(), t.z());
     object_->textureCoord(uv.x(), uv.y());
-    const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[i] : Eigen::Vector2f::Zero();
-    object_->textureCoord(relief_weight != nullptr ? (*relief_weight)[i] : 1.0f, axis.x(), axis.y());
+    const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[v] : Eigen::Vector2f::Zero();
+    object_->textureCoord(relief_weight != nullptr ? (*relief_weight)[v] : 1.0f, axis.x(), axis.y());
   }
-  for (std::size_t i = 0; i < indices; ++i) object_->index(mesh.indices[i]);
+  for (const std::uint32_t index : corners.indices) object_->index(index);
   object_->end();
   setBounds(bounds);
 }
 
-void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vector<Eigen::Vector4f>* inverse_rest_metric,
-                                     std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds) {
+void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCornerSplit& corners,
+                                     const std::vector<Eigen::Vector4f>* inverse_rest_metric, std::uint64_t layout_id,
+                                     const Eigen::AlignedBox3f& bounds) {
   if (layout_id == 0 || layout_id != layout_id_) {
     const std::size_t vertices = layout.uv.size();
     if (layout.vertex_patch.size() != vertices ||
@@ -92,17 +95,34 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const std::vect
                                   std::to_string(inverse_rest_metric ? inverse_rest_metric->size() : vertices) +
                                   " rest metrics");
     }
-    if (!beginFilling(vertices, layout.indices.size())) return;
-    for (std::size_t i = 0; i < vertices; ++i) {
-      object_->position(layout.uv[i].x(), layout.uv[i].y(), static_cast<float>(layout.vertex_patch[i]));
-      const Eigen::Vector4f metric = inverse_rest_metric ? (*inverse_rest_metric)[i] : Eigen::Vector4f::Zero();
+    checkCorners(corners, vertices);
+    if (!beginFilling(corners.source.size(), corners.indices.size())) return;
+    for (std::size_t i = 0; i < corners.source.size(); ++i) {
+      // The owner's (u, v, patch) for the position, so that copies evaluate to the same bits.
+      const std::uint32_t v = corners.source[i];
+      object_->position(layout.uv[v].x(), layout.uv[v].y(), static_cast<float>(layout.vertex_patch[v]));
+      const Eigen::Vector4f metric = inverse_rest_metric ? (*inverse_rest_metric)[v] : Eigen::Vector4f::Zero();
       object_->textureCoord(metric.x(), metric.y(), metric.z(), metric.w());
+      object_->textureCoord(corners.uv[i].x(), corners.uv[i].y());
     }
-    for (const std::uint32_t index : layout.indices) object_->index(index);
+    for (const std::uint32_t index : corners.indices) object_->index(index);
     object_->end();
     layout_id_ = layout_id;  // only now: a layout that failed above is tried again next frame
   }
   setBounds(bounds);
+}
+
+void SurfaceMeshObject::checkCorners(const PatchCornerSplit& corners, std::size_t vertices) {
+  if (corners.uv.size() != corners.source.size()) {
+    throw std::invalid_argument("corner split with " + std::to_string(corners.source.size()) + " sources has " +
+                                std::to_string(corners.uv.size()) + " uv");
+  }
+  for (const std::uint32_t source : corners.source) {
+    if (source >= vertices) {
+      throw std::invalid_argument("corner split refers to vertex " + std::to_string(source) + " of a mesh of " +
+                                  std::to_string(vertices));
+    }
+  }
 }
 
 }  // namespace dressed_human

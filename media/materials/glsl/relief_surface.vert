@@ -5,7 +5,8 @@
 // Two builds of this file (dressed_human.material):
 //  * the CPU evaluated the surface: each vertex brings position, normal, dF/du, its (u, v) and
 //    relief weight;
-//  * EVALUATE_BEZIER: each vertex brings only (u, v, patch) and, on garments, its rest metric;
+//  * EVALUATE_BEZIER: each vertex brings only (u, v, patch), the (u, v) it has in the patch of its
+//    triangles (for the relief, patch_corner_split.h) and, on garments, its rest metric;
 //    the vertex evaluates the bicubic Bezier patch (SPEC §2 Eq. 2-3) from the posed control
 //    points and the wrinkle strength from the posed metric (wrinkle_placement.h,
 //    VertexCompression) itself. The CPU then only poses 16 control points per patch per frame.
@@ -15,7 +16,9 @@ attribute vec3 normal;
 attribute vec3 tangent;
 attribute vec4 uv0;                 // Bezier: the rest metric (a, b, c, det) of G_rest^-1 (garments)
 attribute vec4 uv1;                 // x: how much of the relief shows here (wrinkles follow compression),
-                                    // yz: which way garment folds run (VertexStretch::fold_axis)
+                                    // yz: which way garment folds run (VertexStretch::fold_axis);
+                                    // Bezier: xy the vertex's (u, v) in the patch of its triangles
+                                    // (patch_corner_split.h; `vertex` has its owner patch's)
 
 uniform mat4 worldViewProj;
 uniform vec4 lightPositionObject;   // w = 0 for rviz's directional light
@@ -99,7 +102,7 @@ void main() {
   }
   n = normalize(n);
   vec3 tangent_u = du;
-  reliefUv = vertex.xy;  // one relief tile per patch
+  reliefUv = uv1.xy;  // one relief tile per patch
   vec2 axis = vec2(0.0);
   reliefWeight = wrinkleWeighting > 0.5 ? wrinkleStrength(uv0, du, dv, axis) : 1.0;
   foldAxis = axis;

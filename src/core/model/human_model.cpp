@@ -104,6 +104,7 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
                                                        static_cast<float>(description.colour.z()), 1.0f);
     parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
+  corner_splits_.resize(parts_.size());
   relief_tile_size_[0] = typicalPatchSize(skin_.patches());
   std::vector<BezierPatch> cloth;
   for (const DressedGarment& dressed : garments_) {
@@ -195,6 +196,12 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     part.evaluated = evaluate;
     part.patches = &patches;
     part.layout_id = tessellator.layoutId();
+    CornerSplit& corners = corner_splits_[p];
+    if (corners.layout_id != part.layout_id) {
+      splitPatchCorners(*part.mesh, tessellator.triangleCornerParameters(), corners.split);
+      corners.layout_id = part.layout_id;
+    }
+    part.corners = &corners.split;
     if (p > 0) {
       DressedGarment& dressed = garments_[p - 1];
       VertexCompression& compression = dressed.compression;

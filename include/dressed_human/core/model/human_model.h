@@ -16,6 +16,7 @@
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 #include "dressed_human/core/garments/garment.h"
 #include "dressed_human/core/relief/mesh_displacement.h"
+#include "dressed_human/core/surfaces/patch_corner_split.h"
 #include "dressed_human/core/surfaces/skin.h"
 #include "dressed_human/core/surfaces/tessellation.h"
 #include "dressed_human/core/relief/vertex_compression.h"
@@ -29,6 +30,10 @@ struct SurfacePart {
   ReliefKind relief;
   Eigen::Vector4f colour;     // RGBA, 0..1
   const TriangleMesh* mesh;   // owned by the HumanModel, valid until its next update()
+  // The vertices and triangles to draw: `mesh`'s, with shared vertices split where the patches
+  // meeting there give them different (u, v) (patch_corner_split.h): the relief texture is per
+  // patch. Per-vertex data (positions, weights, ...) is read at `corners->source`.
+  const PatchCornerSplit* corners = nullptr;
   // A closed surface with outward, counter-clockwise triangles (the skin): its inside never
   // shows, so a renderer may cull back faces -- half the triangles it rasterizes. Garments are
   // open (hems, sleeves, collar) and show their inside.
@@ -167,6 +172,11 @@ class HumanModel {
   };
   std::array<Displacement, 2> displacements_;  // by ReliefKind
   std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced
+  struct CornerSplit {
+    PatchCornerSplit split;
+    std::uint64_t layout_id = 0;  // of the layout it was split from
+  };
+  std::vector<CornerSplit> corner_splits_;  // per part
 };
 
 }  // namespace dressed_human
