@@ -14,7 +14,9 @@ The tool writes raw PNGs/CSVs into <build_dir>/relief_raw/; this script composes
   skin_mip_levels.png             normal map mip chain
   wrinkle_placement_walk.png      wrinkle placement over a walk (wrinkle_placement_walk tool): alpha
                                   behind the knee / inside the elbow / at the waist, pattern, h1
-Only the last figure: scripts/make_relief_figures.py <build_dir> wrinkle_placement
+  fold_strength_vs_flexion.png    the fold strength the renderer shows behind the knee and inside
+                                  the elbow against their bend over a walk cycle (same tool)
+Only the last two: scripts/make_relief_figures.py <build_dir> wrinkle_placement
 """
 import csv
 import os
@@ -181,7 +183,8 @@ def wrinkle_placement_figure():
     tool = os.path.join(BUILD, "wrinkle_placement_walk")
     if not os.path.exists(tool):
         sys.exit(f"{tool} not found: build first (cmake --build {BUILD} --target wrinkle_placement_walk)")
-    subprocess.run([tool, ROOT, RAW, "60"], check=True)
+    subprocess.run([tool, ROOT, RAW, "120"], check=True)
+    fold_strength_figure()
     rows = read_csv("wrinkle_walk.csv")
     tiles = read_csv("wrinkle_walk_tiles.csv")
     phase = np.array([float(r["phase"]) for r in rows])
@@ -200,7 +203,8 @@ def wrinkle_placement_figure():
         h1 = np.array([float(r[key + "_h1_mm"]) for r in rows])
         chain = rows[int(np.argmin(alpha))][key + "_chain"]
         middle.plot(phase, h1, color=colour, label=f"{label}: {chain}")
-    top.axhline(0.98, color="grey", linestyle=":", label="threshold 0.98 (no wrinkles above)")
+    threshold = float(read_csv("wrinkle_walk_options.csv")[0]["alpha_threshold"])
+    top.axhline(threshold, color="grey", linestyle=":", label=f"threshold {threshold:g} (no wrinkles above)")
     bend_axis.plot(phase, [float(r["l_knee_bend_deg"]) for r in rows], "--", color="C0", alpha=0.5)
     bend_axis.plot(phase, [float(r["l_elbow_bend_deg"]) for r in rows], "--", color="C3", alpha=0.5)
     bend_axis.set_ylabel("bend [deg] (dashed: left knee, left elbow)")
@@ -211,7 +215,7 @@ def wrinkle_placement_figure():
     top.grid(True, alpha=0.3)
     middle.set_xlabel("phase of the walk cycle")
     middle.set_ylabel("wrinkle amplitude h1 [mm]")
-    middle.set_title("Amplitude h1(alpha / 0.98) of the region's pattern (legend: chain at the lowest alpha)")
+    middle.set_title(f"Amplitude h1(alpha / {threshold:g}) of the region's pattern (legend: chain at the lowest alpha)")
     middle.legend(fontsize=7, loc="upper left")
     middle.grid(True, alpha=0.3)
     for index, tile in enumerate(tiles):
@@ -228,6 +232,51 @@ def wrinkle_placement_figure():
     fig.savefig(os.path.join(OUT, "wrinkle_placement_walk.png"), dpi=110)
     plt.close(fig)
     print("wrote", os.path.join(OUT, "wrinkle_placement_walk.png"))
+
+
+def fold_strength_figure():
+    """The shown fold strength (fraction of the fold tile's height drawn) behind the left knee and
+    inside the left elbow against the joint's bend, over one walk cycle, and its largest change
+    between two frames at rviz's 30 fps."""
+    rows = read_csv("wrinkle_walk_strength.csv")
+    time = np.array([float(r["time_s"]) for r in rows])
+    period = time[1] * len(rows)
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.6))
+    joints = [("pants_l_knee_back", "l_knee_bend_deg", "behind the left knee (pants)", "C0"),
+              ("jacket_l_elbow_inside", "l_elbow_bend_deg", "inside the left elbow (jacket)", "C3")]
+    for axis, (region, bend_key, label, colour) in zip(axes[:2], joints):
+        bend = np.array([float(r[bend_key]) for r in rows] + [float(rows[0][bend_key])])
+        mean = np.array([float(r[region + "_mean"]) for r in rows] + [float(rows[0][region + "_mean"])])
+        largest = np.array([float(r[region + "_max"]) for r in rows] + [float(rows[0][region + "_max"])])
+        per_frame = np.max(np.abs(np.diff(mean))) * (1.0 / 30.0) / (period / len(rows))
+        axis.plot(bend, mean, "-", color=colour, label="mean over the region")
+        axis.plot(bend, largest, "--", color=colour, alpha=0.6, label="largest in the region")
+        axis.scatter(bend[:-1], mean[:-1], c=time, cmap="viridis", s=10, zorder=3)
+        axis.set_xlabel("bend [deg] (angle between the two bones)")
+        axis.set_ylabel("fold strength shown (0 smooth, 1 full fold)")
+        axis.set_ylim(-0.03, 1.05)
+        axis.set_title(f"{label}\nlargest change between frames at 30 fps: {per_frame:.3f}", fontsize=10)
+        axis.grid(True, alpha=0.3)
+        axis.legend(fontsize=8, loc="lower right")
+    phase = np.array([float(r["phase"]) for r in rows])
+    over_time = axes[2]
+    bends = over_time.twinx()
+    for region, bend_key, label, colour in joints:
+        over_time.plot(phase, [float(r[region + "_mean"]) for r in rows], color=colour, label=label)
+        bends.plot(phase, [float(r[bend_key]) for r in rows], "--", color=colour, alpha=0.5)
+    over_time.set_xlabel("phase of the walk cycle (dots in the other panels: time, dark to light)")
+    over_time.set_ylabel("fold strength shown (mean)")
+    bends.set_ylabel("bend [deg] (dashed)")
+    over_time.legend(fontsize=8, loc="upper left")
+    over_time.grid(True, alpha=0.3)
+    options = read_csv("wrinkle_walk_options.csv")[0]
+    fig.suptitle("Folds grow with the bend and fade as the joint straightens: walk.yaml, per-vertex strength as "
+                 f"relief_surface.vert computes it (threshold alpha {float(options['alpha_threshold']):g}, "
+                 f"saturation {float(options['saturation_alpha']):g})")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "fold_strength_vs_flexion.png"), dpi=110)
+    plt.close(fig)
+    print("wrote", os.path.join(OUT, "fold_strength_vs_flexion.png"))
 
 
 if __name__ == "__main__":

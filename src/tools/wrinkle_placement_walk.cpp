@@ -2,7 +2,10 @@
 // region of the pants and the jacket (wrinkle_placement.h) with the chosen pattern and
 // amplitude, the knee and elbow bend, and the shaded pose wrinkle tile behind the left knee at
 // the least, a middle and the most compressed pose. scripts/make_relief_figures.py draws
-// docs/relief/wrinkle_placement_walk.png from this.
+// docs/relief/wrinkle_placement_walk.png from this. wrinkle_walk_strength.csv: the wrinkle
+// strength the renderer shows (vertex_compression.h: the fraction of the fold tile's height
+// drawn) at each region's sample points, mean and largest, against the knee and elbow bend, for
+// docs/relief/fold_strength_vs_flexion.png.
 //
 // Usage: wrinkle_placement_walk <source_directory> <output_directory> [poses (default 60)]
 #include "dressed_human/core/skeleton/body_description.h"
@@ -11,6 +14,7 @@
 #include "dressed_human/core/motion/motion_evaluator.h"
 #include "dressed_human/core/motion/motion_file.h"
 #include "dressed_human/core/io/png_writer.h"
+#include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/relief/wrinkle_placement.h"
 
 #include <algorithm>
@@ -30,6 +34,24 @@ double bendDegrees(const SkeletonPose& pose, const Skeleton& skeleton, const cha
   const Eigen::Vector3d a = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(upper))].rotation * Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d b = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(lower))].rotation * Eigen::Vector3d::UnitZ();
   return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+// The shown strength at one region's samples (what relief_surface.vert computes at vertices
+// there): mean and largest.
+std::pair<double, double> shownStrength(const WrinklePlacement& placement, const std::vector<BezierPatch>& posed,
+                                        const CompressionRegion& region) {
+  const WrinkleStrengthConstants constants = VertexCompression(placement.options()).strengthConstants();
+  double sum = 0.0, largest = 0.0;
+  for (const SurfacePoint& at : region.samples) {
+    const PatchDerivatives rest = placement.restPatches()[at.patch].derivatives(at.u, at.v);
+    const PatchDerivatives now = posed[at.patch].derivatives(at.u, at.v);
+    const double strength =
+        vertexStretchAt(inverseRestMetric(rest.d_du, rest.d_dv), now.d_du.cast<float>(), now.d_dv.cast<float>(), constants)
+            .strength;
+    sum += strength;
+    largest = std::max(largest, strength);
+  }
+  return {sum / static_cast<double>(region.samples.size()), largest};
 }
 
 int run(const std::string& source, const std::string& directory, int count) {
@@ -54,6 +76,17 @@ int run(const std::string& source, const std::string& directory, int count) {
     }
   }
   csv << "\n";
+  std::ofstream options(directory + "/wrinkle_walk_options.csv");
+  options << "alpha_threshold,saturation_alpha\n"
+          << placements[0].options().alpha_threshold << "," << placements[0].options().saturation_alpha << "\n";
+  std::ofstream shown(directory + "/wrinkle_walk_strength.csv");
+  shown << "pose,phase,time_s,l_knee_bend_deg,l_elbow_bend_deg";
+  for (std::size_t g = 0; g < names.size(); ++g) {
+    for (const CompressionRegion& region : placements[g].regions()) {
+      shown << "," << names[g] << "_" << region.name << "_mean," << names[g] << "_" << region.name << "_max";
+    }
+  }
+  shown << "\n";
   std::vector<SkeletonPose> poses(static_cast<std::size_t>(count));
   std::vector<double> knee_alpha;
   for (int k = 0; k < count; ++k) {
@@ -64,14 +97,22 @@ int run(const std::string& source, const std::string& directory, int count) {
     const SkeletonPose& pose = poses[static_cast<std::size_t>(k)];
     csv << k << "," << static_cast<double>(k) / count << "," << bendDegrees(pose, skeleton, "l_hip", "l_knee") << ","
         << bendDegrees(pose, skeleton, "l_shoulder", "l_elbow");
+    shown << k << "," << static_cast<double>(k) / count << "," << evaluator.motion().period * k / count << ","
+          << bendDegrees(pose, skeleton, "l_hip", "l_knee") << ","
+          << bendDegrees(pose, skeleton, "l_shoulder", "l_elbow");
     for (std::size_t g = 0; g < names.size(); ++g) {
       garments[g].pose(pose);
       for (const RegionCompression& region : placements[g].measureRegions(garments[g].patches(), pose)) {
         csv << "," << region.alpha << "," << region.wrinkles.chain << "," << region.wrinkles.amplitude * 1000.0;
         if (g == 0 && region.name == "l_knee_back") knee_alpha.push_back(region.alpha);
       }
+      for (const CompressionRegion& region : placements[g].regions()) {
+        const auto [mean, largest] = shownStrength(placements[g], garments[g].patches(), region);
+        shown << "," << mean << "," << largest;
+      }
     }
     csv << "\n";
+    shown << "\n";
   }
 
   // The pose wrinkle map's tile behind the left knee at three poses.
@@ -103,7 +144,7 @@ int run(const std::string& source, const std::string& directory, int count) {
     tiles << name << "," << k << "," << knee_alpha[k] << "," << map.layouts[patch].chain << "," << patch << ","
           << tile.maximumHeight() * 1000.0 << "\n";
   }
-  std::cout << "wrote " << directory << "/wrinkle_walk.csv, wrinkle_walk_tiles.csv and 3 tiles\n";
+  std::cout << "wrote " << directory << "/wrinkle_walk.csv, wrinkle_walk_strength.csv, wrinkle_walk_tiles.csv and 3 tiles\n";
   return 0;
 }
 

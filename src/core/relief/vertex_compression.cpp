@@ -105,14 +105,15 @@ void VertexCompression::prepare(const TriangleMesh& mesh, const std::vector<Bezi
     const double u = std::clamp(static_cast<double>(uv_[i].x()), 0.0, 1.0);
     const double v = std::clamp(static_cast<double>(uv_[i].y()), 0.0, 1.0);
     const PatchDerivatives d = rest_patches[vertex_patch_[i]].derivatives(u, v);
-    const double e = d.d_du.squaredNorm(), f = d.d_du.dot(d.d_dv), g = d.d_dv.squaredNorm();
-    const double det = e * g - f * f;
-    if (!(det > kSingularMetric * e * g)) {
-      inverse_rest_metric_[i].setZero();  // a pole: no stretch defined, reported as alpha = 1
-      continue;
-    }
-    inverse_rest_metric_[i] = Eigen::Vector4d(g / det, -f / det, e / det, 1.0 / det).cast<float>();
+    inverse_rest_metric_[i] = dressed_human::inverseRestMetric(d.d_du, d.d_dv);  // not the accessor
   }
+}
+
+Eigen::Vector4f inverseRestMetric(const Eigen::Vector3d& rest_du, const Eigen::Vector3d& rest_dv) {
+  const double e = rest_du.squaredNorm(), f = rest_du.dot(rest_dv), g = rest_dv.squaredNorm();
+  const double det = e * g - f * f;
+  if (!(det > kSingularMetric * e * g)) return Eigen::Vector4f::Zero();  // a pole: reported as alpha = 1
+  return Eigen::Vector4d(g / det, -f / det, e / det, 1.0 / det).cast<float>();
 }
 
 VertexStretch vertexStretchAt(const Eigen::Vector4f& inverse_rest_metric, const Eigen::Vector3f& d_du,

@@ -41,6 +41,9 @@ struct VertexStretch {
   /// direction (no preferred fold direction) or at a pole. Interpolates across a triangle.
   Eigen::Vector2f fold_axis = Eigen::Vector2f::Zero();
 };
+/// G_rest^-1 as (a, b, c) = [[a, b], [b, c]] and det(G_rest^-1) from the rest dF/du, dF/dv; all
+/// zero at a pole (VertexCompression::inverseRestMetric).
+Eigen::Vector4f inverseRestMetric(const Eigen::Vector3d& rest_du, const Eigen::Vector3d& rest_dv);
 VertexStretch vertexStretchAt(const Eigen::Vector4f& inverse_rest_metric, const Eigen::Vector3f& d_du,
                               const Eigen::Vector3f& d_dv, const WrinkleStrengthConstants& constants);
 
