@@ -16,7 +16,11 @@ The tool writes raw PNGs/CSVs into <build_dir>/relief_raw/; this script composes
                                   behind the knee / inside the elbow / at the waist, pattern, h1
   fold_strength_vs_flexion.png    the fold strength the renderer shows behind the knee and inside
                                   the elbow against their bend over a walk cycle (same tool)
-Only the last two: scripts/make_relief_figures.py <build_dir> wrinkle_placement
+  fold_closeups.png               folds inside the elbow and behind the knee, bent and straight:
+                                  exact folds as displaced geometry, the bump-mapped smooth folds
+                                  drawn now, and what was drawn before issue 21 (fold_closeups tool)
+Only the placement figures: scripts/make_relief_figures.py <build_dir> wrinkle_placement
+Only the close-ups:         scripts/make_relief_figures.py <build_dir> fold_closeups
 """
 import csv
 import os
@@ -147,6 +151,7 @@ def main():
     grid(mips, [m.replace("skin_normal_", "") for m in mips], "skin_mip_levels.png", len(mips),
          "Tangent-space normal map mip chain (gradient box filter)", cell=2.4)
     wrinkle_placement_figure()
+    fold_closeups_figure()
     print("figures in", OUT)
 
 
@@ -279,8 +284,41 @@ def fold_strength_figure():
     print("wrote", os.path.join(OUT, "fold_strength_vs_flexion.png"))
 
 
+def fold_closeups_figure():
+    """Rows: elbow bent / straight, knee bent / straight (the walk's most and least bent poses);
+    columns: exact folds displaced, the smooth folds as bump mapping, before issue 21."""
+    os.makedirs(RAW, exist_ok=True)
+    tool = os.path.join(BUILD, "fold_closeups")
+    if not os.path.exists(tool):
+        sys.exit(f"{tool} not found: build first (cmake --build {BUILD} --target fold_closeups)")
+    subprocess.run([tool, ROOT, RAW], check=True)
+    rows = read_csv("closeups.csv")
+    columns = [("exact", "exact folds, displaced geometry"), ("bump", "smooth folds, bump mapped (now)"),
+               ("before", "before issue 21: one Y-Y tile, not oriented")]
+    fig, axes = plt.subplots(len(rows), len(columns), figsize=(3.0 * len(columns), 3.0 * len(rows) + 0.6), squeeze=False)
+    for r, row in enumerate(rows):
+        place = "inside the left elbow (jacket)" if row["joint"] == "elbow" else "behind the left knee (pants)"
+        for c, (method, title) in enumerate(columns):
+            axis = axes[r][c]
+            axis.imshow(mpimg.imread(os.path.join(RAW, f"closeup_{row['joint']}_{row['state']}_{method}.png")))
+            axis.set_xticks([])
+            axis.set_yticks([])
+            if r == 0:
+                axis.set_title(title, fontsize=9)
+            if c == 0:
+                axis.set_ylabel(f"{place}\n{row['state']}, bend {float(row['bend_deg']):.0f} deg", fontsize=8)
+    fig.suptitle("Garment folds over the walk cycle's most and least bent pose (core rasterizer, level 64 mesh;\n"
+                 "bump mapping here tilts per-vertex normals, the display's shader does it per pixel)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "fold_closeups.png"), dpi=100)
+    plt.close(fig)
+    print("wrote", os.path.join(OUT, "fold_closeups.png"))
+
+
 if __name__ == "__main__":
     if len(sys.argv) > 2 and sys.argv[2] == "wrinkle_placement":
         wrinkle_placement_figure()
+    elif len(sys.argv) > 2 and sys.argv[2] == "fold_closeups":
+        fold_closeups_figure()
     else:
         main()
