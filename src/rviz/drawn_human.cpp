@@ -40,9 +40,12 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   // Eq. 5: TF carries the URDF's offsets (its own body shape in them); the display's shape on top.
   kinematics_.composeFromTf(bone_source_.root(), bone_source_.bonesInParent(), bones_);
   if (!posesDrawable(status, frames.getFixedFrame())) return false;
+  // Visibility first (by where the human was last frame): the model skips the wrinkles' per-vertex
+  // work while they are not drawn, and must do it in the very frame they are drawn again.
+  updateReliefVisibility(camera, hide_unseen_relief);
+  model_.setWrinklesWanted(visual_.reliefShown(ReliefKind::kCloth));
   model_.update(bone_source_.root(), bones_, lod);
   visual_.update(model_.parts());
-  updateReliefVisibility(camera, hide_unseen_relief);
   visual_.updateSkeleton(kinematics_, bones_);
   return true;
 }
@@ -82,7 +85,10 @@ void DrawnHuman::updateReliefVisibility(const Ogre::Camera* camera, bool judged)
   }
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
     std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
-    if (visibility) visual_.setReliefShown(kind, judged ? visibility->update(pixels_per_metre) : true);
+    if (!visibility) continue;
+    const bool shown = judged ? visibility->update(pixels_per_metre) : true;
+    visual_.setReliefShown(kind, shown);
+    visual_.setReliefFade(kind, judged ? static_cast<float>(visibility->fade()) : 1.0f);
   }
 }
 

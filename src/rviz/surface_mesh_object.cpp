@@ -52,7 +52,7 @@ void SurfaceMeshObject::setBounds(const Eigen::AlignedBox3f& bounds) {
   object_->getParentSceneNode()->needUpdate();
 }
 
-void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit& corners,
+void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit* corners,
                                const std::vector<float>* relief_weight, const std::vector<Eigen::Vector2f>* fold_axis,
                                const Eigen::AlignedBox3f& bounds) {
   layout_id_ = 0;
@@ -63,14 +63,16 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit&
                                 std::to_string(relief_weight ? relief_weight->size() : vertices) + " relief weights and " +
                                 std::to_string(fold_axis ? fold_axis->size() : vertices) + " fold axes");
   }
-  checkCorners(corners, vertices);
-  if (!beginFilling(corners.source.size(), corners.indices.size())) return;
-  for (std::size_t i = 0; i < corners.source.size(); ++i) {
-    const std::uint32_t v = corners.source[i];
+  if (corners) checkCorners(*corners, vertices);
+  const std::vector<std::uint32_t>& indices = corners ? corners->indices : mesh.indices;
+  const std::size_t count = corners ? corners->source.size() : vertices;
+  if (!beginFilling(count, indices.size())) return;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t v = corners ? corners->source[i] : static_cast<std::uint32_t>(i);
     const Eigen::Vector3f& p = mesh.positions[v];
     const Eigen::Vector3f& n = mesh.normals[v];
     const Eigen::Vector3f& t = mesh.tangents_u[v];
-    const Eigen::Vector2f& uv = corners.uv[i];
+    const Eigen::Vector2f& uv = corners ? corners->uv[i] : mesh.uv[v];
     object_->position(p.x(), p.y(), p.z());
     object_->normal(n.x(), n.y(), n.z());
     object_->tangent(t.x(), t.y(), t.z());
@@ -78,15 +80,15 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit&
     const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[v] : Eigen::Vector2f::Zero();
     object_->textureCoord(relief_weight != nullptr ? (*relief_weight)[v] : 1.0f, axis.x(), axis.y());
   }
-  for (const std::uint32_t index : corners.indices) object_->index(index);
+  for (const std::uint32_t index : indices) object_->index(index);
   object_->end();
   setBounds(bounds);
 }
 
-void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCornerSplit& corners,
+void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCornerSplit* corners,
                                      const std::vector<Eigen::Vector4f>* inverse_rest_metric, std::uint64_t layout_id,
                                      const Eigen::AlignedBox3f& bounds) {
-  if (layout_id == 0 || layout_id != layout_id_) {
+  if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_) {
     const std::size_t vertices = layout.uv.size();
     if (layout.vertex_patch.size() != vertices ||
         (inverse_rest_metric != nullptr && inverse_rest_metric->size() != vertices)) {
@@ -95,19 +97,23 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCorn
                                   std::to_string(inverse_rest_metric ? inverse_rest_metric->size() : vertices) +
                                   " rest metrics");
     }
-    checkCorners(corners, vertices);
-    if (!beginFilling(corners.source.size(), corners.indices.size())) return;
-    for (std::size_t i = 0; i < corners.source.size(); ++i) {
+    if (corners) checkCorners(*corners, vertices);
+    const std::vector<std::uint32_t>& indices = corners ? corners->indices : layout.indices;
+    const std::size_t count = corners ? corners->source.size() : vertices;
+    if (!beginFilling(count, indices.size())) return;
+    for (std::size_t i = 0; i < count; ++i) {
       // The owner's (u, v, patch) for the position, so that copies evaluate to the same bits.
-      const std::uint32_t v = corners.source[i];
+      const std::uint32_t v = corners ? corners->source[i] : static_cast<std::uint32_t>(i);
       object_->position(layout.uv[v].x(), layout.uv[v].y(), static_cast<float>(layout.vertex_patch[v]));
       const Eigen::Vector4f metric = inverse_rest_metric ? (*inverse_rest_metric)[v] : Eigen::Vector4f::Zero();
       object_->textureCoord(metric.x(), metric.y(), metric.z(), metric.w());
-      object_->textureCoord(corners.uv[i].x(), corners.uv[i].y());
+      const Eigen::Vector2f& uv = corners ? corners->uv[i] : layout.uv[v];
+      object_->textureCoord(uv.x(), uv.y());
     }
-    for (const std::uint32_t index : corners.indices) object_->index(index);
+    for (const std::uint32_t index : indices) object_->index(index);
     object_->end();
     layout_id_ = layout_id;  // only now: a layout that failed above is tried again next frame
+    split_sent_ = corners != nullptr;
   }
   setBounds(bounds);
 }

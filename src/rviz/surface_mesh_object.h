@@ -27,18 +27,19 @@ class SurfaceMeshObject {
   SurfaceMeshObject& operator=(const SurfaceMeshObject&) = delete;
 
   // Vertices and triangles as `corners` says (SurfacePart::corners: the mesh's, shared vertices
-  // split per patch), each with its patch's (u, v). Second texture coordinate, per vertex:
+  // split per patch), each with its patch's (u, v); null: the mesh's own (fewer vertices, for a
+  // surface drawn without its relief texture). Second texture coordinate, per vertex:
   // `relief_weight` (how much relief shows; null: 1) and `fold_axis` (which way garment folds
   // run, SurfacePart::fold_axis; null: zeros). `bounds`: encloses the posed surface
   // (SurfacePart::bounds). Throws std::invalid_argument for per-vertex data of another size.
-  void update(const TriangleMesh& mesh, const PatchCornerSplit& corners, const std::vector<float>* relief_weight,
+  void update(const TriangleMesh& mesh, const PatchCornerSplit* corners, const std::vector<float>* relief_weight,
               const std::vector<Eigen::Vector2f>* fold_axis, const Eigen::AlignedBox3f& bounds);
   // Per vertex the owner's (u, v, patch) as the position, the garment's rest metric
   // (VertexCompression::inverseRestMetric; null: zeros) as texture coordinate 0 and the
-  // vertex's own patch (u, v) (`corners`) as texture coordinate 1. Nothing is sent while
-  // `layout_id` stays the same; `bounds` (the posed surface's) is set every frame, since the
+  // vertex's own patch (u, v) (`corners`, or null as above) as texture coordinate 1. Nothing is
+  // sent while `layout_id` and whether `corners` is given stay the same; `bounds` (the posed surface's) is set every frame, since the
   // (u, v, patch) positions say nothing about where the surface is.
-  void updateLayout(const TriangleMesh& layout, const PatchCornerSplit& corners,
+  void updateLayout(const TriangleMesh& layout, const PatchCornerSplit* corners,
                     const std::vector<Eigen::Vector4f>* inverse_rest_metric, std::uint64_t layout_id,
                     const Eigen::AlignedBox3f& bounds);
   void setMaterial(const std::string& material);
@@ -53,6 +54,7 @@ class SurfaceMeshObject {
   std::size_t index_count_ = 0;
   std::size_t rebuild_count_ = 0;  // buffer (re)creations
   std::uint64_t layout_id_ = 0;    // of the layout the buffers hold; 0: evaluated vertices
+  bool split_sent_ = false;        // the buffers hold the corner split of that layout
   bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
   void setBounds(const Eigen::AlignedBox3f& bounds);
   static void checkCorners(const PatchCornerSplit& corners, std::size_t vertices);

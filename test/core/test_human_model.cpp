@@ -209,6 +209,18 @@ TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
   };
   EXPECT_LT(strongest(0.0), 1e-3f) << "no wrinkles at rest";
   EXPECT_GT(strongest(1.2), 0.5f) << "wrinkles behind a knee bent 70 degrees";
+  // Every split vertex (SurfacePart::corners) copies a mesh vertex; the fold axes come along.
+  const SurfacePart& pants = model.parts()[1];
+  ASSERT_NE(pants.corners, nullptr);
+  ASSERT_NE(pants.fold_axis, nullptr);
+  EXPECT_EQ(pants.fold_axis->size(), pants.mesh->vertexCount());
+  EXPECT_GE(pants.corners->source.size(), pants.mesh->vertexCount());
+  // A renderer not drawing the wrinkles (too small to see) is spared their per-vertex work.
+  model.setWrinklesWanted(false);
+  EXPECT_EQ(strongest(1.2), -1.0f);
+  EXPECT_EQ(model.parts()[1].fold_axis, nullptr);
+  model.setWrinklesWanted(true);
+  EXPECT_GT(strongest(1.2), 0.5f);
 }
 
 // VertexEvaluation::kRenderer hands the renderer the layout, the posed patches and the rest

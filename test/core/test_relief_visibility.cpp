@@ -69,3 +69,40 @@ TEST(ReliefVisibility, TheModelsTileSizesAreItsPatchSizes) {
 
 }  // namespace
 }  // namespace dressed_human
+
+namespace dressed_human {
+namespace {
+
+// The relief fades in and out instead of popping: flat (0) wherever the switch turns it on or
+// off, full from kFullPixels, continuous and monotone between, whichever way the camera moves.
+TEST(ReliefVisibility, FadesToNothingWhereItIsSwitched) {
+  ReliefVisibility visibility(0.01);  // features 1 cm apart: pixels = pixels_per_metre / 100
+  EXPECT_EQ(visibility.fade(), 1.0);
+  double previous = 0.0;  // from 0 px
+  for (int step = 0; step <= 800; ++step) {  // approaching: 0 to 8 px
+    const double pixels = step * 0.01;
+    const bool shown = visibility.update(pixels * 100.0);
+    if (!shown || pixels <= ReliefVisibility::kShowPixels) {
+      EXPECT_EQ(visibility.fade(), 0.0) << pixels;
+    }
+    if (pixels >= ReliefVisibility::kFullPixels) {
+      EXPECT_EQ(visibility.fade(), 1.0) << pixels;
+    }
+    EXPECT_GE(visibility.fade(), previous);
+    EXPECT_LT(visibility.fade() - previous, 0.01) << "a jump at " << pixels << " px";
+    previous = visibility.fade();
+  }
+  for (int step = 800; step >= 0; --step) {  // leaving
+    const double pixels = step * 0.01;
+    const bool shown = visibility.update(pixels * 100.0);
+    if (!shown) {
+      EXPECT_EQ(visibility.fade(), 0.0) << pixels;
+    }
+    EXPECT_LE(visibility.fade(), previous);
+    EXPECT_LT(previous - visibility.fade(), 0.01) << "a jump at " << pixels << " px";
+    previous = visibility.fade();
+  }
+}
+
+}  // namespace
+}  // namespace dressed_human

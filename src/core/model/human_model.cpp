@@ -212,7 +212,11 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
         compression.prepare(*part.mesh, dressed.rest_patches);
         dressed.compressed_layout = part.layout_id;
       }
-      if (evaluate) {
+      if (evaluate && !wrinkles_wanted_ && !displacement.map) {
+        part.relief_weight = nullptr;
+        part.fold_axis = nullptr;
+        part.inverse_rest_metric = nullptr;
+      } else if (evaluate) {
         dressed.wrinkle_weights.resize(part.mesh->vertexCount());
         dressed.fold_axes.resize(part.mesh->vertexCount());
         compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data(), dressed.fold_axes.data());

@@ -109,6 +109,11 @@ class HumanModel {
   void setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling, float height_to_tile,
                        float amplitude, std::shared_ptr<const FoldTiles> folds = nullptr);
 
+  // false: the garments' per-vertex wrinkle strength and fold axis are not computed (relief_weight
+  // and fold_axis null) unless their relief is displaced: for a renderer not drawing the wrinkle
+  // relief (too small to see). From the next update() on; true by default.
+  void setWrinklesWanted(bool wanted) { wrinkles_wanted_ = wanted; }
+
   // From the next update() on; kCpu by default.
   void setVertexEvaluation(VertexEvaluation evaluation) { vertex_evaluation_ = evaluation; }
   VertexEvaluation vertexEvaluation() const { return vertex_evaluation_; }
@@ -165,6 +170,7 @@ class HumanModel {
   std::vector<int> uniform_levels_;
   std::vector<int> wanted_levels_;  // scratch: what the screen error asks for, per patch
   VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
+  bool wrinkles_wanted_ = true;
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;
     std::shared_ptr<const FoldTiles> folds;

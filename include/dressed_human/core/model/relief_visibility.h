@@ -4,7 +4,11 @@
 // that cover fewer than about two pixels are averaged away by the normal map's mip chain anyway:
 // sampling it then buys a flat normal at the fragment shader's full price. The switch has
 // hysteresis (off below kHidePixels, on again above kShowPixels), so a human walking at the
-// threshold distance does not pop between the two looks every frame.
+// threshold distance does not pop between the two looks every frame. Nor does the relief pop on
+// or off at the switch: fade() brings it in from nothing at kShowPixels to full at kFullPixels
+// (a renderer scales the relief's strength by it), so it is already flat where it is switched
+// off and still flat where it is switched on, and it fades out as features near pixel size,
+// where a normal map would shimmer.
 
 #include <vector>
 
@@ -24,6 +28,7 @@ class ReliefVisibility {
  public:
   static constexpr double kHidePixels = 2.0;
   static constexpr double kShowPixels = 2.5;
+  static constexpr double kFullPixels = 6.0;
 
   // `feature_size`: metres on the surface between neighbouring features of the relief (> 0).
   explicit ReliefVisibility(double feature_size);
@@ -32,11 +37,15 @@ class ReliefVisibility {
   // returns shown().
   bool update(double pixels_per_metre);
   bool shown() const { return shown_; }
+  // How much of the relief to draw: 0 up to kShowPixels, 1 from kFullPixels, a smoothstep
+  // between (by the last update; 1 before any).
+  double fade() const { return fade_; }
   double featureSize() const { return feature_size_; }
 
  private:
   double feature_size_;
   bool shown_ = true;
+  double fade_ = 1.0;
 };
 
 }  // namespace dressed_human
