@@ -33,10 +33,11 @@ def report(table, markdown_path):
             f.write(table + "\n")
 
 
-def start_frozen_human(root, env, caller):
+def start_frozen_human(root, env, caller, start_phase=1.0):
     """Human 0 (namespace human_0, frames suffixed _0) standing at the origin in one pose of the
-    shipped walk (speed_factor 0): its robot_description on the master of `env`, and its
-    skeleton_publisher process, started. `caller`: this program's name on the master."""
+    shipped walk (speed_factor 0, at the node's start_phase, radians of the cycle): its
+    robot_description on the master of `env`, and its skeleton_publisher process, started.
+    `caller`: this program's name on the master."""
     import rosgraph  # after ROS_MASTER_URI is known to this process
     import time
     master = rosgraph.Master(caller, master_uri=env["ROS_MASTER_URI"])
@@ -45,6 +46,6 @@ def start_frozen_human(root, env, caller):
     master.setParam("/human_0/robot_description", text)
     process = start([os.path.join(root, "build", "devel", "lib", "dressed_human", "skeleton_publisher"),
                      "__ns:=/human_0", "_motion_file:=" + os.path.join(root, "config", "motions", "walk.yaml"),
-                     "_speed_factor:=0.0", "_start_phase:=1.0", "_publish_joint_states:=false"], env)
+                     "_speed_factor:=0.0", "_start_phase:=%g" % start_phase, "_publish_joint_states:=false"], env)
     time.sleep(2)
     return process

@@ -61,6 +61,7 @@ $PY bench/rviz_scaling.py --counts 1 5 10 20 30 --distances 12 18 30 --markdown 
 $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
 rm -rf docs/relief_switch
 $PY bench/relief_switch.py --chart docs/relief_switch.png --images docs/relief_switch --markdown docs/relief_switch.md
+$PY bench/relief_flicker.py --markdown docs/relief_flicker.md
 
 step "docs/EVALUATION.md and the README's Speed section"
 $PY scripts/make_evaluation.py "$RESULTS"

@@ -286,10 +286,12 @@ void DressedHumanDisplay::pollReliefMaps() {
     const std::string status = done.kind == ReliefKind::kSkin ? "Skin relief" : "Wrinkle relief";
     if (done.map) {
       normal_maps_[done.kind == ReliefKind::kSkin ? 0 : 1] = done;
-      for (auto& human : humans_) {
-        human.second->visual().setNormalMap(done);
+      try {
+        for (auto& human : humans_) human.second->visual().setNormalMap(done);
+        status_.clear(status);
+      } catch (const std::exception& error) {  // the texture (ReliefMaterial::setNormalMap)
+        status_.error(status, error.what());
       }
-      status_.clear(status);
     } else {
       status_.error(status, done.error);
     }

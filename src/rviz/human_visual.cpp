@@ -53,14 +53,14 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     }
     // Split shared vertices only where a relief texture is drawn: they cost vertices (+27 % at
     // level 8, +118 % at level 2), and a relief too small to see is not drawn.
-    const PatchCornerSplit* corners = relief_shown_[source.relief == ReliefKind::kSkin ? 0 : 1] ? source.corners : nullptr;
+    const PatchCornerSplit* corners = relief_shown_[slot(source.relief)] ? source.corners : nullptr;
     if (source.evaluated) {
       part.mesh->update(*source.mesh, corners, source.relief_weight, source.fold_axis, source.bounds);
       continue;
     }
     part.material->setPatches(*source.patches);
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
-    const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[1];
+    const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[slot(ReliefKind::kCloth)];
     part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
     part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.layout_id, source.bounds);
   }
@@ -90,7 +90,7 @@ void HumanVisual::setReliefStrength(ReliefKind kind, float strength) {
 }
 
 void HumanVisual::setReliefFade(ReliefKind kind, float fade) {
-  float& current = relief_fade_[kind == ReliefKind::kSkin ? 0 : 1];
+  float& current = relief_fade_[slot(kind)];
   // Every frame otherwise, per part: a constant lookup by name. Steps of 1/200 do not show.
   if (std::abs(fade - current) < 0.005f && (fade > 0.0f) == (current > 0.0f) && (fade < 1.0f) == (current < 1.0f)) return;
   current = fade;
@@ -101,11 +101,11 @@ void HumanVisual::setReliefFade(ReliefKind kind, float fade) {
 
 float HumanVisual::reliefStrength(ReliefKind kind) const {
   return (kind == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_) *
-         relief_fade_[kind == ReliefKind::kSkin ? 0 : 1];
+         relief_fade_[slot(kind)];
 }
 
 void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
-  relief_shown_[kind == ReliefKind::kSkin ? 0 : 1] = shown;
+  relief_shown_[slot(kind)] = shown;
   for (Part& part : parts_) {
     if (part.relief == kind) part.material->setReliefShown(shown);
   }
@@ -127,7 +127,7 @@ void HumanVisual::setNormalMap(const FinishedReliefMap& finished) {
 void HumanVisual::applyMaps(Part& part) const {
   const NormalMap& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
   part.material->setReliefStrength(reliefStrength(part.relief));
-  part.material->setReliefShown(relief_shown_[part.relief == ReliefKind::kSkin ? 0 : 1]);
+  part.material->setReliefShown(relief_shown_[slot(part.relief)]);
   if (map.width > 0) {
     part.material->setNormalMap(map.bytes, map.channels, map.width, map.height);
   }

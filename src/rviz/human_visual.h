@@ -32,7 +32,7 @@ class HumanVisual {
   void setReliefStrength(ReliefKind kind, float strength);
   // false: parts of `kind` drawn with the plain material (ReliefMaterial::setReliefShown).
   void setReliefShown(ReliefKind kind, bool shown);
-  bool reliefShown(ReliefKind kind) const { return relief_shown_[kind == ReliefKind::kSkin ? 0 : 1]; }
+  bool reliefShown(ReliefKind kind) const { return relief_shown_[slot(kind)]; }
   // Scales the relief strength of parts of `kind` (ReliefVisibility::fade: 0 to 1 with distance).
   void setReliefFade(ReliefKind kind, float fade);
   // A finished map's texture (3 channels for the skin, 4 for the garments' fold tiles), tiled once
@@ -67,6 +67,7 @@ class HumanVisual {
   std::array<bool, 2> relief_shown_{{true, true}};  // by ReliefKind
   std::array<float, 2> relief_fade_{{1.0f, 1.0f}};  // by ReliefKind
   float reliefStrength(ReliefKind kind) const;  // the user's times the fade
+  static std::size_t slot(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }  // in the arrays above
   NormalMap skin_map_, cloth_map_;
   bool visible_ = true;
   std::unique_ptr<SkeletonVisual> skeleton_;

@@ -70,6 +70,16 @@ struct ReliefMaterial::SharedTexture {
 namespace {
 
 std::map<const void*, std::weak_ptr<ReliefMaterial::SharedTexture>> shared_textures;  // rviz's thread only
+
+// Mip levels of the normal-map textures: Ogre's full chain, or none when the environment says
+// DRESSED_HUMAN_RELIEF_MIPMAPS=0 (bench/relief_flicker.py measures what the chain is worth).
+int normalMapMipmaps() {
+  const char* setting = std::getenv("DRESSED_HUMAN_RELIEF_MIPMAPS");
+  if (setting == nullptr || std::string(setting) == "1") return Ogre::MIP_DEFAULT;
+  if (std::string(setting) == "0") return 0;
+  throw std::invalid_argument("DRESSED_HUMAN_RELIEF_MIPMAPS='" + std::string(setting) +
+                              "' must be 0 (no mipmaps) or 1 (the default, a full chain)");
+}
 std::size_t texture_count = 0;  // for unique Ogre names
 
 }  // namespace
@@ -261,7 +271,7 @@ void ReliefMaterial::setNormalMap(const std::shared_ptr<const std::vector<std::u
     image.loadDynamicImage(const_cast<Ogre::uchar*>(bytes->data()), static_cast<Ogre::uint32>(width),
                            static_cast<Ogre::uint32>(height), channels == 4 ? Ogre::PF_BYTE_RGBA : Ogre::PF_BYTE_RGB);
     shared->texture = Ogre::TextureManager::getSingleton().loadImage(
-        "dressed_human/normal_map_" + std::to_string(++texture_count), kGroup, image, Ogre::TEX_TYPE_2D, Ogre::MIP_DEFAULT);
+        "dressed_human/normal_map_" + std::to_string(++texture_count), kGroup, image, Ogre::TEX_TYPE_2D, normalMapMipmaps());
     for (auto entry = shared_textures.begin(); entry != shared_textures.end();) {
       entry = entry->second.expired() && entry->first != bytes.get() ? shared_textures.erase(entry) : std::next(entry);
     }

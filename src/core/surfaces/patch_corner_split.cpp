@@ -1,10 +1,8 @@
 #include "dressed_human/core/surfaces/patch_corner_split.h"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
-#include <cmath>
-#include <map>
-#include <tuple>
 
 namespace dressed_human {
 
@@ -23,9 +21,11 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
   // Corner parameters are exact grid fractions and the vertex's uv their float: a tolerance far
   // below a grid step (1/64 at the finest level) and far above float rounding.
   constexpr float kSameParameter = 1e-5f;
-  // (vertex, patch, uv in millionths) -> split vertex; uv too, since at a welded pole one
-  // patch's triangles give the one vertex several (u, v).
-  std::map<std::tuple<std::uint32_t, std::uint32_t, long, long>, std::uint32_t> copies;
+  // Each vertex's copies as a chain (most vertices have none, one on an edge one or two, a pole
+  // a few): first_copy[vertex], then next_copy[copy - vertices]. Matched by patch and (u, v),
+  // since at a welded pole one patch's triangles give the one vertex several (u, v).
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> first_copy(vertices, kNone), next_copy, copy_patch;
   for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
     const std::uint32_t vertex = mesh.indices[c];
     if (vertex >= vertices) {
@@ -33,17 +33,26 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
                                   std::to_string(vertices) + " vertices");
     }
     const Eigen::Vector2f uv = corner_parameters[c].cast<float>();
-    if ((uv - mesh.uv[vertex]).cwiseAbs().maxCoeff() <= kSameParameter) {
+    const auto same = [&](const Eigen::Vector2f& other) { return (uv - other).cwiseAbs().maxCoeff() <= kSameParameter; };
+    if (same(mesh.uv[vertex])) {
       out.indices[c] = vertex;
       continue;
     }
-    const auto key = std::make_tuple(vertex, mesh.triangle_patch[c / 3], std::lround(uv.x() * 1e6f), std::lround(uv.y() * 1e6f));
-    const auto [copy, added] = copies.emplace(key, static_cast<std::uint32_t>(out.source.size()));
-    if (added) {
+    const std::uint32_t patch = mesh.triangle_patch[c / 3];
+    std::uint32_t* link = &first_copy[vertex];
+    while (*link != kNone && !(copy_patch[*link - vertices] == patch && same(out.uv[*link]))) {
+      link = &next_copy[*link - vertices];
+    }
+    std::uint32_t copy = *link;
+    if (copy == kNone) {
+      copy = static_cast<std::uint32_t>(out.source.size());
+      *link = copy;  // before the push_backs, which may move next_copy
       out.source.push_back(vertex);
       out.uv.push_back(uv);
+      next_copy.push_back(kNone);
+      copy_patch.push_back(patch);
     }
-    out.indices[c] = copy->second;
+    out.indices[c] = copy;
   }
 }
 
