@@ -479,7 +479,7 @@ the single unoriented Y-Y tile drawn before issue 21.
 
 ### Shimmer under sub-pixel motion
 
-`bench/relief_flicker.py`: one human frozen with its elbow and knee bent, drawn twice from
+`bench/relief_flicker.py`: one human frozen with its left elbow bent 68 degrees, drawn twice from
 distances 0.2 % apart (the figure moves by a fraction of a pixel, as between two frames of a slow
 walk); the mean change over the garments' and the skin's pixels, with the relief as drawn by
 default (faded out from 6 to 2.5 pixels per feature, then not drawn), forced on, forced on without
