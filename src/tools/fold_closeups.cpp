@@ -63,15 +63,6 @@ std::vector<SkeletonPose> walkPoses(const std::string& source, const Skeleton& s
   return poses;
 }
 
-// The fold tiles of the figure's "exact" column: garmentFoldTiles' specs without the low pass.
-FoldTiles exactFoldTiles() {
-  WrinkleMapSpec strong = garmentWrinkleMapSpec();
-  strong.surface = WrinkleSurface::exactFolds;
-  WrinkleMapSpec slight = strong;
-  slight.chain = "I";
-  return FoldTiles(transposed(makeWrinkleMap(slight)), transposed(makeWrinkleMap(strong)));
-}
-
 // The garment's map before issue 21: the exact Y-Y tile with L_y = L_x, once per patch.
 ReliefMap previousWrinkleMap() {
   WrinkleMapSpec spec = garmentWrinkleMapSpec();
@@ -100,7 +91,7 @@ int run(const std::string& source, const std::string& directory) {
   const BodyDescription body = loadBodyDescriptionFile(source + "/config/bodies/default.yaml", skeleton);
   const std::vector<SkeletonPose> poses = walkPoses(source, skeleton, body.shape);
   const FoldTiles smooth = garmentFoldTiles();
-  const FoldTiles exact = exactFoldTiles();
+  const FoldTiles exact = garmentFoldTiles(512, WrinkleSurface::exactFolds);
   const ReliefMap before = previousWrinkleMap();
   WrinklePlacementOptions previous_options;
   previous_options.alpha_threshold = 0.98;

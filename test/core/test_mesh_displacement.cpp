@@ -159,3 +159,44 @@ TEST(MeshDisplacement, VertexWeightsScaleTheAmplitude) {
 
 }  // namespace
 }  // namespace dressed_human
+
+namespace dressed_human {
+namespace {
+
+// Fold tiles (oriented_folds.h) displace by orientedFolds at each vertex, weighted by the wrinkle
+// strength; a tiling other than 1 and fold axes of another count are refused by name.
+TEST(MeshDisplacement, FoldTilesDisplaceByTheOrientedFolds) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 8);
+  const FoldTiles folds(sineMap(32, 0.05), sineMap(32, 0.08));
+  std::vector<float> strength(base.vertexCount(), 0.7f);
+  std::vector<Eigen::Vector2f> axes(base.vertexCount(), Eigen::Vector2f(0.3f, 0.2f));
+  ReliefDisplacement displacement{&folds.strong, 1.0f, 1.0f, 1.0f, &strength, &folds, &axes};
+  TriangleMesh out;
+  displaceMesh(base, displacement, out);
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    const double height = orientedFolds(folds, base.uv[i].cast<double>(), axes[i], strength[i]).height;
+    const double moved = (out.positions[i] - base.positions[i]).cast<double>().dot(base.normals[i].cast<double>());
+    const double metres_per_tile = std::sqrt(base.tangents_u[i].norm() * base.tangents_v[i].norm());
+    EXPECT_NEAR(moved, height * metres_per_tile, 1e-5) << i;
+  }
+  displacement.tiling = 2.0f;
+  try {
+    displaceMesh(base, displacement, out);
+    ADD_FAILURE() << "tiling 2 with fold tiles accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("tiling"), std::string::npos) << error.what();
+  }
+  displacement.tiling = 1.0f;
+  axes.pop_back();
+  try {
+    displaceMesh(base, displacement, out);
+    ADD_FAILURE() << "too few fold axes accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("fold axes"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace dressed_human

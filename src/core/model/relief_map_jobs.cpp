@@ -97,9 +97,10 @@ WrinkleMapSpec garmentWrinkleMapSpec() {
   return spec;
 }
 
-FoldTiles garmentFoldTiles(int pixels) {
+FoldTiles garmentFoldTiles(int pixels, WrinkleSurface surface) {
   WrinkleMapSpec strong = garmentWrinkleMapSpec();
   strong.width_pixels = strong.height_pixels = pixels;
+  strong.surface = surface;
   WrinkleMapSpec slight = strong;
   slight.chain = "I";
   return FoldTiles(transposed(makeWrinkleMap(slight)), transposed(makeWrinkleMap(strong)));

@@ -89,8 +89,9 @@ class ReliefMapJobs {
 WrinkleMapSpec garmentWrinkleMapSpec();
 // The garments' two fold tiles (oriented_folds.h): I and garmentWrinkleMapSpec()'s Y-Y, both
 // transposed so that they compress along u, `pixels` square (throws std::invalid_argument as
-// makeWrinkleMap for a bad size). About 0.4 s for both at 512.
-FoldTiles garmentFoldTiles(int pixels = 512);
+// makeWrinkleMap for a bad size), drawn as `surface` (the display's: smooth folds). About 0.4 s
+// for both at 512.
+FoldTiles garmentFoldTiles(int pixels = 512, WrinkleSurface surface = WrinkleSurface::smoothFolds);
 // The map with u and v swapped (heights and slopes).
 ReliefMap transposed(const ReliefMap& map);
 
