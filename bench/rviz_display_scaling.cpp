@@ -211,6 +211,10 @@ int main(int argc, char** argv) {
       // path, or failed, must say so.
       for (int s = 0; statuses && s < statuses->numChildren(); ++s) {
         auto* status = dynamic_cast<rviz::StatusProperty*>(statuses->childAt(s));
+        // What the first display draws (DressedHuman: parts and triangles), for the table.
+        if (status && display == displays.front() && status->getName() == "Surfaces") {
+          std::fprintf(stderr, "surfaces %s\n", status->getValue().toString().toStdString().c_str());
+        }
         if (status && status->getLevel() != rviz::StatusProperty::Ok) {
           std::fprintf(stderr, "status %s: %s\n", status->getName().toStdString().c_str(),
                        status->getValue().toString().toStdString().c_str());

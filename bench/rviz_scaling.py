@@ -92,7 +92,7 @@ def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0
     extra = re.search(r"rss_mb=([-\d.]+) first_frame_s=([-\d.]+)", output)
     point["rss_mb"], point["first_frame_s"] = (float(v) for v in extra.groups()) if extra else (-1.0, -1.0)
     for line in output.splitlines():
-        if line.startswith("status "):
+        if line.startswith("status ") or line.startswith("surfaces "):
             print("  %s x %d: %s" % (display_class, count, line), file=sys.stderr)
     return point
 

@@ -34,7 +34,7 @@ DrawnHuman::DrawnHuman(const Skeleton& skeleton, const BodyDescription& shaped_b
 DrawnHuman::~DrawnHuman() = default;
 
 bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod,
-                        const Ogre::Camera* camera, bool hide_unseen_relief) {
+                        const Ogre::Camera* camera, bool hide_unseen_relief, bool hide_covered) {
   if (!bone_source_.lookUp(frames, status)) return false;
   if (fresh(bone_source_.stamp())) last_seen_ = ros::WallTime::now();
   // Eq. 5: TF carries the URDF's offsets (its own body shape in them); the display's shape on top.
@@ -42,7 +42,7 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   if (!posesDrawable(status, frames.getFixedFrame())) return false;
   // Visibility first (by where the human was last frame): the model skips the wrinkles' per-vertex
   // work while they are not drawn, and must do it in the very frame they are drawn again.
-  updateReliefVisibility(camera, hide_unseen_relief);
+  lod.hide_covered = updateDetailVisibility(camera, hide_unseen_relief, hide_covered);
   model_.setWrinklesWanted(visual_.reliefShown(ReliefKind::kCloth));
   model_.update(bone_source_.root(), bones_, lod);
   visual_.update(model_.parts());
@@ -75,14 +75,17 @@ void DrawnHuman::clearStatuses(DisplayStatus& status) {
   status.clear(pose_status_);
 }
 
-void DrawnHuman::updateReliefVisibility(const Ogre::Camera* camera, bool judged) {
+bool DrawnHuman::updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief, bool hide_covered) {
   const Eigen::AlignedBox3f bounds = model_.bounds();
-  judged = judged && camera != nullptr && !bounds.isEmpty();
+  const bool placed = camera != nullptr && !bounds.isEmpty();
   double pixels_per_metre = 0.0;  // at the human's nearest point
-  if (judged) {
+  if (placed) {
     const CameraView view = LodProperties::cameraView(*camera);
     pixels_per_metre = pixelsPerMetre(view, bounds.cast<double>().exteriorDistance(view.position));
   }
+  // The gap past hems and cuffs switches like a relief's features, with the same hysteresis.
+  const bool covered_hidden = hide_covered && placed && !cover_gap_visibility_.update(pixels_per_metre);
+  const bool judged = judge_relief && placed;
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
     std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
     if (!visibility) continue;
@@ -90,6 +93,7 @@ void DrawnHuman::updateReliefVisibility(const Ogre::Camera* camera, bool judged)
     visual_.setReliefShown(kind, shown);
     visual_.setReliefFade(kind, judged ? static_cast<float>(visibility->fade()) : 1.0f);
   }
+  return covered_hidden;
 }
 
 bool DrawnHuman::posesDrawable(DisplayStatus& status, const std::string& fixed_frame) {

@@ -46,11 +46,13 @@ class DrawnHuman {
   const std::string& rootFrame() const { return bone_source_.rootFrame(); }
 
   // Bones from TF, then surfaces at `lod` (a displaced relief: `displaced_level` instead) and the
-  // relief shown or hidden by its size on screen (`hide_unseen_relief`). False when the human is
+  // relief shown or hidden by its size on screen (`hide_unseen_relief`), and what the clothes
+  // cover left out while the gap past hems is too small to see into (`hide_covered`,
+  // LevelOfDetail::hide_covered). False when the human is
   // not drawn this frame: TF lacks a bone, or a pose is beyond what rviz can draw (then the
   // human hides and a status names the frame until TF is sane again).
   bool update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod, const Ogre::Camera* camera,
-              bool hide_unseen_relief);
+              bool hide_unseen_relief, bool hide_covered);
   // Wall time of the newest update() that found every bone in TF, at most kFreshSeconds old
   // (TF keeps a stopped publisher's last transforms for ever).
   ros::WallTime lastSeen() const { return last_seen_; }
@@ -70,7 +72,10 @@ class DrawnHuman {
 
  private:
   bool posesDrawable(DisplayStatus& status, const std::string& fixed_frame);
-  void updateReliefVisibility(const Ogre::Camera* camera, bool judged);
+  // Judges, from where the human was last frame, which reliefs show (if `judge_relief`) and
+  // whether what the clothes cover can be seen; returns true where it is to be hidden (only if
+  // `hide_covered`).
+  bool updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief, bool hide_covered);
 
   TfBoneSource bone_source_;
   ForwardKinematics kinematics_;
@@ -80,6 +85,7 @@ class DrawnHuman {
   std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
   std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
   std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts
+  ReliefVisibility cover_gap_visibility_{HumanModel::kCoverGap};
   ros::WallTime last_seen_;
 };
 

@@ -322,17 +322,18 @@ void DressedHumanDisplay::updateSurfaces(float wall_dt) {
     lod = lod_properties_->levelOfDetail(camera);
   }
   const bool hide_unseen_relief = lod_properties_->hideUnseenRelief() && !displaced;
+  const bool hide_covered = lod_properties_->hideCovered() && !displaced;
   std::size_t parts = 0, triangles = 0;
   for (auto& human : humans_) {
     try {
-      if (!human.second->update(*context_->getFrameManager(), status_, lod, camera, hide_unseen_relief)) continue;
+      if (!human.second->update(*context_->getFrameManager(), status_, lod, camera, hide_unseen_relief, hide_covered)) continue;
     } catch (const std::exception& error) {
       surfaces_reported_ = {};
       status_.error("Surfaces", human.second->rootFrame() + ": " + error.what());
       continue;
     }
     parts += human.second->model().parts().size();
-    triangles += human.second->model().triangleCount();
+    triangles += human.second->model().drawnTriangleCount();
   }
   reportSurfaces(humans_.size(), parts, triangles);
 }

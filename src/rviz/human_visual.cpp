@@ -55,14 +55,16 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     // level 8, +118 % at level 2), and a relief too small to see is not drawn.
     const PatchCornerSplit* corners = relief_shown_[slot(source.relief)] ? source.corners : nullptr;
     if (source.evaluated) {
-      part.mesh->update(*source.mesh, corners, source.relief_weight, source.fold_axis, source.bounds);
+      part.mesh->update(*source.mesh, corners, source.relief_weight, source.fold_axis, source.hidden_patches,
+                        source.bounds);
       continue;
     }
     part.material->setPatches(*source.patches);
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
     const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[slot(ReliefKind::kCloth)];
     part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.layout_id, source.bounds);
+    part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.hidden_patches,
+                            source.layout_id, source.bounds);
   }
 }
 

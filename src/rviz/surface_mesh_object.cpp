@@ -52,9 +52,30 @@ void SurfaceMeshObject::setBounds(const Eigen::AlignedBox3f& bounds) {
   object_->getParentSceneNode()->needUpdate();
 }
 
+void SurfaceMeshObject::addTriangles(const std::vector<std::uint32_t>& indices, const TriangleMesh& mesh,
+                                     const std::vector<bool>* hidden_patches) {
+  if (hidden_patches == nullptr) {
+    for (const std::uint32_t index : indices) object_->index(index);
+    return;
+  }
+  if (mesh.triangle_patch.size() * 3 != indices.size()) {
+    throw std::invalid_argument("mesh with " + std::to_string(indices.size()) + " triangle corners has " +
+                                std::to_string(mesh.triangle_patch.size()) + " triangle patches");
+  }
+  for (std::size_t t = 0; t < mesh.triangle_patch.size(); ++t) {
+    const std::uint32_t patch = mesh.triangle_patch[t];
+    if (patch >= hidden_patches->size()) {
+      throw std::invalid_argument("triangle on patch " + std::to_string(patch) + " of " +
+                                  std::to_string(hidden_patches->size()) + " hidden-patch flags");
+    }
+    if ((*hidden_patches)[patch]) continue;
+    for (std::size_t c = 3 * t; c < 3 * t + 3; ++c) object_->index(indices[c]);
+  }
+}
+
 void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit* corners,
                                const std::vector<float>* relief_weight, const std::vector<Eigen::Vector2f>* fold_axis,
-                               const Eigen::AlignedBox3f& bounds) {
+                               const std::vector<bool>* hidden_patches, const Eigen::AlignedBox3f& bounds) {
   layout_id_ = 0;
   const std::size_t vertices = mesh.positions.size();
   if ((relief_weight != nullptr && relief_weight->size() != vertices) ||
@@ -80,15 +101,17 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit*
     const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[v] : Eigen::Vector2f::Zero();
     object_->textureCoord(relief_weight != nullptr ? (*relief_weight)[v] : 1.0f, axis.x(), axis.y());
   }
-  for (const std::uint32_t index : indices) object_->index(index);
+  addTriangles(indices, mesh, hidden_patches);
   object_->end();
   setBounds(bounds);
 }
 
 void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCornerSplit* corners,
-                                     const std::vector<Eigen::Vector4f>* inverse_rest_metric, std::uint64_t layout_id,
+                                     const std::vector<Eigen::Vector4f>* inverse_rest_metric,
+                                     const std::vector<bool>* hidden_patches, std::uint64_t layout_id,
                                      const Eigen::AlignedBox3f& bounds) {
-  if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_) {
+  if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_ ||
+      hidden_patches != hidden_sent_) {
     const std::size_t vertices = layout.uv.size();
     if (layout.vertex_patch.size() != vertices ||
         (inverse_rest_metric != nullptr && inverse_rest_metric->size() != vertices)) {
@@ -110,10 +133,11 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCorn
       const Eigen::Vector2f& uv = corners ? corners->uv[i] : layout.uv[v];
       object_->textureCoord(uv.x(), uv.y());
     }
-    for (const std::uint32_t index : indices) object_->index(index);
+    addTriangles(indices, layout, hidden_patches);
     object_->end();
     layout_id_ = layout_id;  // only now: a layout that failed above is tried again next frame
     split_sent_ = corners != nullptr;
+    hidden_sent_ = hidden_patches;
   }
   setBounds(bounds);
 }

@@ -31,17 +31,21 @@ class SurfaceMeshObject {
   // surface drawn without its relief texture). Second texture coordinate, per vertex:
   // `relief_weight` (how much relief shows; null: 1) and `fold_axis` (which way garment folds
   // run, SurfacePart::fold_axis; null: zeros). `bounds`: encloses the posed surface
-  // (SurfacePart::bounds). Throws std::invalid_argument for per-vertex data of another size.
+  // (SurfacePart::bounds). `hidden_patches`: triangles on these patches are left out
+  // (SurfacePart::hidden_patches; null: none). Throws std::invalid_argument for per-vertex or
+  // per-patch data of another size.
   void update(const TriangleMesh& mesh, const PatchCornerSplit* corners, const std::vector<float>* relief_weight,
-              const std::vector<Eigen::Vector2f>* fold_axis, const Eigen::AlignedBox3f& bounds);
+              const std::vector<Eigen::Vector2f>* fold_axis, const std::vector<bool>* hidden_patches,
+              const Eigen::AlignedBox3f& bounds);
   // Per vertex the owner's (u, v, patch) as the position, the garment's rest metric
   // (VertexCompression::inverseRestMetric; null: zeros) as texture coordinate 0 and the
-  // vertex's own patch (u, v) (`corners`, or null as above) as texture coordinate 1. Nothing is
-  // sent while `layout_id` and whether `corners` is given stay the same; `bounds` (the posed surface's) is set every frame, since the
-  // (u, v, patch) positions say nothing about where the surface is.
+  // vertex's own patch (u, v) (`corners`, or null as above) as texture coordinate 1; triangles
+  // on `hidden_patches` left out as above. Nothing is sent while `layout_id`, whether `corners`
+  // is given and `hidden_patches` stay the same; `bounds` (the posed surface's) is set every
+  // frame, since the (u, v, patch) positions say nothing about where the surface is.
   void updateLayout(const TriangleMesh& layout, const PatchCornerSplit* corners,
-                    const std::vector<Eigen::Vector4f>* inverse_rest_metric, std::uint64_t layout_id,
-                    const Eigen::AlignedBox3f& bounds);
+                    const std::vector<Eigen::Vector4f>* inverse_rest_metric, const std::vector<bool>* hidden_patches,
+                    std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds);
   void setMaterial(const std::string& material);
   void setVisible(bool visible) { object_->setVisible(visible); }
   std::size_t rebuildCount() const { return rebuild_count_; }
@@ -55,7 +59,10 @@ class SurfaceMeshObject {
   std::size_t rebuild_count_ = 0;  // buffer (re)creations
   std::uint64_t layout_id_ = 0;    // of the layout the buffers hold; 0: evaluated vertices
   bool split_sent_ = false;        // the buffers hold the corner split of that layout
+  const std::vector<bool>* hidden_sent_ = nullptr;  // and left out these patches' triangles
   bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
+  void addTriangles(const std::vector<std::uint32_t>& indices, const TriangleMesh& mesh,
+                    const std::vector<bool>* hidden_patches);
   void setBounds(const Eigen::AlignedBox3f& bounds);
   static void checkCorners(const PatchCornerSplit& corners, std::size_t vertices);
 };

@@ -8,6 +8,7 @@
 
 #include "dressed_human/core/garments/garment_file.h"
 #include "dressed_human/core/model/relief_visibility.h"
+#include "dressed_human/core/surfaces/covered_patches.h"
 
 namespace dressed_human {
 namespace {
@@ -111,6 +112,12 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     cloth.insert(cloth.end(), dressed.rest_patches.begin(), dressed.rest_patches.end());
   }
   if (!cloth.empty()) relief_tile_size_[1] = typicalPatchSize(cloth);
+  // The skin and the garments' rest patches were built in the same rest pose.
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    std::vector<const std::vector<BezierPatch>*> outer;
+    for (std::size_t g = p; g < garments_.size(); ++g) outer.push_back(&garments_[g].rest_patches);
+    covered_.push_back(patchesCoveredBy(p == 0 ? skin_.patches() : garments_[p - 1].rest_patches, outer));
+  }
 }
 
 Eigen::AlignedBox3f HumanModel::bounds() const {
@@ -190,9 +197,23 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displacement.map;
     Tessellator& tessellator = tessellatorOf(p);
     const std::vector<BezierPatch>& patches = partPatches(p);
-    const std::vector<int>& levels = levelsFor(tessellator, partErrorBound(p), patches, lod);
-    part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(p), levels)
-                         : &tessellator.layout(patches, topologyOf(p), levels);
+    const std::vector<int>* levels = &levelsFor(tessellator, partErrorBound(p), patches, lod);
+    const std::vector<bool>& covered = covered_[p];
+    const bool hide = lod.hide_covered && std::find(covered.begin(), covered.end(), true) != covered.end();
+    if (hide) {
+      drawn_levels_ = *levels;
+      for (std::size_t k = 0; k < covered.size(); ++k) {
+        if (covered[k]) drawn_levels_[k] = 1;
+      }
+      levels = &drawn_levels_;
+    }
+    part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(p), *levels)
+                         : &tessellator.layout(patches, topologyOf(p), *levels);
+    part.hidden_patches = hide ? &covered : nullptr;
+    part.drawn_triangles = part.mesh->triangleCount();
+    if (hide) {
+      for (const std::uint32_t patch : part.mesh->triangle_patch) part.drawn_triangles -= covered[patch] ? 1 : 0;
+    }
     part.evaluated = evaluate;
     part.patches = &patches;
     part.layout_id = tessellator.layoutId();
@@ -263,6 +284,12 @@ const CalibratedErrorBound& HumanModel::partErrorBound(std::size_t part) const {
 
 const std::vector<int>& HumanModel::partLevels(std::size_t part) const {
   return part == 0 ? skin_tessellator_.levels() : garments_.at(part - 1).tessellator->levels();
+}
+
+std::size_t HumanModel::drawnTriangleCount() const {
+  std::size_t count = 0;
+  for (const SurfacePart& part : parts_) count += part.mesh ? part.drawn_triangles : 0;
+  return count;
 }
 
 std::size_t HumanModel::triangleCount() const {

@@ -46,9 +46,18 @@ LodProperties::LodProperties(rviz::Property* parent) {
       "Draw a relief (skin cells, cloth folds) with the plain material, without its normal map, while its features "
       "cover under 2 pixels on screen (again above 2.5 pixels): it cannot be seen there, only paid for.",
       parent);
+  hide_covered_ = new rviz::BoolProperty(
+      "Hide Covered Surfaces", true,
+      "Leave out what the clothes cover (the skin under the jacket and skirt, their patches dropped to the coarsest "
+      "level) while the gap between cloth and body (2 cm) covers under 2 pixels on screen (again above 2.5 "
+      "pixels): nothing of it can be seen past a hem or cuff there, and on a software renderer rasterizing it is "
+      "a large part of a small human's cost.",
+      parent);
 }
 
 bool LodProperties::hideUnseenRelief() const { return hide_unseen_relief_->getBool(); }
+
+bool LodProperties::hideCovered() const { return hide_covered_->getBool(); }
 
 CameraView LodProperties::cameraView(const Ogre::Camera& camera) {
   const Ogre::Vector3 eye = camera.getDerivedPosition();

@@ -39,6 +39,8 @@ class LodProperties : public QObject {
                                       const std::string& software_renderer) const;
   // Whether a relief too small to see is drawn with the plain material (ReliefVisibility).
   bool hideUnseenRelief() const;
+  // Whether what the clothes cover may be left out where it cannot be seen (LevelOfDetail::hide_covered).
+  bool hideCovered() const;
   // What screen-space decisions need of `camera`.
   static CameraView cameraView(const Ogre::Camera& camera);
 
@@ -51,6 +53,7 @@ class LodProperties : public QObject {
   rviz::FloatProperty* max_error_pixels_;
   rviz::EnumProperty* vertex_evaluation_;
   rviz::BoolProperty* hide_unseen_relief_;
+  rviz::BoolProperty* hide_covered_;
 };
 
 }  // namespace dressed_human

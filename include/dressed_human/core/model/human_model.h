@@ -38,6 +38,11 @@ struct SurfacePart {
   // shows, so a renderer may cull back faces -- half the triangles it rasterizes. Garments are
   // open (hems, sleeves, collar) and show their inside.
   bool closed = false;
+  // Per patch of `mesh`, true where it is covered by outer parts and is not to be drawn
+  // (LevelOfDetail::hide_covered; mesh.triangle_patch says which triangle lies on which patch);
+  // null: every patch is drawn. `drawn_triangles` counts the others.
+  const std::vector<bool>* hidden_patches = nullptr;
+  std::size_t drawn_triangles = 0;
   // Per vertex of `mesh`, how much of the relief shows there, in [0, 1]; null: all of it. For
   // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
   // wrinkles behind a bent knee, none on a straight leg.
@@ -73,6 +78,10 @@ struct LevelOfDetail {
   int max_level = 16;
   double max_error_pixels = 1.0;
   CameraView camera{Eigen::Vector3d::Zero(), 0.8, 1000.0};
+  // Patches that outer parts cover (covered_patches.h: skin under the garments) are not drawn
+  // (SurfacePart::hidden_patches) and drop to level 1: for a human so small on screen that the
+  // gap between cloth and body is under a pixel or two (HumanModel::kCoverGap).
+  bool hide_covered = false;
 };
 
 // The seed paper's three outfits (SPEC §3), or the bare skin.
@@ -93,6 +102,10 @@ struct HumanModelSettings {
 
 class HumanModel {
  public:
+  // The widest gap between a garment and what it covers (the garments' ease is 1.5-2 cm): where
+  // it is under a pixel or two on screen, nothing covered can be seen past a hem or cuff.
+  static constexpr double kCoverGap = 0.02;
+
   HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings);
 
   // Loads the outfit's garments; throws (GarmentError, BodyDescriptionError, SkinError) naming
@@ -120,6 +133,11 @@ class HumanModel {
 
   const std::vector<SurfacePart>& parts() const { return parts_; }
   std::size_t triangleCount() const;
+  // Triangles not on hidden patches (SurfacePart::drawn_triangles, summed).
+  std::size_t drawnTriangleCount() const;
+  // Per part, per patch: covered by the parts outside it (skin by every garment, a garment by
+  // those listed after it), judged at rest (patchesCoveredBy).
+  const std::vector<bool>& coveredPatches(std::size_t part) const { return covered_.at(part); }
   // Part `part`'s posed Bezier patches and the tessellation level each got in the last update()
   // (for error budgets: geometricErrorBound(patch, level)).
   const std::vector<BezierPatch>& partPatches(std::size_t part) const;
@@ -169,6 +187,8 @@ class HumanModel {
   std::map<const Tessellator*, AutomaticLevels> automatic_levels_;
   std::vector<int> uniform_levels_;
   std::vector<int> wanted_levels_;  // scratch: what the screen error asks for, per patch
+  std::vector<int> drawn_levels_;   // scratch: the levels with hidden patches at 1
+  std::vector<std::vector<bool>> covered_;  // per part, per patch
   VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
   bool wrinkles_wanted_ = true;
   struct Displacement {
