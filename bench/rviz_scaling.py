@@ -17,7 +17,9 @@ each distance (cost against distance).
 
 Usage: bench/rviz_scaling.py [--seconds 15] [--counts 1 5 10] [--distances 12]
        [--distance-count 10] [--markdown docs/rviz_scaling.md] [--csv out.csv]
-       [--chart docs/rviz_scaling.png] [--screenshots docs/rviz_scaling]
+       [--chart docs/rviz_scaling.png] [--screenshots docs/rviz_scaling] [--peer-workspace DIR]
+With --peer-workspace (built by ../shared/peers/spencer/build.sh), spencer's walking-man meshes (the
+crowd peer) are measured in the same run, from the peer's own publisher, up to 10 persons.
 Needs the package built in build/ and xvfb-run. Exits 1 if a point did not draw all its humans.
 """
 import argparse
@@ -42,6 +44,10 @@ DEVEL = os.path.join(ROOT, "build", "devel")
 SUBJECTS = [("DressedHuman (GPU vertices)", "dressed_human/DressedHuman", ["--set", "Vertex Evaluation=GPU"]),
             ("DressedHuman (CPU vertices)", "dressed_human/DressedHuman", ["--set", "Vertex Evaluation=CPU"]),
             ("RobotModel", "rviz/RobotModel", [])]
+# The crowd peer (../shared/peers/spencer: its build.sh makes the workspace given as --peer-workspace).
+PEER = ("spencer walking-man mesh (peer)", "spencer_tracking_rviz_plugin/TrackedPersons",
+        ["--set", "Topic=/tracked_persons", "--set", "Style=Person meshes", "--set", "Tracking frame=world"])
+PEER_DIR = os.path.join(os.path.dirname(ROOT), "shared", "peers", "spencer")
 YAW, FOCAL_Z = 0.0, 0.9
 ROW_LENGTH, ROW_SPACING, ROW_SHIFT = 10, 3.0, 0.5
 MIN_FIGURE_PIXELS = 60  # a human at 12 m covers about 1,500 (DressedHuman) or 600 (RobotModel); at 30 m a sixth
@@ -64,9 +70,14 @@ def pitch(count):
     return 0.25 if count <= ROW_LENGTH else 0.7
 
 
-def view(count, distance):
+def view(count, distance, focal_y=0.0):
     # rviz_display_scaling's render panel; rviz's default vertical field of view.
-    return OrbitView(distance, YAW, pitch(count), (0.0, 0.0, FOCAL_Z))
+    return OrbitView(distance, YAW, pitch(count), (0.0, focal_y, FOCAL_Z))
+
+
+def peer_positions(count):
+    """Where the peer's publisher puts its persons: x = 0, y = 0 .. count - 1 (one row, facing +x)."""
+    return [(0.0, float(i)) for i in range(count)]
 
 
 def drawn(path, places, orbit):
@@ -77,10 +88,12 @@ def drawn(path, places, orbit):
                >= MIN_FIGURE_PIXELS)
 
 
-def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0):
-    command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", os.path.join(DEVEL, "env.sh"),
-               os.path.join(DEVEL, "lib", "dressed_human", "rviz_display_scaling"), display_class, str(count),
-               str(seconds), "--distance", str(distance), "--focal", "0;0;%g" % FOCAL_Z, "--view", "Yaw=%g" % YAW,
+def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0, focal_y=0.0, env_script=None):
+    # stdbuf: the peer's plugin aborts in a destructor as the harness exits, after its figures.
+    command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", env_script or os.path.join(DEVEL, "env.sh"),
+               "stdbuf", "-oL", os.path.join(DEVEL, "lib", "dressed_human", "rviz_display_scaling"), display_class,
+               str(count), str(seconds), "--distance", str(distance), "--focal", "0;%g;%g" % (focal_y, FOCAL_Z),
+               "--view", "Yaw=%g" % YAW,
                "--view", "Pitch=%g" % pitch(count), "--view", "Target Frame=<Fixed Frame>", "--screenshot",
                screenshot] + extra
     output = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -104,11 +117,14 @@ def chart(results, counts, distances, distance_count, path):
     panels = 3 if len(distances) > 1 else 2
     figure, axes = plt.subplots(1, panels, figsize=(6 * panels, 4.5))
     near = distances[0]
-    for label, _, _ in SUBJECTS:
-        points = [results[(label, n, near)] for n in counts]
-        axes[0].plot(counts, [p["fps"] for p in points], "o-", label=label)
-        axes[1].plot(counts, [p["per_human_ms"] for p in points], "o-", label=label)
-        if panels == 3:
+    for label, _, _ in SUBJECTS + [PEER]:
+        shown = [n for n in counts if (label, n, near) in results]
+        if not shown:
+            continue
+        points = [results[(label, n, near)] for n in shown]
+        axes[0].plot(shown, [p["fps"] for p in points], "o-", label=label)
+        axes[1].plot(shown, [p["per_human_ms"] for p in points], "o-", label=label)
+        if panels == 3 and all((label, distance_count, d) in results for d in distances):
             axes[2].plot(distances, [results[(label, distance_count, d)]["per_human_ms"] for d in distances], "o-",
                          label=label)
     axes[0].axhline(30.0, color="grey", lw=0.8, ls="--")
@@ -144,14 +160,44 @@ def start_humans(count, node, motion, urdf, master, env):
     return nodes
 
 
+def measure_peer(count, distance, args, screenshot, env):
+    """spencer's TrackedPersons display (Person meshes) with `count` persons from the peer's own
+    publisher, seen as the humans are: the same view of a row of the same length."""
+    peer_env = dict(env)
+    setup = os.path.join(args.peer_workspace, "devel")
+    publisher = start(["/bin/bash", "-c", ". %s/setup.bash && exec /usr/bin/python3 %s %d" % (
+        setup, os.path.join(PEER_DIR, "publish_persons.py"), count)], peer_env)
+    try:
+        time.sleep(3)
+        focal_y = (count - 1) / 2.0
+        point = harness(PEER[1], 1, args.seconds, PEER[2], screenshot, peer_env, distance, focal_y,
+                        os.path.join(setup, "env.sh"))
+        orbit = view(count, distance, focal_y)
+        point["drawn"] = min(drawn(screenshot[:-4] + "_start.png", peer_positions(count), orbit),
+                             drawn(screenshot, peer_positions(count), orbit))
+        return point
+    finally:
+        stop(publisher)
+
+
+def subjects(args, count):
+    """What is measured at `count` humans: ours and RobotModel; the peer too where its publisher's
+    one row fits the view (up to ROW_LENGTH), if its workspace was given."""
+    peer = [PEER] if args.peer_workspace and count <= ROW_LENGTH else []
+    return SUBJECTS + peer
+
+
 def measure(results, count, distance, args, baseline, shots, env):
-    for label, display_class, extra in SUBJECTS:
+    for label, display_class, extra in subjects(args, count):
         name = re.sub(r"[^a-z]+", "_", label.lower()).strip("_")
         screenshot = os.path.join(shots, "%s_%d_%gm.png" % (name, count, distance))
-        point = harness(display_class, count, args.seconds, extra, screenshot, env, distance)
-        start_shot = screenshot[:-4] + "_start.png"
-        orbit = view(count, distance)
-        point["drawn"] = min(drawn(start_shot, positions(count), orbit), drawn(screenshot, positions(count), orbit))
+        if (label, display_class, extra) == PEER:
+            point = measure_peer(count, distance, args, screenshot, env)
+        else:
+            point = harness(display_class, count, args.seconds, extra, screenshot, env, distance)
+            start_shot = screenshot[:-4] + "_start.png"
+            orbit = view(count, distance)
+            point["drawn"] = min(drawn(start_shot, positions(count), orbit), drawn(screenshot, positions(count), orbit))
         point["per_human_ms"] = (point["cpu_ms_per_frame"] - baseline["cpu_ms_per_frame"]) / count
         point["screenshot"] = os.path.relpath(screenshot, ROOT)
         results[(label, count, distance)] = point
@@ -168,6 +214,9 @@ def main():
     parser.add_argument("--csv", default="")
     parser.add_argument("--chart", default="")
     parser.add_argument("--screenshots", default="")
+    parser.add_argument("--peer-workspace", default="",
+                        help="a catkin workspace built by ../shared/peers/spencer/build.sh: spencer's walking-man "
+                             "meshes measured alongside (up to %d persons)" % ROW_LENGTH)
     args = parser.parse_args()
     shots = args.screenshots or tempfile.mkdtemp()
     os.makedirs(shots, exist_ok=True)
@@ -214,7 +263,7 @@ def main():
     rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,per_human_ms,display_ms,rss_mb,"
             "first_frame_s,screenshot"]
     for count, distance in points:
-        for label, _, _ in SUBJECTS:
+        for label, _, _ in subjects(args, count):
             p = results[(label, count, distance)]
             own = "%.3f ms" % p["display_ms"] if p["display_ms"] >= 0 else "—"
             drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")

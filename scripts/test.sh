@@ -17,7 +17,8 @@ export ROS_HOSTNAME=localhost ROSCONSOLE_STDOUT_LINE_BUFFERED=1 PYTHONUNBUFFERED
 grep -qE '^127\.0\.0\.1[[:space:]].*\blocalhost\b' /etc/hosts 2>/dev/null || echo "127.0.0.1 localhost" >> /etc/hosts
 
 echo "== building (build/)"
-# No benchmarks: no test runs them (scripts/evaluate.sh builds and runs them).
+# No benchmarks, nor the tools that only draw figures: no test runs them (scripts/evaluate.sh
+# builds and runs them).
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDRESSED_HUMAN_BENCHMARKS=OFF
 cmake --build build -j"$jobs"
 
@@ -36,13 +37,17 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 echo "== fuzzing the file parsers: BVH, .mot, OpenSim model, motion YAML, body YAML (short run; fuzz/run_fuzzers.sh 600 for the long one)"
 fuzz/run_fuzzers.sh "${FUZZ_SECONDS:-20}" "$root/build_fuzz" || status=1
 
+echo "== core gtests, layout and tool tests (Release)"
+# Each ctest run rewrites the failure list: the digest of this run's failures comes right after it.
+ctest --test-dir build --output-on-failure -E '^ros\.' -j"$jobs" || { status=1; scripts/failure_digest.py build || true; }
+# One at a time: each starts rviz under Xvfb and checks what it draws against TF in real time.
 # Last, so that ctest's summary closes the output.
-echo "== all tests (core gtests and rostests)"
-ctest --test-dir build --output-on-failure || status=1
+echo "== rostests"
+ctest --test-dir build --output-on-failure -R '^ros\.' || { status=1; rostests_failed=1; }
 
 if [ "$status" -ne 0 ]; then
   scripts/failure_digest.py build_sanitize || true
-  scripts/failure_digest.py build || true
+  [ -z "${rostests_failed:-}" ] || scripts/failure_digest.py build || true
   echo "scripts/test.sh: SOME TESTS FAILED" >&2
 fi
 exit "$status"

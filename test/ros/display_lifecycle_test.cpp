@@ -276,6 +276,45 @@ TEST_F(DisplayLifecycleTest, UnseenReliefIsDrawnWithThePlainMaterial) {
   frames(5);
 }
 
+// What the clothes cover is left out (fewer triangles drawn) while the human is too small for
+// its 2 cm gap to be seen into, and drawn again up close or with 'Hide Covered Surfaces' off.
+TEST_F(DisplayLifecycleTest, CoveredSurfacesAreLeftOutOnlyWhileTooSmallToSee) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  rviz::ViewController* view = manager_->getViewManager()->getCurrent();
+  ASSERT_NE(view, nullptr);
+  const QVariant default_distance = view->subProp("Distance")->getValue();
+  const QVariant default_focal = view->subProp("Focal Point")->getValue();
+  // A fixed level: the count then does not follow the walk.
+  display_->subProp("Level of Detail")->setValue("Fixed");
+  display_->subProp("Tessellation Level")->setValue(4);
+  const auto drawnTriangles = [&](bool hide, int height) {
+    display_->subProp("Hide Covered Surfaces")->setValue(hide);
+    panel_->resize(height * 4 / 3, height);
+    Ogre::Vector3 body;
+    Ogre::Quaternion unused;
+    EXPECT_TRUE(manager_->getFrameManager()->getTransform("body", ros::Time(), body, unused));
+    view->subProp("Focal Point")
+        ->setValue(height < 100 ? default_focal : QVariant(QString("%1;%2;%3").arg(body.x).arg(body.y).arg(body.z)));
+    view->subProp("Distance")->setValue(height < 100 ? default_distance : QVariant(2.0));
+    frames(10);
+    const rviz::StatusProperty* surfaces = status("Surfaces");
+    const QStringList words = surfaces ? surfaces->getValue().toString().split(' ') : QStringList();
+    const int at = words.indexOf("triangles");
+    return at > 0 ? words[at - 1].toInt() : -1;
+  };
+  const int all = drawnTriangles(false, 60);
+  ASSERT_GT(all, 0) << allStatuses();
+  EXPECT_LT(drawnTriangles(true, 60), 0.85 * all) << "small on screen: the covered skin left out";
+  EXPECT_EQ(drawnTriangles(true, 1200), all) << "2 m away in a large view: everything drawn";
+  EXPECT_LT(drawnTriangles(true, 60), 0.85 * all) << "small again";
+  display_->subProp("Hide Covered Surfaces")->setValue(true);
+  display_->subProp("Level of Detail")->setValue("Automatic");
+  view->subProp("Distance")->setValue(default_distance);
+  view->subProp("Focal Point")->setValue(default_focal);
+  panel_->resize(320, 240);
+  frames(5);
+}
+
 // Under Xvfb the GL is Mesa's llvmpipe: "Automatic" (the default) evaluates the vertices on the
 // CPU and says why; "GPU" asked for explicitly is obeyed.
 TEST_F(DisplayLifecycleTest, AutomaticVertexEvaluationPicksTheCpuOnASoftwareRenderer) {
