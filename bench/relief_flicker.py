@@ -5,7 +5,7 @@ moves by a fraction of a pixel, as between two frames of a slow walk). A well fi
 changes little between the two; an aliased one sparkles. Reports, per distance and condition,
 the mean absolute difference between the two shots over the garments' pixels and over the skin's
 (grey levels), with the relief as drawn by default ('Hide Unseen Relief' on: faded out and then
-not drawn below 2.5 px per feature), with it forced on, forced on without mipmaps
+not drawn from 3 px per feature down), with it forced on, forced on without mipmaps
 (DRESSED_HUMAN_RELIEF_MIPMAPS=0), and 'Relief: Flat' (no relief: what the motion alone changes).
 
 Usage: bench/relief_flicker.py [--distances 2 4 10] [--markdown docs/relief_flicker.md]

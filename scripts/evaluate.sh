@@ -5,7 +5,7 @@
 # scripts/make_evaluation.py, which also writes the README's Speed section from the same run.
 # Raw results go to build/evaluation/. About 20 minutes on 2 cores.
 #
-# Usage: scripts/evaluate.sh
+# Usage: [PEER_MIRROR=<bare clone of spencer_people_tracking>] scripts/evaluate.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -55,9 +55,18 @@ source build/devel/setup.bash
 set -u
 $PY bench/node_cpu.py --markdown docs/node_cpu.md
 rm -rf docs/rviz_scaling
+# The crowd peer (spencer's walking-man meshes) is measured alongside when PEER_MIRROR names a bare
+# git clone of spencer-project/spencer_people_tracking (../shared/peers/spencer/build.sh builds it).
+peer=()
+if [ -n "${PEER_MIRROR:-}" ]; then
+  bash "$ROOT/../shared/peers/spencer/build.sh" "$PEER_MIRROR" "$RESULTS/spencer_ws"
+  peer=(--peer-workspace "$RESULTS/spencer_ws")
+else
+  echo "PEER_MIRROR not set: the crowd peer is not measured"
+fi
 $PY bench/rviz_scaling.py --counts 1 5 10 20 30 --distances 12 18 30 --markdown docs/rviz_scaling.md \
   --csv "$RESULTS/rviz_scaling.csv" \
-  --chart docs/rviz_scaling.png --screenshots docs/rviz_scaling
+  --chart docs/rviz_scaling.png --screenshots docs/rviz_scaling "${peer[@]}"
 $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
 rm -rf docs/relief_switch
 $PY bench/relief_switch.py --chart docs/relief_switch.png --images docs/relief_switch --markdown docs/relief_switch.md

@@ -432,7 +432,7 @@ Images: `docs/relief_modes/`.
 ![Relief switch](relief_switch.png)
 
 `bench/relief_switch.py`: one frozen human drawn with `Hide Unseen Relief` on and off from 2 to
-32 m. Where a relief's features cover under 2 pixels the display draws it with the plain material
+32 m. Where a relief's features cover 3 pixels or fewer (faded to nothing) the display draws it with the plain material
 (no normal-map fetch); the difference is what the relief still added there. Images and their
 difference (×8): `docs/relief_switch/`.
 
@@ -482,7 +482,7 @@ the single unoriented Y-Y tile drawn before issue 21.
 `bench/relief_flicker.py`: one human frozen with its left elbow bent 68 degrees, drawn twice from
 distances 0.2 % apart (the figure moves by a fraction of a pixel, as between two frames of a slow
 walk); the mean change over the garments' and the skin's pixels, with the relief as drawn by
-default (faded out from 6 to 2.5 pixels per feature, then not drawn), forced on, forced on without
+default (faded out from 6 to 3 pixels per feature, then not drawn), forced on, forced on without
 mipmaps, and flat (what the motion alone changes).
 
 {relief_flicker}

@@ -42,7 +42,9 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   if (!posesDrawable(status, frames.getFixedFrame())) return false;
   // Visibility first (by where the human was last frame): the model skips the wrinkles' per-vertex
   // work while they are not drawn, and must do it in the very frame they are drawn again.
-  lod.hide_covered = updateDetailVisibility(camera, hide_unseen_relief, hide_covered);
+  const bool small = updateDetailVisibility(camera, hide_unseen_relief);
+  lod.hide_covered = hide_covered && small;
+  visual_.setVertexLit(hide_unseen_relief && small);
   model_.setWrinklesWanted(visual_.reliefShown(ReliefKind::kCloth));
   model_.update(bone_source_.root(), bones_, lod);
   visual_.update(model_.parts());
@@ -75,7 +77,7 @@ void DrawnHuman::clearStatuses(DisplayStatus& status) {
   status.clear(pose_status_);
 }
 
-bool DrawnHuman::updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief, bool hide_covered) {
+bool DrawnHuman::updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief) {
   const Eigen::AlignedBox3f bounds = model_.bounds();
   const bool placed = camera != nullptr && !bounds.isEmpty();
   double pixels_per_metre = 0.0;  // at the human's nearest point
@@ -84,7 +86,7 @@ bool DrawnHuman::updateDetailVisibility(const Ogre::Camera* camera, bool judge_r
     pixels_per_metre = pixelsPerMetre(view, bounds.cast<double>().exteriorDistance(view.position));
   }
   // The gap past hems and cuffs switches like a relief's features, with the same hysteresis.
-  const bool covered_hidden = hide_covered && placed && !cover_gap_visibility_.update(pixels_per_metre);
+  const bool small = placed && !cover_gap_visibility_.update(pixels_per_metre);
   const bool judged = judge_relief && placed;
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
     std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
@@ -93,7 +95,7 @@ bool DrawnHuman::updateDetailVisibility(const Ogre::Camera* camera, bool judge_r
     visual_.setReliefShown(kind, shown);
     visual_.setReliefFade(kind, judged ? static_cast<float>(visibility->fade()) : 1.0f);
   }
-  return covered_hidden;
+  return small;
 }
 
 bool DrawnHuman::posesDrawable(DisplayStatus& status, const std::string& fixed_frame) {

@@ -73,9 +73,9 @@ class DrawnHuman {
  private:
   bool posesDrawable(DisplayStatus& status, const std::string& fixed_frame);
   // Judges, from where the human was last frame, which reliefs show (if `judge_relief`) and
-  // whether what the clothes cover can be seen; returns true where it is to be hidden (only if
-  // `hide_covered`).
-  bool updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief, bool hide_covered);
+  // whether the human is small: its garments' gap too small to see into (HumanModel::kCoverGap),
+  // where what they cover is left out and lighting per vertex does.
+  bool updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief);
 
   TfBoneSource bone_source_;
   ForwardKinematics kinematics_;

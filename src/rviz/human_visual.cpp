@@ -36,6 +36,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices,
                                                        source.relief == ReliefKind::kCloth);
       part.material->setBackFacesCulled(source.closed);
+      part.material->setVertexLit(vertex_lit_);
       part.mesh = std::make_unique<SurfaceMeshObject>(scene_manager_, node_, part.material->name());
       part.mesh->setVisible(visible_);
       applyMaps(part);
@@ -66,6 +67,12 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.hidden_patches,
                             source.layout_id, source.bounds);
   }
+}
+
+void HumanVisual::setVertexLit(bool lit) {
+  if (lit == vertex_lit_) return;
+  vertex_lit_ = lit;
+  for (Part& part : parts_) part.material->setVertexLit(lit);
 }
 
 void HumanVisual::setVisible(bool visible) {

@@ -35,6 +35,8 @@ class HumanVisual {
   bool reliefShown(ReliefKind kind) const { return relief_shown_[slot(kind)]; }
   // Scales the relief strength of parts of `kind` (ReliefVisibility::fade: 0 to 1 with distance).
   void setReliefFade(ReliefKind kind, float fade);
+  // true: parts whose relief is not shown are lit per vertex (ReliefMaterial::setVertexLit).
+  void setVertexLit(bool lit);
   // A finished map's texture (3 channels for the skin, 4 for the garments' fold tiles), tiled once
   // per patch, on every part of its kind.
   void setNormalMap(const FinishedReliefMap& finished);
@@ -70,6 +72,7 @@ class HumanVisual {
   static std::size_t slot(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }  // in the arrays above
   NormalMap skin_map_, cloth_map_;
   bool visible_ = true;
+  bool vertex_lit_ = false;
   std::unique_ptr<SkeletonVisual> skeleton_;
   bool skeleton_visible_ = false;
 };

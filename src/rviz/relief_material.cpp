@@ -27,6 +27,11 @@ const char* const kBezierMaterial = "dressed_human/ReliefBezierSurface";
 const char* const kReliefFragment = "dressed_human/ReliefSurfaceFragment";
 const char* const kPlainFragment = "dressed_human/PlainSurfaceFragment";
 const char* const kFoldFragment = "dressed_human/FoldSurfaceFragment";
+const char* const kVertexLitFragment = "dressed_human/VertexLitFragment";
+const char* const kSurfaceVertex = "dressed_human/ReliefSurfaceVertex";
+const char* const kBezierVertex = "dressed_human/ReliefBezierVertex";
+const char* const kSurfaceVertexLit = "dressed_human/ReliefSurfaceVertexLit";
+const char* const kBezierVertexLit = "dressed_human/ReliefBezierVertexLit";
 
 std::string mediaDirectory() {
   const std::string package = ros::package::getPath("dressed_human");
@@ -176,16 +181,37 @@ ReliefMaterial::~ReliefMaterial() {
 }
 
 void ReliefMaterial::applyFragmentParameters() {
+  if (litPerVertex()) {
+    vertexParameters(material_)->setNamedConstant("diffuseColour", colour_);
+    return;
+  }
   const Ogre::GpuProgramParametersSharedPtr parameters = fragmentParameters(material_);
   parameters->setNamedConstant("diffuseColour", colour_);
   if (relief_shown_) parameters->setNamedConstant("reliefStrength", relief_strength_);
 }
 
+void ReliefMaterial::applyPrograms() {
+  Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
+  const bool lit = litPerVertex();
+  const char* vertex = bezier_vertices_ ? (lit ? kBezierVertexLit : kBezierVertex) : (lit ? kSurfaceVertexLit : kSurfaceVertex);
+  pass->setVertexProgram(vertex);
+  pass->setFragmentProgram(relief_shown_ ? relief_fragment_ : lit ? kVertexLitFragment : kPlainFragment);
+  // New programs come with their default parameters: everything set before is set again (the
+  // control points are, every frame).
+  wrinkle_strength_set_ = false;
+  applyFragmentParameters();
+}
+
 void ReliefMaterial::setReliefShown(bool shown) {
   if (shown == relief_shown_) return;
   relief_shown_ = shown;
-  material_->getTechnique(0)->getPass(0)->setFragmentProgram(shown ? relief_fragment_ : kPlainFragment);
-  applyFragmentParameters();
+  applyPrograms();
+}
+
+void ReliefMaterial::setVertexLit(bool lit) {
+  if (lit == vertex_lit_) return;
+  vertex_lit_ = lit;
+  if (!relief_shown_) applyPrograms();
 }
 
 void ReliefMaterial::setColour(float r, float g, float b, float a) {
@@ -238,6 +264,7 @@ void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
 }
 
 void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constants) {
+  if (litPerVertex()) return;  // no relief, and the lit program has no wrinkle parameters
   const WrinkleStrengthConstants wanted = constants ? *constants : WrinkleStrengthConstants{0.0f, 0.0f};
   if (wrinkle_strength_set_ && wanted.inverse_threshold == wrinkle_strength_.inverse_threshold &&
       wanted.inverse_saturation == wrinkle_strength_.inverse_saturation) {

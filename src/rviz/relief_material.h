@@ -52,6 +52,10 @@ class ReliefMaterial {
   // one, for a relief too small to see (ReliefVisibility). Colour and strength carry over.
   void setReliefShown(bool shown);
   bool reliefShown() const { return relief_shown_; }
+  // true: while the relief is not shown, the same plain lighting is computed per vertex instead
+  // of per pixel (a small human: its triangles cover a few pixels, and on a software renderer
+  // the fragment program is most of its cost).
+  void setVertexLit(bool lit);
   // 8-bit tangent-space normals (n * 0.5 + 0.5), width * height * channels bytes, with mipmaps:
   // RGB (3 channels) for the skin, the fold tiles' RGBA (4) for garments; another count throws
   // std::invalid_argument. One texture per map in the process: every material given the same
@@ -74,6 +78,9 @@ class ReliefMaterial {
   WrinkleStrengthConstants wrinkle_strength_;  // as last set (zeros: none)
   bool wrinkle_strength_set_ = false;
   bool relief_shown_ = true;
+  bool vertex_lit_ = false;
+  bool litPerVertex() const { return vertex_lit_ && !relief_shown_; }
+  void applyPrograms();  // the vertex and fragment programs the state above asks for
   Ogre::ColourValue colour_{0.8f, 0.7f, 0.6f, 1.0f};  // as last set, for a fragment program swap
   float relief_strength_ = 1.0f;
   void applyFragmentParameters();

@@ -1,4 +1,9 @@
 #version 120
+#ifdef VERTEX_LIT
+// The lighting came from the vertex program (relief_surface.vert, VERTEX_LIGHTING).
+varying vec4 litColour;
+void main() { gl_FragColor = litColour; }
+#else
 #ifdef ORIENTED_FOLDS
 // Explicit gradients: each fetch's lookup differs from pixel to pixel where the blend changes
 // orientation, so implicit derivatives would pick the wrong mip level there.
@@ -93,3 +98,4 @@ void main() {
   gl_FragColor = vec4(ambientColour.rgb * diffuseColour.rgb + lambert * diffuseColour.rgb + vec3(highlight),
                       diffuseColour.a);
 }
+#endif

@@ -24,6 +24,15 @@ uniform mat4 worldViewProj;
 uniform vec4 lightPositionObject;   // w = 0 for rviz's directional light
 uniform vec4 cameraPositionObject;
 
+#ifdef VERTEX_LIGHTING
+// A small human with its relief hidden: the plain lighting per vertex (the fragment program only
+// passes it on), since its triangles are a few pixels at most.
+uniform vec4 diffuseColour;
+uniform vec4 ambientColour;
+uniform float specularStrength;
+varying vec4 litColour;
+#endif
+
 #ifdef EVALUATE_BEZIER
 // P_ij of patch p at 16 p + 4 j + i (i along u). 192 patches: relief_material.h kMaxPatches.
 uniform vec4 controlPoints[3072];
@@ -128,4 +137,14 @@ void main() {
   normalObject = n;
   lightTangent = objectToTangent * lightObject;
   viewTangent = objectToTangent * viewObject;
+#ifdef VERTEX_LIGHTING
+  // relief_surface.frag's PLAIN_SURFACE lighting, in object space.
+  vec3 l = normalize(lightObject);
+  vec3 v = normalize(viewObject);
+  vec3 lit_normal = dot(n, v) < 0.0 ? -n : n;  // the side facing the viewer (thin cloth)
+  float lambert = max(dot(lit_normal, l), 0.0);
+  float highlight = pow(max(dot(lit_normal, normalize(l + v)), 0.0), 32.0) * specularStrength;
+  litColour = vec4(ambientColour.rgb * diffuseColour.rgb + lambert * diffuseColour.rgb + vec3(highlight),
+                   diffuseColour.a);
+#endif
 }

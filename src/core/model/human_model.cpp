@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "dressed_human/core/garments/garment_file.h"
@@ -61,6 +63,45 @@ Eigen::AlignedBox3f vertexBounds(const std::vector<Eigen::Vector3f>& positions) 
   return box;
 }
 
+// Per part of `rest` (innermost first), per patch: covered by the parts after it. Computed once
+// per process for the same surfaces (a crowd of one body and outfit, humans coming and going).
+std::shared_ptr<const std::vector<std::vector<bool>>> sharedCoveredPatches(
+    const std::vector<const std::vector<BezierPatch>*>& rest) {
+  struct Entry {
+    std::vector<std::vector<BezierPatch>> rest;
+    std::weak_ptr<const std::vector<std::vector<bool>>> covered;
+  };
+  static std::mutex mutex;
+  static std::vector<Entry> entries;
+  const auto same = [&](const std::vector<std::vector<BezierPatch>>& other) {
+    if (other.size() != rest.size()) return false;
+    for (std::size_t p = 0; p < rest.size(); ++p) {
+      if (!std::equal(other[p].begin(), other[p].end(), rest[p]->begin(), rest[p]->end(),
+                      [](const BezierPatch& a, const BezierPatch& b) { return a.controlPoints() == b.controlPoints(); })) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::lock_guard<std::mutex> lock(mutex);
+  entries.erase(std::remove_if(entries.begin(), entries.end(), [](const Entry& e) { return e.covered.expired(); }),
+                entries.end());
+  for (const Entry& entry : entries) {
+    if (!same(entry.rest)) continue;
+    if (auto covered = entry.covered.lock()) return covered;
+  }
+  auto covered = std::make_shared<std::vector<std::vector<bool>>>();
+  Entry entry;
+  for (std::size_t p = 0; p < rest.size(); ++p) {
+    const std::vector<const std::vector<BezierPatch>*> outer(rest.begin() + static_cast<std::ptrdiff_t>(p) + 1, rest.end());
+    covered->push_back(patchesCoveredBy(*rest[p], outer));
+    entry.rest.push_back(*rest[p]);
+  }
+  entry.covered = covered;
+  entries.push_back(std::move(entry));
+  return covered;
+}
+
 }  // namespace
 
 Outfit outfitFromName(const std::string& name) {
@@ -112,12 +153,9 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     cloth.insert(cloth.end(), dressed.rest_patches.begin(), dressed.rest_patches.end());
   }
   if (!cloth.empty()) relief_tile_size_[1] = typicalPatchSize(cloth);
-  // The skin and the garments' rest patches were built in the same rest pose.
-  for (std::size_t p = 0; p < parts_.size(); ++p) {
-    std::vector<const std::vector<BezierPatch>*> outer;
-    for (std::size_t g = p; g < garments_.size(); ++g) outer.push_back(&garments_[g].rest_patches);
-    covered_.push_back(patchesCoveredBy(p == 0 ? skin_.patches() : garments_[p - 1].rest_patches, outer));
-  }
+  std::vector<const std::vector<BezierPatch>*> rest{&skin_.patches()};  // built in the same rest pose
+  for (const DressedGarment& dressed : garments_) rest.push_back(&dressed.rest_patches);
+  covered_ = sharedCoveredPatches(rest);
 }
 
 Eigen::AlignedBox3f HumanModel::bounds() const {
@@ -198,7 +236,7 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     Tessellator& tessellator = tessellatorOf(p);
     const std::vector<BezierPatch>& patches = partPatches(p);
     const std::vector<int>* levels = &levelsFor(tessellator, partErrorBound(p), patches, lod);
-    const std::vector<bool>& covered = covered_[p];
+    const std::vector<bool>& covered = (*covered_)[p];
     const bool hide = lod.hide_covered && std::find(covered.begin(), covered.end(), true) != covered.end();
     if (hide) {
       drawn_levels_ = *levels;

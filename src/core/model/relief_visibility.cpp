@@ -46,10 +46,10 @@ ReliefVisibility::ReliefVisibility(double feature_size) : feature_size_(feature_
 
 bool ReliefVisibility::update(double pixels_per_metre) {
   const double pixels = feature_size_ * pixels_per_metre;
-  if (shown_ && pixels < kHidePixels) shown_ = false;
+  if (shown_ && pixels <= kHidePixels) shown_ = false;
   if (!shown_ && pixels > kShowPixels) shown_ = true;
-  const double t = std::clamp((pixels - kShowPixels) / (kFullPixels - kShowPixels), 0.0, 1.0);
-  fade_ = t * t * (3.0 - 2.0 * t);
+  const double t = std::clamp((pixels - kHidePixels) / (kFullPixels - kHidePixels), 0.0, 1.0);
+  fade_ = shown_ ? t * t * (3.0 - 2.0 * t) : 0.0;
   return shown_;
 }
 

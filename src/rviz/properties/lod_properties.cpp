@@ -44,12 +44,14 @@ LodProperties::LodProperties(rviz::Property* parent) {
   hide_unseen_relief_ = new rviz::BoolProperty(
       "Hide Unseen Relief", true,
       "Draw a relief (skin cells, cloth folds) with the plain material, without its normal map, while its features "
-      "cover under 2 pixels on screen (again above 2.5 pixels): it cannot be seen there, only paid for.",
+      "cover 3 pixels or fewer on screen, where it has faded to nothing (again above 3.1 pixels): it cannot be "
+      "seen there, only paid for. On a human so small that its garments' 2 cm gap covers 3 pixels or fewer, that "
+      "plain lighting is computed per vertex (its triangles cover a few pixels).",
       parent);
   hide_covered_ = new rviz::BoolProperty(
       "Hide Covered Surfaces", true,
       "Leave out what the clothes cover (the skin under the jacket and skirt, their patches dropped to the coarsest "
-      "level) while the gap between cloth and body (2 cm) covers under 2 pixels on screen (again above 2.5 "
+      "level) while the gap between cloth and body (2 cm) covers 3 pixels or fewer on screen (again above 3.1 "
       "pixels): nothing of it can be seen past a hem or cuff there, and on a software renderer rasterizing it is "
       "a large part of a small human's cost.",
       parent);

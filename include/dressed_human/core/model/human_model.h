@@ -137,7 +137,7 @@ class HumanModel {
   std::size_t drawnTriangleCount() const;
   // Per part, per patch: covered by the parts outside it (skin by every garment, a garment by
   // those listed after it), judged at rest (patchesCoveredBy).
-  const std::vector<bool>& coveredPatches(std::size_t part) const { return covered_.at(part); }
+  const std::vector<bool>& coveredPatches(std::size_t part) const { return covered_->at(part); }
   // Part `part`'s posed Bezier patches and the tessellation level each got in the last update()
   // (for error budgets: geometricErrorBound(patch, level)).
   const std::vector<BezierPatch>& partPatches(std::size_t part) const;
@@ -188,7 +188,8 @@ class HumanModel {
   std::vector<int> uniform_levels_;
   std::vector<int> wanted_levels_;  // scratch: what the screen error asks for, per patch
   std::vector<int> drawn_levels_;   // scratch: the levels with hidden patches at 1
-  std::vector<std::vector<bool>> covered_;  // per part, per patch
+  // Per part, per patch; shared by the humans of the same body and outfit.
+  std::shared_ptr<const std::vector<std::vector<bool>>> covered_;
   VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
   bool wrinkles_wanted_ = true;
   struct Displacement {

@@ -1,14 +1,14 @@
 #pragma once
 // Whether a relief can be seen on screen, per human and relief kind, so that a renderer can draw
-// it with a cheaper, flat material when it cannot. A relief's features (skin cells, cloth folds)
-// that cover fewer than about two pixels are averaged away by the normal map's mip chain anyway:
-// sampling it then buys a flat normal at the fragment shader's full price. The switch has
-// hysteresis (off below kHidePixels, on again above kShowPixels), so a human walking at the
-// threshold distance does not pop between the two looks every frame. Nor does the relief pop on
-// or off at the switch: fade() brings it in from nothing at kShowPixels to full at kFullPixels
-// (a renderer scales the relief's strength by it), so it is already flat where it is switched
-// off and still flat where it is switched on, and it fades out as features near pixel size,
-// where a normal map would shimmer.
+// it with a cheaper, flat material when it cannot. fade() brings a relief in from nothing at
+// kHidePixels per feature to full at kFullPixels (a renderer scales the relief's strength by
+// it): below a few pixels a normal map's features are averaged away by its mip chain or
+// shimmer. Where the fade is 0 the relief material would draw a flat surface at its full price
+// (on a software renderer the garments' fold shader is most of a small human's cost), so the
+// switch turns the plain material on there. It has hysteresis (off at kHidePixels, on again
+// above kShowPixels), so a human walking at the threshold distance does not switch materials
+// every frame, and does not pop: the fade is 0 where it switches off and under 0.004 where it
+// switches on.
 
 #include <vector>
 
@@ -26,8 +26,8 @@ double typicalPatchSize(const std::vector<BezierPatch>& patches);
 
 class ReliefVisibility {
  public:
-  static constexpr double kHidePixels = 2.0;
-  static constexpr double kShowPixels = 2.5;
+  static constexpr double kHidePixels = 3.0;
+  static constexpr double kShowPixels = 3.1;
   static constexpr double kFullPixels = 6.0;
 
   // `feature_size`: metres on the surface between neighbouring features of the relief (> 0).
@@ -37,7 +37,8 @@ class ReliefVisibility {
   // returns shown().
   bool update(double pixels_per_metre);
   bool shown() const { return shown_; }
-  // How much of the relief to draw: 0 up to kShowPixels, 1 from kFullPixels, a smoothstep
+  // How much of the relief to draw: 0 while hidden (up to kHidePixels at least), 1 from
+  // kFullPixels, a smoothstep from kHidePixels
   // between (by the last update; 1 before any).
   double fade() const { return fade_; }
   double featureSize() const { return feature_size_; }
