@@ -45,8 +45,9 @@ def main():
             shots = {}
             for hide in ("true", "false"):
                 path = os.path.join(images, "%gm_hide_%s.png" % (distance, hide))
+                # Aimed at the human's body frame: the distance is to the human wherever the node put it.
                 rs.harness("dressed_human/DressedHuman", 1, 3, ["--set", "Hide Unseen Relief=" + hide], path, env,
-                           distance)
+                           distance, target_frame="body_0")
                 shots[hide] = numpy.asarray(Image.open(path).convert("RGB")).astype(numpy.float64)
             mask = figure_mask(shots["false"]) | figure_mask(shots["true"])
             difference = numpy.abs(shots["true"] - shots["false"]).max(axis=2)
@@ -63,7 +64,7 @@ def main():
     lines += ["| %g m | %d | %.2f | %.0f |" % row for row in rows]
     lines.append("")
     lines.append("Absolute difference (largest of R, G, B; grey levels 0-255) over the figure's pixels between "
-                 "'Hide Unseen Relief' on and off, one human with its walk frozen, rviz's default view in a 1000 x "
+                 "'Hide Unseen Relief' on and off, one human with its walk frozen, an orbit view of its body frame in a 1000 x "
                  "700 panel; `bench/relief_switch.py`.")
     if args.chart:
         import matplotlib

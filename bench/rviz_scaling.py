@@ -88,13 +88,16 @@ def drawn(path, places, orbit):
                >= MIN_FIGURE_PIXELS)
 
 
-def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0, focal_y=0.0, env_script=None):
+def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0, focal_y=0.0, env_script=None,
+            target_frame=None):
+    """`target_frame`: the orbit view circles that frame's origin (else the point (0, focal_y,
+    FOCAL_Z) of the fixed frame)."""
     # stdbuf: the peer's plugin aborts in a destructor as the harness exits, after its figures.
     command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", env_script or os.path.join(DEVEL, "env.sh"),
                "stdbuf", "-oL", os.path.join(DEVEL, "lib", "dressed_human", "rviz_display_scaling"), display_class,
-               str(count), str(seconds), "--distance", str(distance), "--focal", "0;%g;%g" % (focal_y, FOCAL_Z),
-               "--view", "Yaw=%g" % YAW,
-               "--view", "Pitch=%g" % pitch(count), "--view", "Target Frame=<Fixed Frame>", "--screenshot",
+               str(count), str(seconds), "--distance", str(distance),
+               "--focal", "0;0;0" if target_frame else "0;%g;%g" % (focal_y, FOCAL_Z), "--view", "Yaw=%g" % YAW,
+               "--view", "Pitch=%g" % pitch(count), "--view", "Target Frame=" + (target_frame or "<Fixed Frame>"), "--screenshot",
                screenshot] + extra
     output = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             universal_newlines=True, timeout=seconds + 180).stdout
