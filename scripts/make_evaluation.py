@@ -7,7 +7,7 @@ Reads from RESULTS_DIR: bench_*.json (Google Benchmark, repetitions with aggrega
 scene_budget.csv (src/tools/scene_budget.cpp), relief_modes.csv (bench/relief_modes.py),
 rviz_scaling.csv (bench/rviz_scaling.py), machine.txt; from docs/:
 fourier_order_sweep_cmu_02_01.csv, tessellation_accuracy.csv, node_cpu.md, rviz_scaling.md,
-relief_modes.md, relief_flicker.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
+relief_modes.md, relief_flicker.md, rviz_memory.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
 docs/skin_map_speed.png, docs/EVALUATION.md, and the README's "Speed" section (between its
 generated-section markers). A missing input is an error: the report is all measured or not
 written.
@@ -309,6 +309,7 @@ def readme_speed_section(results, machine, skeleton_lines, rviz_verdict):
         machine=machine, skeleton_table="\n".join(skeleton_lines), skin_default=in_us(default), skin_fine=in_us(fine),
         node_cpu=read_text(os.path.join(DOCS, "node_cpu.md")), node_verdict=node_cpu_verdict(),
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")), rviz_verdict=rviz_verdict,
+        rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")))
 
 
@@ -354,6 +355,7 @@ def main():
         skin_table="\n".join(skin_lines), skin_verdict=skin_verdict,
         rviz_verdict=rviz_verdict,
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")),
+        rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")),
         relief_flicker=read_text(os.path.join(DOCS, "relief_flicker.md")),
         stability=stability)
@@ -517,6 +519,12 @@ the URDF, in one run. Each point saves a screenshot as its measurement starts an
 
 {rviz_verdict}
 
+Memory per additional human: the table's resident memory grows with time as TF streams in, with
+or without humans drawn, so `bench/rviz_memory.py` compares runs of the same length with the same
+humans publishing that differ only in what rviz draws:
+
+{rviz_memory}
+
 "rviz CPU per human" is the whole rviz process (its thread, Ogre, and Mesa's software rasteriser
 on both cores) minus the empty scene, divided by the humans; "the display's own update" is what
 the DressedHuman display measures of its update() on rviz's thread (TF lookups, posing, level of
@@ -556,6 +564,10 @@ level of detail) against the same number of RobotModel displays of the same URDF
 {rviz_scaling}
 
 {rviz_verdict}
+
+Memory per additional human, with the same humans publishing TF in every run (`bench/rviz_memory.py`):
+
+{rviz_memory}
 """
 
 if __name__ == "__main__":
