@@ -17,7 +17,6 @@ Needs the package built in build/ and xvfb-run.
 """
 import argparse
 import os
-import re
 import sys
 import tempfile
 import time
@@ -26,16 +25,15 @@ import rviz_scaling as rs
 from ros_processes import report, ros_environment, start, stop
 
 
-def run(display_class, displays, seconds, extra, shots, name, env, humans):
+def run(display_class, displays, seconds, extra, shots, name, env, humans, shown):
+    """rviz's resident memory (MB) at the end of a run that must draw the first `shown` humans."""
     screenshot = os.path.join(shots, name + ".png")
     point = rs.harness(display_class, displays, seconds, extra, screenshot, env)
-    if display_class != "rviz/Grid":
-        drawn_count = displays if displays < humans and "Humans=Every Human in TF" not in extra else humans
-        places = rs.positions(humans)[:drawn_count]
-        orbit = rs.view(humans, 12.0)
-        drawn = min(rs.drawn(screenshot[:-4] + "_start.png", places, orbit), rs.drawn(screenshot, places, orbit))
-        if drawn < drawn_count:
-            raise RuntimeError("%s: %d of %d humans drawn" % (name, drawn, drawn_count))
+    places = rs.positions(humans)[:shown]
+    orbit = rs.view(humans, 12.0)
+    drawn = min(rs.drawn(screenshot[:-4] + "_start.png", places, orbit), rs.drawn(screenshot, places, orbit))
+    if drawn < shown:
+        raise RuntimeError("%s: %d of %d humans drawn" % (name, drawn, shown))
     print(name, point, file=sys.stderr)
     return point["rss_mb"]
 
@@ -51,11 +49,7 @@ def main():
     shots = tempfile.mkdtemp()
     env = ros_environment(11914)
     node = os.path.join(rs.DEVEL, "lib", "dressed_human", "skeleton_publisher")
-    with open(os.path.join(rs.ROOT, "config", "motions", "walk.yaml")) as f:
-        in_place = re.sub(r"(\n\s*forward_speed:\s*)[-+0-9.eE]+", r"\g<1>0.0", f.read())
-    motion = os.path.join(shots, "walk_in_place.yaml")
-    with open(motion, "w") as f:
-        f.write(in_place)
+    motion = rs.walk_in_place_motion(shots)
     processes = [start(["roscore", "-p", "11914"], env)]
     n = args.humans
     try:
@@ -64,12 +58,12 @@ def main():
         master = rosgraph.Master("/rviz_memory", master_uri=env["ROS_MASTER_URI"])
         nodes = rs.start_humans(n, node, motion, os.path.join(rs.ROOT, "urdf", "human.urdf"), master, env)
         try:
-            grid = run("rviz/Grid", 0, args.seconds, [], shots, "grid", env, n)
-            grid_long = run("rviz/Grid", 0, 2 * args.seconds, [], shots, "grid_long", env, n)
-            one = run("dressed_human/DressedHuman", 1, args.seconds, [], shots, "one", env, n)
-            many = run("dressed_human/DressedHuman", n, args.seconds, [], shots, "many", env, n)
+            grid = run("rviz/Grid", 0, args.seconds, [], shots, "grid", env, n, 0)
+            grid_long = run("rviz/Grid", 0, 2 * args.seconds, [], shots, "grid_long", env, n, 0)
+            one = run("dressed_human/DressedHuman", 1, args.seconds, [], shots, "one", env, n, 1)
+            many = run("dressed_human/DressedHuman", n, args.seconds, [], shots, "many", env, n, n)
             crowd = run("dressed_human/DressedHuman", 1, args.seconds, ["--set", "Humans=Every Human in TF"], shots,
-                        "crowd", env, n)
+                        "crowd", env, n, n)
         finally:
             for process in nodes:
                 stop(process)

@@ -150,6 +150,18 @@ def chart(results, counts, distances, distance_count, path):
     plt.close(figure)
 
 
+def walk_in_place_motion(directory):
+    """A copy of config/motions/walk.yaml with forward_speed 0, in `directory`; returns its path."""
+    with open(os.path.join(ROOT, "config", "motions", "walk.yaml")) as f:
+        in_place, replaced = re.subn(r"(\n\s*forward_speed:\s*)[-+0-9.eE]+", r"\g<1>0.0", f.read())
+    if replaced != 1:
+        raise RuntimeError("config/motions/walk.yaml: expected one root forward_speed to set to 0")
+    motion = os.path.join(directory, "walk_in_place.yaml")
+    with open(motion, "w") as f:
+        f.write(in_place)
+    return motion
+
+
 def start_humans(count, node, motion, urdf, master, env):
     """One skeleton_publisher per human at positions(count); returns the processes."""
     nodes = []
@@ -226,14 +238,7 @@ def main():
 
     env = ros_environment(11911)
     node = os.path.join(DEVEL, "lib", "dressed_human", "skeleton_publisher")
-    with open(os.path.join(ROOT, "config", "motions", "walk.yaml")) as f:
-        motion_text = f.read()
-    in_place, replaced = re.subn(r"(\n\s*forward_speed:\s*)[-+0-9.eE]+", r"\g<1>0.0", motion_text)
-    if replaced != 1:
-        raise RuntimeError("config/motions/walk.yaml: expected one root forward_speed to set to 0")
-    motion = os.path.join(tempfile.mkdtemp(), "walk_in_place.yaml")
-    with open(motion, "w") as f:
-        f.write(in_place)
+    motion = walk_in_place_motion(tempfile.mkdtemp())
     urdf = os.path.join(ROOT, "urdf", "human.urdf")
     near = args.distances[0]
     points = [(n, near) for n in args.counts]

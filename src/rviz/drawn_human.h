@@ -48,9 +48,9 @@ class DrawnHuman {
   // Bones from TF, then surfaces at `lod` (a displaced relief: `displaced_level` instead) and the
   // relief shown or hidden by its size on screen (`hide_unseen_relief`), and what the clothes
   // cover left out while the gap past hems is too small to see into (`hide_covered`,
-  // LevelOfDetail::hide_covered). False when the human is
-  // not drawn this frame: TF lacks a bone, or a pose is beyond what rviz can draw (then the
-  // human hides and a status names the frame until TF is sane again).
+  // LevelOfDetail::hide_covered). False when the human is not drawn this frame: TF lacks a
+  // bone, or a pose is beyond what rviz can draw (then the human hides and a status names the
+  // frame until TF is sane again).
   bool update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod, const Ogre::Camera* camera,
               bool hide_unseen_relief, bool hide_covered);
   // Wall time of the newest update() that found every bone in TF, at most kFreshSeconds old

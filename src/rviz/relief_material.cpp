@@ -166,7 +166,7 @@ ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_verti
                   ->clone(name_);
   if (oriented_folds) {
     material_->getTechnique(0)->getPass(0)->setFragmentProgram(relief_fragment_);
-    applyFragmentParameters();
+    applyShadingParameters();
   }
   // Flat until a relief map arrives: normals (0, 0, 1), or both fold tiles' x, y zero.
   static const auto flat_rgb = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 255});
@@ -180,7 +180,7 @@ ReliefMaterial::~ReliefMaterial() {
   texture_.reset();
 }
 
-void ReliefMaterial::applyFragmentParameters() {
+void ReliefMaterial::applyShadingParameters() {
   if (litPerVertex()) {
     vertexParameters(material_)->setNamedConstant("diffuseColour", colour_);
     return;
@@ -199,7 +199,7 @@ void ReliefMaterial::applyPrograms() {
   // New programs come with their default parameters: everything set before is set again (the
   // control points are, every frame).
   wrinkle_strength_set_ = false;
-  applyFragmentParameters();
+  applyShadingParameters();
 }
 
 void ReliefMaterial::setReliefShown(bool shown) {
@@ -216,7 +216,7 @@ void ReliefMaterial::setVertexLit(bool lit) {
 
 void ReliefMaterial::setColour(float r, float g, float b, float a) {
   colour_ = Ogre::ColourValue(r, g, b, a);
-  applyFragmentParameters();
+  applyShadingParameters();
   Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
   if (a < 1.0f) {
     pass->setSceneBlending(Ogre::SBT_TRANSPARENT_ALPHA);
@@ -233,7 +233,7 @@ void ReliefMaterial::setBackFacesCulled(bool culled) {
 
 void ReliefMaterial::setReliefStrength(float strength) {
   relief_strength_ = strength;
-  applyFragmentParameters();
+  applyShadingParameters();
 }
 
 void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {

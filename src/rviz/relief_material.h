@@ -83,7 +83,7 @@ class ReliefMaterial {
   void applyPrograms();  // the vertex and fragment programs the state above asks for
   Ogre::ColourValue colour_{0.8f, 0.7f, 0.6f, 1.0f};  // as last set, for a fragment program swap
   float relief_strength_ = 1.0f;
-  void applyFragmentParameters();
+  void applyShadingParameters();  // colour and strength, to whichever program shades
 };
 
 }  // namespace dressed_human

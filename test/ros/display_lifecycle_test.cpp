@@ -122,6 +122,36 @@ class DisplayLifecycleTest : public ::testing::Test {
     }
     return text;
   }
+  // The human tiny on screen (rviz's default orbit in a 60 px view) or large (a 1200 px view 2 m
+  // from its body frame, wherever the walk has taken it), then ten frames.
+  void viewHuman(bool near) {
+    rviz::ViewController* view = manager_->getViewManager()->getCurrent();
+    ASSERT_NE(view, nullptr);
+    if (!default_distance_.isValid()) {
+      default_distance_ = view->subProp("Distance")->getValue();
+      default_focal_ = view->subProp("Focal Point")->getValue();
+    }
+    const int height = near ? 1200 : 60;
+    panel_->resize(height * 4 / 3, height);
+    Ogre::Vector3 body;
+    Ogre::Quaternion unused;
+    ASSERT_TRUE(manager_->getFrameManager()->getTransform("body", ros::Time(), body, unused));
+    view->subProp("Focal Point")
+        ->setValue(near ? QVariant(QString("%1;%2;%3").arg(body.x).arg(body.y).arg(body.z)) : default_focal_);
+    view->subProp("Distance")->setValue(near ? QVariant(2.0) : default_distance_);
+    frames(10);
+  }
+  // rviz's default view in the suite's 320 x 240 panel again.
+  void restoreView() {
+    rviz::ViewController* view = manager_->getViewManager()->getCurrent();
+    if (view != nullptr && default_distance_.isValid()) {
+      view->subProp("Distance")->setValue(default_distance_);
+      view->subProp("Focal Point")->setValue(default_focal_);
+    }
+    panel_->resize(320, 240);
+    frames(5);
+  }
+  QVariant default_distance_, default_focal_;  // of rviz's view, kept by viewHuman()
   // The status called `name`, or nullptr.
   const rviz::StatusProperty* status(const QString& name) const {
     for (int i = 0; i < display_->numChildren(); ++i) {
@@ -236,84 +266,55 @@ TEST_F(DisplayLifecycleTest, UnseenReliefIsDrawnWithThePlainMaterial) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
   display_->subProp("Relief")->setValue("Bump mapping");
   display_->subProp("Hide Unseen Relief")->setValue(true);
-  rviz::ViewController* view = manager_->getViewManager()->getCurrent();
-  ASSERT_NE(view, nullptr);
-  const QVariant default_distance = view->subProp("Distance")->getValue();
-  const QVariant default_focal = view->subProp("Focal Point")->getValue();
   auto count = [](const std::vector<std::string>& programs, const std::string& name) {
     return std::count(programs.begin(), programs.end(), name);
   };
   // Too small for the relief is here also too small for per-pixel lighting: lit per vertex.
   const std::string plain = "dressed_human/VertexLitFragment", skin = "dressed_human/ReliefSurfaceFragment",
                     folds = "dressed_human/FoldSurfaceFragment";
-  for (const int height : {60, 1200, 60}) {
-    panel_->resize(height * 4 / 3, height);
-    // Near: 2 m from where the walking human is now (it walks away from the default view).
-    Ogre::Vector3 body;
-    Ogre::Quaternion unused;
-    ASSERT_TRUE(manager_->getFrameManager()->getTransform("body", ros::Time(), body, unused));
-    view->subProp("Focal Point")
-        ->setValue(height < 100 ? default_focal : QVariant(QString("%1;%2;%3").arg(body.x).arg(body.y).arg(body.z)));
-    view->subProp("Distance")->setValue(height < 100 ? default_distance : QVariant(2.0));
-    frames(10);
+  for (const bool near : {false, true, false}) {
+    viewHuman(near);
     const std::vector<std::string> programs = fragmentPrograms();
     std::string listed;
     for (const std::string& program : programs) listed += program + " ";
     ASSERT_EQ(programs.size(), 3u) << "skin, skirt and jacket";
-    if (height < 100) {
-      EXPECT_EQ(count(programs, plain), 3) << height << " px: " << listed;
+    if (!near) {
+      EXPECT_EQ(count(programs, plain), 3) << "60 px: " << listed;
     } else {
-      EXPECT_EQ(count(programs, skin), 1) << height << " px at 2 m: " << listed;
-      EXPECT_EQ(count(programs, folds), 2) << height << " px at 2 m: " << listed;
+      EXPECT_EQ(count(programs, skin), 1) << "1200 px at 2 m: " << listed;
+      EXPECT_EQ(count(programs, folds), 2) << "1200 px at 2 m: " << listed;
     }
   }
   display_->subProp("Hide Unseen Relief")->setValue(false);
   frames(5);
   EXPECT_EQ(count(fragmentPrograms(), skin) + count(fragmentPrograms(), folds), 3) << "Hide Unseen Relief off";
   display_->subProp("Hide Unseen Relief")->setValue(true);
-  view->subProp("Distance")->setValue(default_distance);
-  view->subProp("Focal Point")->setValue(default_focal);
-  panel_->resize(320, 240);
-  frames(5);
+  restoreView();
 }
 
 // What the clothes cover is left out (fewer triangles drawn) while the human is too small for
 // its 2 cm gap to be seen into, and drawn again up close or with 'Hide Covered Surfaces' off.
 TEST_F(DisplayLifecycleTest, CoveredSurfacesAreLeftOutOnlyWhileTooSmallToSee) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
-  rviz::ViewController* view = manager_->getViewManager()->getCurrent();
-  ASSERT_NE(view, nullptr);
-  const QVariant default_distance = view->subProp("Distance")->getValue();
-  const QVariant default_focal = view->subProp("Focal Point")->getValue();
   // A fixed level: the count then does not follow the walk.
   display_->subProp("Level of Detail")->setValue("Fixed");
   display_->subProp("Tessellation Level")->setValue(4);
-  const auto drawnTriangles = [&](bool hide, int height) {
+  const auto drawnTriangles = [&](bool hide, bool near) {
     display_->subProp("Hide Covered Surfaces")->setValue(hide);
-    panel_->resize(height * 4 / 3, height);
-    Ogre::Vector3 body;
-    Ogre::Quaternion unused;
-    EXPECT_TRUE(manager_->getFrameManager()->getTransform("body", ros::Time(), body, unused));
-    view->subProp("Focal Point")
-        ->setValue(height < 100 ? default_focal : QVariant(QString("%1;%2;%3").arg(body.x).arg(body.y).arg(body.z)));
-    view->subProp("Distance")->setValue(height < 100 ? default_distance : QVariant(2.0));
-    frames(10);
+    viewHuman(near);
     const rviz::StatusProperty* surfaces = status("Surfaces");
     const QStringList words = surfaces ? surfaces->getValue().toString().split(' ') : QStringList();
     const int at = words.indexOf("triangles");
     return at > 0 ? words[at - 1].toInt() : -1;
   };
-  const int all = drawnTriangles(false, 60);
+  const int all = drawnTriangles(false, false);
   ASSERT_GT(all, 0) << allStatuses();
-  EXPECT_LT(drawnTriangles(true, 60), 0.85 * all) << "small on screen: the covered skin left out";
-  EXPECT_EQ(drawnTriangles(true, 1200), all) << "2 m away in a large view: everything drawn";
-  EXPECT_LT(drawnTriangles(true, 60), 0.85 * all) << "small again";
+  EXPECT_LT(drawnTriangles(true, false), 0.85 * all) << "small on screen: the covered skin left out";
+  EXPECT_EQ(drawnTriangles(true, true), all) << "2 m away in a large view: everything drawn";
+  EXPECT_LT(drawnTriangles(true, false), 0.85 * all) << "small again";
   display_->subProp("Hide Covered Surfaces")->setValue(true);
   display_->subProp("Level of Detail")->setValue("Automatic");
-  view->subProp("Distance")->setValue(default_distance);
-  view->subProp("Focal Point")->setValue(default_focal);
-  panel_->resize(320, 240);
-  frames(5);
+  restoreView();
 }
 
 // Under Xvfb the GL is Mesa's llvmpipe: "Automatic" (the default) evaluates the vertices on the

@@ -38,8 +38,7 @@ class ReliefVisibility {
   bool update(double pixels_per_metre);
   bool shown() const { return shown_; }
   // How much of the relief to draw: 0 while hidden (up to kHidePixels at least), 1 from
-  // kFullPixels, a smoothstep from kHidePixels
-  // between (by the last update; 1 before any).
+  // kFullPixels, a smoothstep from kHidePixels between (by the last update; 1 before any).
   double fade() const { return fade_; }
   double featureSize() const { return feature_size_; }
 
