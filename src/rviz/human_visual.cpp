@@ -123,23 +123,17 @@ void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
 void HumanVisual::setNormalMap(const FinishedReliefMap& finished) {
   if (!finished.map) return;  // a failed build: the display reports its error
   const ReliefKind kind = finished.kind;
-  NormalMap& map = kind == ReliefKind::kSkin ? skin_map_ : cloth_map_;
-  map.bytes = finished.normal_bytes;
-  map.channels = finished.normal_channels;
-  map.width = finished.map->width;
-  map.height = finished.map->height;
+  (kind == ReliefKind::kSkin ? skin_map_ : cloth_map_) = finished.normal_map;
   for (Part& part : parts_) {
     if (part.relief == kind) applyMaps(part);
   }
 }
 
 void HumanVisual::applyMaps(Part& part) const {
-  const NormalMap& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
+  const std::shared_ptr<const EncodedNormalMap>& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
   part.material->setReliefStrength(reliefStrength(part.relief));
   part.material->setReliefShown(relief_shown_[slot(part.relief)]);
-  if (map.width > 0) {
-    part.material->setNormalMap(map.bytes, map.channels, map.width, map.height);
-  }
+  if (map) part.material->setNormalMap(map);
 }
 
 }  // namespace dressed_human

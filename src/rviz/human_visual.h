@@ -54,10 +54,6 @@ class HumanVisual {
     std::unique_ptr<ReliefMaterial> material;
     std::unique_ptr<SurfaceMeshObject> mesh;
   };
-  struct NormalMap {
-    std::shared_ptr<const std::vector<std::uint8_t>> bytes;
-    int channels = 3, width = 0, height = 0;
-  };
   void applyMaps(Part& part) const;
 
   Ogre::SceneManager* scene_manager_;
@@ -70,7 +66,7 @@ class HumanVisual {
   std::array<float, 2> relief_fade_{{1.0f, 1.0f}};  // by ReliefKind
   float reliefStrength(ReliefKind kind) const;  // the user's times the fade
   static std::size_t slot(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }  // in the arrays above
-  NormalMap skin_map_, cloth_map_;
+  std::shared_ptr<const EncodedNormalMap> skin_map_, cloth_map_;  // null until built
   bool visible_ = true;
   bool vertex_lit_ = false;
   std::unique_ptr<SkeletonVisual> skeleton_;

@@ -65,7 +65,7 @@ std::string programProblem(const std::string& material_name) {
 
 // One Ogre texture per normal map of the process, alive while a material uses it.
 struct ReliefMaterial::SharedTexture {
-  std::shared_ptr<const std::vector<std::uint8_t>> bytes;  // the key; kept so its address stays unique
+  std::shared_ptr<const EncodedNormalMap> map;  // the key; kept so its address stays unique
   Ogre::TexturePtr texture;
   ~SharedTexture() {
     if (texture) Ogre::TextureManager::getSingleton().remove(texture);
@@ -76,14 +76,48 @@ namespace {
 
 std::map<const void*, std::weak_ptr<ReliefMaterial::SharedTexture>> shared_textures;  // rviz's thread only
 
-// Mip levels of the normal-map textures: Ogre's full chain, or none when the environment says
-// DRESSED_HUMAN_RELIEF_MIPMAPS=0 (bench/relief_flicker.py measures what the chain is worth).
-int normalMapMipmaps() {
+// Whether the normal-map textures get their mip levels (EncodedNormalMap's): yes, unless the
+// environment says DRESSED_HUMAN_RELIEF_MIPMAPS=0 (bench/relief_flicker.py measures what the
+// chain is worth).
+bool normalMapMipmaps() {
   const char* setting = std::getenv("DRESSED_HUMAN_RELIEF_MIPMAPS");
-  if (setting == nullptr || std::string(setting) == "1") return Ogre::MIP_DEFAULT;
-  if (std::string(setting) == "0") return 0;
+  if (setting == nullptr || std::string(setting) == "1") return true;
+  if (std::string(setting) == "0") return false;
   throw std::invalid_argument("DRESSED_HUMAN_RELIEF_MIPMAPS='" + std::string(setting) +
-                              "' must be 0 (no mipmaps) or 1 (the default, a full chain)");
+                              "' must be 0 (no mipmaps) or 1 (the default, the maps' own chain)");
+}
+
+// The map's levels, each checked against the size it must have.
+Ogre::TexturePtr uploadNormalMap(const EncodedNormalMap& map, const std::string& name) {
+  if (map.channels != 3 && map.channels != 4) {
+    throw std::invalid_argument("normal map " + name + ": " + std::to_string(map.channels) + " channels (3 or 4)");
+  }
+  if (map.width <= 0 || map.height <= 0 || map.levels.empty()) {
+    throw std::invalid_argument("normal map " + name + ": " + std::to_string(map.width) + " x " +
+                                std::to_string(map.height) + " pixels, " + std::to_string(map.levels.size()) + " levels");
+  }
+  const std::size_t levels = normalMapMipmaps() ? map.levels.size() : 1;
+  const Ogre::PixelFormat format = map.channels == 4 ? Ogre::PF_BYTE_RGBA : Ogre::PF_BYTE_RGB;
+  for (std::size_t level = 0; level < levels; ++level) {
+    const std::size_t expected = static_cast<std::size_t>(std::max(1, map.width >> level)) *
+                                 static_cast<std::size_t>(std::max(1, map.height >> level)) *
+                                 static_cast<std::size_t>(map.channels);
+    if (map.levels[level].size() != expected) {
+      throw std::invalid_argument("normal map " + name + ": level " + std::to_string(level) + " has " +
+                                  std::to_string(map.levels[level].size()) + " bytes, not " + std::to_string(expected));
+    }
+  }
+  // No TU_AUTOMIPMAP: the GPU would average the encoded normals (EncodedNormalMap says why not).
+  Ogre::TexturePtr texture = Ogre::TextureManager::getSingleton().createManual(
+      name, kGroup, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(map.width), static_cast<Ogre::uint>(map.height),
+      static_cast<int>(levels) - 1, format, Ogre::TU_STATIC_WRITE_ONLY);
+  for (std::size_t level = 0; level < levels; ++level) {
+    const Ogre::PixelBox box(static_cast<Ogre::uint32>(std::max(1, map.width >> level)),
+                             static_cast<Ogre::uint32>(std::max(1, map.height >> level)), 1, format,
+                             const_cast<std::uint8_t*>(map.levels[level].data()));
+    texture->getBuffer(0, level)->blitFromMemory(box);
+  }
+  return texture;
 }
 std::size_t texture_count = 0;  // for unique Ogre names
 
@@ -169,10 +203,10 @@ ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_verti
     applyShadingParameters();
   }
   // Flat until a relief map arrives: normals (0, 0, 1), or both fold tiles' x, y zero.
-  static const auto flat_rgb = std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 255});
+  static const auto flat_rgb = std::make_shared<const EncodedNormalMap>(EncodedNormalMap{1, 1, 3, {{128, 128, 255}}});
   static const auto flat_folds =
-      std::make_shared<const std::vector<std::uint8_t>>(std::vector<std::uint8_t>{128, 128, 128, 128});
-  setNormalMap(oriented_folds ? flat_folds : flat_rgb, normal_channels_, 1, 1);
+      std::make_shared<const EncodedNormalMap>(EncodedNormalMap{1, 1, 4, {{128, 128, 128, 128}}});
+  setNormalMap(oriented_folds ? flat_folds : flat_rgb);
 }
 
 ReliefMaterial::~ReliefMaterial() {
@@ -279,30 +313,29 @@ void ReliefMaterial::setWrinkleStrength(const WrinkleStrengthConstants* constant
   parameters->setNamedConstant("wrinkleInverseSaturation", constants->inverse_saturation);
 }
 
-void ReliefMaterial::setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& bytes, int channels, int width,
-                                  int height) {
-  if (channels != normal_channels_) {
+void ReliefMaterial::setNormalMap(const std::shared_ptr<const EncodedNormalMap>& map) {
+  if (!map || map->channels != normal_channels_) {
     throw std::invalid_argument("material " + name_ + " takes a normal map of " + std::to_string(normal_channels_) +
-                                " channels, given " + std::to_string(channels));
+                                " channels, given " + (map ? std::to_string(map->channels) : std::string("none")));
   }
-  if (!bytes || width <= 0 || height <= 0 ||
-      bytes->size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels)) {
-    throw std::invalid_argument("normal map of " + std::to_string(bytes ? bytes->size() : 0) + " bytes does not match " +
-                                std::to_string(width) + " x " + std::to_string(height) + " x " + std::to_string(channels));
-  }
-  std::shared_ptr<SharedTexture> shared = shared_textures[bytes.get()].lock();
+  std::shared_ptr<SharedTexture> shared = shared_textures[map.get()].lock();
   if (!shared) {
+    const std::string texture_name = "dressed_human/normal_map_" + std::to_string(++texture_count);
     shared = std::make_shared<SharedTexture>();
-    shared->bytes = bytes;
-    Ogre::Image image;
-    image.loadDynamicImage(const_cast<Ogre::uchar*>(bytes->data()), static_cast<Ogre::uint32>(width),
-                           static_cast<Ogre::uint32>(height), channels == 4 ? Ogre::PF_BYTE_RGBA : Ogre::PF_BYTE_RGB);
-    shared->texture = Ogre::TextureManager::getSingleton().loadImage(
-        "dressed_human/normal_map_" + std::to_string(++texture_count), kGroup, image, Ogre::TEX_TYPE_2D, normalMapMipmaps());
-    for (auto entry = shared_textures.begin(); entry != shared_textures.end();) {
-      entry = entry->second.expired() && entry->first != bytes.get() ? shared_textures.erase(entry) : std::next(entry);
+    shared->map = map;
+    try {
+      shared->texture = uploadNormalMap(*map, texture_name);
+    } catch (...) {
+      if (Ogre::TextureManager::getSingleton().resourceExists(texture_name, kGroup)) {
+        Ogre::TextureManager::getSingleton().remove(texture_name, kGroup);
+      }
+      shared_textures.erase(map.get());
+      throw;
     }
-    shared_textures[bytes.get()] = shared;
+    for (auto entry = shared_textures.begin(); entry != shared_textures.end();) {
+      entry = entry->second.expired() && entry->first != map.get() ? shared_textures.erase(entry) : std::next(entry);
+    }
+    shared_textures[map.get()] = shared;
   }
   texture_ = shared;
   material_->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTexture(texture_->texture);

@@ -14,6 +14,7 @@
 
 #include <Eigen/Geometry>
 
+#include "dressed_human/core/relief/relief_map.h"
 #include "dressed_human/core/surfaces/bezier_patch.h"
 #include "dressed_human/core/relief/vertex_compression.h"
 
@@ -56,11 +57,11 @@ class ReliefMaterial {
   // of per pixel (a small human: its triangles cover a few pixels, and on a software renderer
   // the fragment program is most of its cost).
   void setVertexLit(bool lit);
-  // 8-bit tangent-space normals (n * 0.5 + 0.5), width * height * channels bytes, with mipmaps:
-  // RGB (3 channels) for the skin, the fold tiles' RGBA (4) for garments; another count throws
-  // std::invalid_argument. One texture per map in the process: every material given the same
-  // bytes shares it.
-  void setNormalMap(const std::shared_ptr<const std::vector<std::uint8_t>>& bytes, int channels, int width, int height);
+  // 8-bit tangent-space normals (n * 0.5 + 0.5) and their mip levels as given (not the GPU's):
+  // RGB (3 channels) for the skin, the fold tiles' RGBA (4) for garments; another count, or a
+  // level whose size does not match, throws std::invalid_argument. One texture per map in the
+  // process: every material given the same map shares it.
+  void setNormalMap(const std::shared_ptr<const EncodedNormalMap>& map);
   // Bezier vertices only: the posed patches (at most kMaxPatches, else std::invalid_argument)
   // and, for garments, the wrinkle strength's constants (null: the relief shows everywhere).
   void setPatches(const std::vector<BezierPatch>& patches);

@@ -240,5 +240,16 @@ TEST(OrientedFolds, TilesOfDifferentSizesAreRefused) {
   ASSERT_EQ(rgba.size(), static_cast<std::size_t>(128 * 128 * 4));
 }
 
+TEST(OrientedFolds, TextureLevelsAreBothTilesFiltered) {
+  const FoldTiles fold_tiles = tiles();
+  const EncodedNormalMap encoded = encodeFoldTilesMips(fold_tiles);
+  ASSERT_EQ(encoded.levels.size(), 8u);  // 128 down to 1 x 1
+  EXPECT_EQ(encoded.channels, 4);
+  EXPECT_EQ(encoded.levels[0], encodeFoldTilesRgba(fold_tiles));
+  const std::vector<ReliefMap> slight = buildMipChain(fold_tiles.slight), strong = buildMipChain(fold_tiles.strong);
+  EXPECT_EQ(encoded.levels[3], encodeFoldTilesRgba(FoldTiles(slight[3], strong[3])));
+  EXPECT_EQ(encoded.levels.back().size(), 4u);
+}
+
 }  // namespace
 }  // namespace dressed_human

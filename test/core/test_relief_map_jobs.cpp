@@ -32,15 +32,17 @@ TEST(ReliefMapJobs, BuildsBothMapsOffThisThread) {
   ASSERT_EQ(done.size(), 2u);
   for (const FinishedReliefMap& map : done) {
     ASSERT_TRUE(map.map) << map.error;
-    ASSERT_TRUE(map.normal_bytes);
+    ASSERT_TRUE(map.normal_map);
+    ASSERT_FALSE(map.normal_map->levels.empty());
+    EXPECT_EQ(map.normal_map->width, map.map->width);
     if (map.kind == ReliefKind::kSkin) {
-      EXPECT_EQ(map.normal_channels, 3);
-      EXPECT_EQ(*map.normal_bytes, encodeNormalMapRgb(*map.map));
+      EXPECT_EQ(map.normal_map->channels, 3);
+      EXPECT_EQ(map.normal_map->levels, encodeNormalMapMips(*map.map).levels);
       EXPECT_FALSE(map.fold_tiles);
     } else {
       ASSERT_TRUE(map.fold_tiles);
-      EXPECT_EQ(map.normal_channels, 4);
-      EXPECT_EQ(*map.normal_bytes, encodeFoldTilesRgba(*map.fold_tiles));
+      EXPECT_EQ(map.normal_map->channels, 4);
+      EXPECT_EQ(map.normal_map->levels, encodeFoldTilesMips(*map.fold_tiles).levels);
       EXPECT_EQ(map.map.get(), &map.fold_tiles->strong);
     }
     EXPECT_EQ(jobs.map(map.kind), map.map);
@@ -79,7 +81,7 @@ TEST(ReliefMapJobs, JobsAskingForTheSameMapShareOneBuild) {
     ASSERT_NE(maps[0].kind, maps[1].kind);
     for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
       EXPECT_EQ(ofKind(maps, kind).map, ofKind(done[0], kind).map);  // the same map, not a copy
-      EXPECT_EQ(ofKind(maps, kind).normal_bytes, ofKind(done[0], kind).normal_bytes);
+      EXPECT_EQ(ofKind(maps, kind).normal_map, ofKind(done[0], kind).normal_map);
     }
   }
   const std::shared_ptr<const ReliefMap> skin = ofKind(done[0], ReliefKind::kSkin).map;

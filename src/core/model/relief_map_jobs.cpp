@@ -127,8 +127,7 @@ void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
   jobs_[index(ReliefKind::kSkin)].running = obtain(ReliefKind::kSkin, parameters, [parameters] {
     FinishedReliefMap done;
     auto map = std::make_shared<const ReliefMap>(SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize));
-    done.normal_bytes = std::make_shared<const std::vector<std::uint8_t>>(encodeNormalMapRgb(*map));
-    done.normal_channels = 3;
+    done.normal_map = std::make_shared<const EncodedNormalMap>(encodeNormalMapMips(*map));
     done.map = std::move(map);
     return done;
   });
@@ -139,8 +138,7 @@ void ReliefMapJobs::startCloth() {
   jobs_[index(ReliefKind::kCloth)].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), [] {
     FinishedReliefMap done;
     auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles());
-    done.normal_bytes = std::make_shared<const std::vector<std::uint8_t>>(encodeFoldTilesRgba(*tiles));
-    done.normal_channels = 4;
+    done.normal_map = std::make_shared<const EncodedNormalMap>(encodeFoldTilesMips(*tiles));
     done.map = std::shared_ptr<const ReliefMap>(tiles, &tiles->strong);
     done.fold_tiles = std::move(tiles);
     return done;

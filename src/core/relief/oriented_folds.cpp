@@ -118,4 +118,17 @@ std::vector<std::uint8_t> encodeFoldTilesRgba(const FoldTiles& tiles) {
   return rgba;
 }
 
+EncodedNormalMap encodeFoldTilesMips(const FoldTiles& tiles) {
+  EncodedNormalMap encoded;
+  encoded.width = tiles.slight.width;
+  encoded.height = tiles.slight.height;
+  encoded.channels = 4;
+  std::vector<ReliefMap> slight = buildMipChain(tiles.slight);
+  std::vector<ReliefMap> strong = buildMipChain(tiles.strong);
+  for (std::size_t level = 0; level < slight.size(); ++level) {
+    encoded.levels.push_back(encodeFoldTilesRgba(FoldTiles(std::move(slight[level]), std::move(strong[level]))));
+  }
+  return encoded;
+}
+
 }  // namespace dressed_human

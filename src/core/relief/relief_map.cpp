@@ -90,6 +90,15 @@ std::vector<std::uint8_t> encodeNormalMapRgb(const ReliefMap& map) {
   return rgb;
 }
 
+EncodedNormalMap encodeNormalMapMips(const ReliefMap& map) {
+  EncodedNormalMap encoded;
+  encoded.width = map.width;
+  encoded.height = map.height;
+  encoded.channels = 3;
+  for (const ReliefMap& level : buildMipChain(map)) encoded.levels.push_back(encodeNormalMapRgb(level));
+  return encoded;
+}
+
 std::vector<std::uint16_t> encodeHeightMap16(const ReliefMap& map) {
   const float low = map.minimumHeight();
   const float range = map.maximumHeight() - low;

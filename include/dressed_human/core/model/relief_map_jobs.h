@@ -29,10 +29,10 @@ struct FinishedReliefMap {
   // failed.
   std::shared_ptr<const ReliefMap> map;
   std::shared_ptr<const FoldTiles> fold_tiles;  // cloth only
-  // The texture a renderer samples, shared like the map (a renderer may key its texture by it):
-  // skin encodeNormalMapRgb(*map), 3 channels; cloth encodeFoldTilesRgba(*fold_tiles), 4.
-  std::shared_ptr<const std::vector<std::uint8_t>> normal_bytes;
-  int normal_channels = 3;
+  // The texture a renderer samples, with its mip levels, shared like the map (a renderer may key
+  // its texture by it): skin encodeNormalMapMips(*map), 3 channels; cloth
+  // encodeFoldTilesMips(*fold_tiles), 4.
+  std::shared_ptr<const EncodedNormalMap> normal_map;
   std::string error;
 };
 

@@ -82,5 +82,8 @@ ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, co
 /// The texture the shader samples: per pixel the slight tile's normal x, y then the strong
 /// tile's, each (n + 1) / 2 * 255 (z is sqrt(1 - x^2 - y^2), n_z > 0). RGBA, row-major.
 std::vector<std::uint8_t> encodeFoldTilesRgba(const FoldTiles& tiles);
+/// encodeFoldTilesRgba of every level of both tiles' mip chains (buildMipChain; the normals of
+/// the box-filtered heights, see EncodedNormalMap).
+EncodedNormalMap encodeFoldTilesMips(const FoldTiles& tiles);
 
 }  // namespace dressed_human

@@ -46,6 +46,22 @@ std::vector<ReliefMap> buildMipChain(ReliefMap base, int max_levels = 0);
 
 /// 8-bit RGB tangent-space normal map, (n + 1) / 2 * 255 per channel, row-major RGBRGB...
 std::vector<std::uint8_t> encodeNormalMapRgb(const ReliefMap& map);
+
+/// A normal-map texture with the mip levels built for it. A GPU's own chain (glGenerateMipmap)
+/// averages the encoded normals, and the slope an averaged normal decodes to is not the average
+/// slope: a steep crease beside a flat run comes out about half as steep at the next level, so
+/// folds seen from afar look flatter than their filtered surface. Here level k is the encoding of
+/// buildMipChain's level k: the normals of the box-filtered height.
+struct EncodedNormalMap {
+  int width = 0;  ///< of level 0
+  int height = 0;
+  int channels = 3;
+  /// level k: max(1, width >> k) x max(1, height >> k) pixels of `channels` bytes, row-major
+  std::vector<std::vector<std::uint8_t>> levels;
+};
+
+/// encodeNormalMapRgb of every level of buildMipChain(map).
+EncodedNormalMap encodeNormalMapMips(const ReliefMap& map);
 /// 16-bit grey height map scaled from [minimumHeight, maximumHeight] to [0, 65535].
 std::vector<std::uint16_t> encodeHeightMap16(const ReliefMap& map);
 
