@@ -198,5 +198,99 @@ TEST(MeshDisplacement, FoldTilesDisplaceByTheOrientedFolds) {
   }
 }
 
+// h(U, V) = a sin(2 pi cycles U): `cycles` periods per tile along u.
+ReliefMap waveMap(int size, int cycles, double a) {
+  ReliefMap map(size, size);
+  for (int r = 0; r < size; ++r) {
+    for (int c = 0; c < size; ++c) {
+      const double phase = 2.0 * kPi * cycles * (c + 0.5) / size;
+      map.heights[map.index(c, r)] = static_cast<float>(a * std::sin(phase));
+      map.slope_u[map.index(c, r)] = static_cast<float>(a * 2.0 * kPi * cycles * std::cos(phase));
+    }
+  }
+  return map;
+}
+
+// Amplitude of the vertices' displacement along one row of a flat 1 m patch cut 16 x 16 (RMS
+// times sqrt 2, over the 16 vertices of a period of the grid).
+double displacedAmplitude(const ReliefMap& map, const std::vector<ReliefMap>* mips) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const int level = 16;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), level);
+  const std::vector<int> levels{level};
+  ReliefDisplacement displacement{&map, 1.0f, 1.0f, 1.0f};
+  displacement.map_mips = mips;
+  displacement.patch_levels = mips ? &levels : nullptr;
+  TriangleMesh out;
+  displaceMesh(base, displacement, out);
+  double squares = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    if (std::abs(base.uv[i].y() - 0.5f) > 1e-6f || base.uv[i].x() > 1.0f - 1e-6f) continue;
+    const double moved = (out.positions[i] - base.positions[i]).z();
+    squares += moved * moved;
+    ++count;
+  }
+  EXPECT_EQ(count, level);
+  return std::sqrt(2.0 * squares / count);
+}
+
+TEST(MeshDisplacement, ReliefFinerThanTheVerticesFadesInsteadOfAliasing) {
+  // Vertices 1/16 of a tile apart carry at most 8 periods per tile. 13 periods sampled there
+  // read as 3 periods at full height: a coarse false relief that crawls as the surface moves.
+  const ReliefMap fine = waveMap(512, 13, 0.01);
+  const std::vector<ReliefMap> fine_mips = buildMipChain(fine);
+  EXPECT_GT(displacedAmplitude(fine, nullptr), 0.009);  // unfiltered: the alias, full height
+  EXPECT_LT(displacedAmplitude(fine, &fine_mips), 0.003);
+  // Relief the vertices can carry (2 periods, 8 vertices each) keeps most of its height.
+  const ReliefMap coarse = waveMap(512, 2, 0.01);
+  const std::vector<ReliefMap> coarse_mips = buildMipChain(coarse);
+  EXPECT_NEAR(displacedAmplitude(coarse, nullptr), 0.01, 0.0005);
+  EXPECT_GT(displacedAmplitude(coarse, &coarse_mips), 0.008);
+}
+
+TEST(MeshDisplacement, FilteredLookupsReadLevelZeroAtTexelSpacing) {
+  const ReliefMap map = waveMap(64, 3, 0.02);
+  const std::vector<ReliefMap> mips = buildMipChain(map);
+  for (const double u : {0.1, 0.37, 0.9}) {
+    EXPECT_DOUBLE_EQ(sampleReliefLevels(mips, u, 0.3, 1.0).height, sampleReliefMap(map, u, 0.3).height);
+    EXPECT_DOUBLE_EQ(sampleReliefLevels(mips, u, 0.3, 4.0).height, sampleReliefMap(mips[2], u, 0.3).height);
+    const double between = sampleReliefLevels(mips, u, 0.3, std::pow(2.0, 2.5)).height;
+    EXPECT_NEAR(between, 0.5 * (sampleReliefMap(mips[2], u, 0.3).height + sampleReliefMap(mips[3], u, 0.3).height), 1e-12);
+  }
+  EXPECT_THROW(sampleReliefLevels({}, 0.1, 0.1, 1.0), std::invalid_argument);
+  const FoldTiles folds(sineMap(32, 0.05), sineMap(32, 0.08));
+  const FoldTileMips fold_mips = buildFoldTileMips(folds);
+  const Eigen::Vector2d at(0.3, 0.7);
+  EXPECT_DOUBLE_EQ(orientedFolds(fold_mips, at, Eigen::Vector2f(0.3f, 0.1f), 0.6f, 0.0).height,
+                   orientedFolds(folds, at, Eigen::Vector2f(0.3f, 0.1f), 0.6f).height);
+}
+
+TEST(MeshDisplacement, FilteringNeedsEveryVertexPatchsLevel) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 4);
+  const ReliefMap map = waveMap(16, 1, 0.01);
+  const std::vector<ReliefMap> mips = buildMipChain(map);
+  ReliefDisplacement displacement{&map, 1.0f, 1.0f, 1.0f};
+  displacement.map_mips = &mips;
+  TriangleMesh out;
+  EXPECT_THROW(displaceMesh(base, displacement, out), std::invalid_argument);  // no levels
+  const std::vector<int> none;
+  displacement.patch_levels = &none;
+  try {
+    displaceMesh(base, displacement, out);
+    ADD_FAILURE() << "a patch without a level accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("tessellation level"), std::string::npos) << error.what();
+  }
+  const std::vector<ReliefMap> other = buildMipChain(waveMap(8, 1, 0.01));
+  const std::vector<int> levels{4};
+  displacement.patch_levels = &levels;
+  displacement.map_mips = &other;
+  EXPECT_THROW(displaceMesh(base, displacement, out), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace dressed_human

@@ -293,6 +293,7 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
       ReliefDisplacement settings = displacement.settings;
       settings.weights = part.relief_weight;
       settings.fold_axes = part.fold_axis;
+      settings.patch_levels = levels;
       displaceMesh(*part.mesh, settings, displaced_meshes_[p]);
       part.mesh = &displaced_meshes_[p];
       part.bounds = vertexBounds(part.mesh->positions);
@@ -304,10 +305,28 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
 
 void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling,
                                  float height_to_tile, float amplitude, std::shared_ptr<const FoldTiles> folds) {
-  Displacement displacement{std::move(map), std::move(folds), ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
+  Displacement& current = displacements_[static_cast<std::size_t>(kind)];
+  Displacement displacement{std::move(map), std::move(folds), nullptr, nullptr,
+                            ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
+  if (displacement.map) {  // the chains again only for another map (a few ms at 512 x 512)
+    displacement.map_mips = displacement.map == current.map ? current.map_mips
+                                                           : std::make_shared<const std::vector<ReliefMap>>(buildMipChain(*displacement.map));
+  }
+  if (displacement.map && displacement.folds) {
+    displacement.fold_mips = displacement.folds == current.folds
+                                 ? current.fold_mips
+                                 : std::make_shared<const FoldTileMips>(buildFoldTileMips(*displacement.folds));
+  }
   displacement.settings.map = displacement.map.get();
   displacement.settings.folds = displacement.map ? displacement.folds.get() : nullptr;
-  if (displacement.map) checkReliefDisplacement(displacement.settings);  // now, not at the next update
+  displacement.settings.map_mips = displacement.map_mips.get();
+  displacement.settings.fold_mips = displacement.settings.folds ? displacement.fold_mips.get() : nullptr;
+  if (displacement.map) {  // now, not at the next update (the chains are built right here; levels come then)
+    ReliefDisplacement given = displacement.settings;
+    given.map_mips = nullptr;
+    given.fold_mips = nullptr;
+    checkReliefDisplacement(given);
+  }
   displacements_[static_cast<std::size_t>(kind)] = std::move(displacement);
   displaced_meshes_.resize(parts_.size());
 }

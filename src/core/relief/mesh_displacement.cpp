@@ -1,5 +1,6 @@
 #include "dressed_human/core/relief/mesh_displacement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,22 @@ ReliefSample sampleReliefMap(const ReliefMap& map, double tile_u, double tile_v)
   return sample;
 }
 
+ReliefSample sampleReliefLevels(const std::vector<ReliefMap>& levels, double tile_u, double tile_v,
+                                double texels_per_sample) {
+  if (levels.empty()) throw std::invalid_argument("sampleReliefLevels: an empty mip chain");
+  const double last = static_cast<double>(levels.size() - 1);
+  const double level = std::clamp(std::log2(std::max(texels_per_sample, 1.0)), 0.0, last);
+  const std::size_t fine = static_cast<std::size_t>(std::floor(level));
+  const double t = level - static_cast<double>(fine);
+  const ReliefSample a = sampleReliefMap(levels[fine], tile_u, tile_v);
+  if (t <= 0.0) return a;
+  const ReliefSample b = sampleReliefMap(levels[fine + 1], tile_u, tile_v);
+  ReliefSample blended;
+  blended.height = (1.0 - t) * a.height + t * b.height;
+  blended.slope = (1.0 - t) * a.slope + t * b.slope;
+  return blended;
+}
+
 void checkReliefDisplacement(const ReliefDisplacement& displacement) {
   const ReliefMap* map = displacement.map;
   if (map == nullptr || map->width <= 0 || map->height <= 0 ||
@@ -49,6 +66,21 @@ void checkReliefDisplacement(const ReliefDisplacement& displacement) {
   if (displacement.folds != nullptr && displacement.tiling != 1.0f) {
     throw std::invalid_argument("relief displacement: fold tiles are laid out per patch; tiling " +
                                 std::to_string(displacement.tiling) + " must be 1");
+  }
+  const bool mips = displacement.map_mips != nullptr || displacement.fold_mips != nullptr;
+  if (mips && displacement.patch_levels == nullptr) {
+    throw std::invalid_argument("relief displacement: mip chains need the patches' tessellation levels");
+  }
+  if (displacement.map_mips != nullptr &&
+      (displacement.map_mips->empty() || displacement.map_mips->front().width != map->width ||
+       displacement.map_mips->front().height != map->height)) {
+    throw std::invalid_argument("relief displacement: the mip chain is not of the relief map");
+  }
+  if (displacement.fold_mips != nullptr &&
+      (displacement.folds == nullptr || displacement.fold_mips->slight.empty() ||
+       displacement.fold_mips->slight.size() != displacement.fold_mips->strong.size() ||
+       displacement.fold_mips->slight.front().width != displacement.folds->slight.width)) {
+    throw std::invalid_argument("relief displacement: the fold tiles' mip chains are not of its fold tiles");
   }
   if (!(displacement.amplitude >= 0.0f) || !std::isfinite(displacement.amplitude)) {
     throw std::invalid_argument("relief displacement: amplitude " + std::to_string(displacement.amplitude) +
@@ -68,6 +100,10 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     throw std::invalid_argument("relief displacement: " + std::to_string(displacement.fold_axes->size()) +
                                 " fold axes for " + std::to_string(n) + " vertices");
   }
+  if (displacement.patch_levels != nullptr && base.vertex_patch.size() != n) {
+    throw std::invalid_argument("relief displacement: " + std::to_string(base.vertex_patch.size()) +
+                                " vertex patches for " + std::to_string(n) + " vertices");
+  }
   out.positions.resize(n);
   out.normals.resize(n);
   out.tangents_u = base.tangents_u;
@@ -77,17 +113,34 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
   out.indices = base.indices;
   out.triangle_patch = base.triangle_patch;
   const double tiling = displacement.tiling;
+  const std::vector<int>* patch_levels = displacement.patch_levels;
   for (std::size_t i = 0; i < n; ++i) {
+    double uv_spacing = 0.0;  // between this vertex and the next, in patch coordinates
+    if (patch_levels != nullptr) {
+      const std::size_t patch = base.vertex_patch[i];
+      if (patch >= patch_levels->size() || (*patch_levels)[patch] < 1) {
+        throw std::invalid_argument("relief displacement: vertex " + std::to_string(i) + "'s patch " +
+                                    std::to_string(patch) + " has no tessellation level (" +
+                                    std::to_string(patch_levels->size()) + " given)");
+      }
+      uv_spacing = 1.0 / (*patch_levels)[patch];
+    }
     const float weight = displacement.weights ? (*displacement.weights)[i] : 1.0f;
     const Eigen::Vector3d normal = base.normals[i].cast<double>();
     const Eigen::Vector3d fu = base.tangents_u[i].cast<double>(), fv = base.tangents_v[i].cast<double>();
     // Fold tiles take the weight as the wrinkle strength (their pattern and amplitude).
     const double amplitude = displacement.amplitude * (displacement.folds ? 1.0f : weight);
-    const ReliefSample relief =
-        displacement.folds
-            ? orientedFolds(*displacement.folds, base.uv[i].cast<double>(),
-                            displacement.fold_axes ? (*displacement.fold_axes)[i] : Eigen::Vector2f::Zero(), weight)
-            : sampleReliefMap(*map, base.uv[i].x() * tiling, base.uv[i].y() * tiling);
+    const Eigen::Vector2f axis = displacement.fold_axes ? (*displacement.fold_axes)[i] : Eigen::Vector2f::Zero();
+    const Eigen::Vector2d uv = base.uv[i].cast<double>();
+    ReliefSample relief;
+    if (displacement.folds) {
+      relief = displacement.fold_mips ? orientedFolds(*displacement.fold_mips, uv, axis, weight, uv_spacing)
+                                      : orientedFolds(*displacement.folds, uv, axis, weight);
+    } else {
+      relief = displacement.map_mips
+                   ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiling, uv.y() * tiling, uv_spacing * tiling * map->width)
+                   : sampleReliefMap(*map, uv.x() * tiling, uv.y() * tiling);
+    }
     const double lu = fu.norm(), lv = fv.norm();
     // At a pole one derivative vanishes: the tile has no size there and nothing moves.
     const double metres_per_tile = std::sqrt(lu * lv) / tiling;

@@ -80,16 +80,21 @@ FoldTiles::FoldTiles(ReliefMap slight_tile, ReliefMap strong_tile)
   }
 }
 
-ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
-                           float strength) {
+namespace {
+
+// orientedFolds with the tiles' lookup `sample(k, at, &slight, &strong)` for orientation k at tile
+// coordinate `at`.
+template <typename Sample>
+ReliefSample blendOrientations(const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis, float strength,
+                               const Sample& sample) {
   const FoldBlend blend = foldOrientationBlend(fold_axis);
   const double strong = strongPatternWeight(strength);
   ReliefSample sum;
   for (const auto& [k, weight] : {std::make_pair(blend.first, blend.first_weight), std::make_pair(blend.second, blend.second_weight)}) {
     if (weight <= 0.0f) continue;
     const Eigen::Vector2d at = foldTileCoordinate(k, uv);
-    const ReliefSample slight = sampleReliefMap(tiles.slight, at.x(), at.y());
-    const ReliefSample strong_sample = sampleReliefMap(tiles.strong, at.x(), at.y());
+    ReliefSample slight, strong_sample;
+    sample(k, at, &slight, &strong_sample);
     const double height = (1.0 - strong) * slight.height + strong * strong_sample.height;
     const Eigen::Vector2d g = (1.0 - strong) * slight.slope + strong * strong_sample.slope;
     // h(A uv) c: gradient c A^T grad h, and c A^T = R^T, a rotation: the slope keeps its size.
@@ -101,6 +106,35 @@ ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, co
   sum.height *= strength;
   sum.slope *= strength;
   return sum;
+}
+
+}  // namespace
+
+ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
+                           float strength) {
+  return blendOrientations(uv, fold_axis, strength, [&](int, const Eigen::Vector2d& at, ReliefSample* slight, ReliefSample* strong) {
+    *slight = sampleReliefMap(tiles.slight, at.x(), at.y());
+    *strong = sampleReliefMap(tiles.strong, at.x(), at.y());
+  });
+}
+
+FoldTileMips buildFoldTileMips(const FoldTiles& tiles) {
+  return FoldTileMips{buildMipChain(tiles.slight), buildMipChain(tiles.strong)};
+}
+
+ReliefSample orientedFolds(const FoldTileMips& mips, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
+                           float strength, double uv_spacing) {
+  if (mips.slight.empty() || mips.slight.size() != mips.strong.size()) {
+    throw std::invalid_argument("orientedFolds: fold tile mip chains of " + std::to_string(mips.slight.size()) + " and " +
+                                std::to_string(mips.strong.size()) + " levels");
+  }
+  return blendOrientations(uv, fold_axis, strength, [&](int k, const Eigen::Vector2d& at, ReliefSample* slight, ReliefSample* strong) {
+    // The lookup scale * [[q, -p], [p, q]] stretches patch coordinates by scale * |(p, q)|.
+    const FoldOrientation& o = foldOrientations()[static_cast<std::size_t>(k)];
+    const double texels = uv_spacing * o.scale * std::hypot(o.p, o.q) * mips.slight.front().width;
+    *slight = sampleReliefLevels(mips.slight, at.x(), at.y(), texels);
+    *strong = sampleReliefLevels(mips.strong, at.x(), at.y(), texels);
+  });
 }
 
 std::vector<std::uint8_t> encodeFoldTilesRgba(const FoldTiles& tiles) {
@@ -123,10 +157,9 @@ EncodedNormalMap encodeFoldTilesMips(const FoldTiles& tiles) {
   encoded.width = tiles.slight.width;
   encoded.height = tiles.slight.height;
   encoded.channels = 4;
-  std::vector<ReliefMap> slight = buildMipChain(tiles.slight);
-  std::vector<ReliefMap> strong = buildMipChain(tiles.strong);
-  for (std::size_t level = 0; level < slight.size(); ++level) {
-    encoded.levels.push_back(encodeFoldTilesRgba(FoldTiles(std::move(slight[level]), std::move(strong[level]))));
+  FoldTileMips mips = buildFoldTileMips(tiles);
+  for (std::size_t level = 0; level < mips.slight.size(); ++level) {
+    encoded.levels.push_back(encodeFoldTilesRgba(FoldTiles(std::move(mips.slight[level]), std::move(mips.strong[level]))));
   }
   return encoded;
 }

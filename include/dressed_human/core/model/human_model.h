@@ -195,6 +195,9 @@ class HumanModel {
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;
     std::shared_ptr<const FoldTiles> folds;
+    // Their mip chains, so relief finer than the vertices is filtered out, not aliased.
+    std::shared_ptr<const std::vector<ReliefMap>> map_mips;
+    std::shared_ptr<const FoldTileMips> fold_mips;
     ReliefDisplacement settings;
   };
   std::array<Displacement, 2> displacements_;  // by ReliefKind

@@ -32,19 +32,35 @@ struct ReliefDisplacement {
   /// shader does; heights are then for a tile one patch across (tiling must be 1).
   const FoldTiles* folds = nullptr;
   const std::vector<Eigen::Vector2f>* fold_axes = nullptr;
+  /// Optional filtering, so relief finer than the vertices fades instead of aliasing: the mip
+  /// chain of `map` (buildMipChain; of `folds`: buildFoldTileMips) and each patch's tessellation
+  /// level (vertices 1 / level apart in patch coordinates). Each vertex then reads the relief at
+  /// the level whose texels are as far apart as the vertices, as a texture unit does per pixel.
+  /// Null: the maps are sampled as they are.
+  const std::vector<ReliefMap>* map_mips = nullptr;
+  const FoldTileMips* fold_mips = nullptr;
+  const std::vector<int>* patch_levels = nullptr;
 };
 
 /// Height and slopes of the map at tile coordinates (any real values: the map wraps),
 /// bilinear between pixel centres.
 ReliefSample sampleReliefMap(const ReliefMap& map, double tile_u, double tile_v);
 
+/// The same from a mip chain (buildMipChain), for samples `texels_per_sample` level-0 texels
+/// apart: at level log2(texels_per_sample), blended between the two nearest levels (the last one
+/// beyond the chain, level 0 below one texel). Throws std::invalid_argument for an empty chain.
+ReliefSample sampleReliefLevels(const std::vector<ReliefMap>& levels, double tile_u, double tile_v,
+                                double texels_per_sample);
+
 /// Throws std::invalid_argument naming a bad field (no map, empty map, tiling or
-/// height_to_tile <= 0, negative or non-finite amplitude, fold tiles with a tiling other than 1).
+/// height_to_tile <= 0, negative or non-finite amplitude, fold tiles with a tiling other than 1,
+/// mip chains without patch levels or not of the map they go with).
 void checkReliefDisplacement(const ReliefDisplacement& displacement);
 
 /// `out` = `base` with every vertex moved along its normal and normals tilted by the relief
 /// (tangents and uv copied). Allocation-free once `out` has had the same size. Throws as
-/// checkReliefDisplacement, or when `weights` or `fold_axes` does not have one entry per vertex.
+/// checkReliefDisplacement, or when `weights` or `fold_axes` does not have one entry per vertex,
+/// or a vertex's patch has no level in `patch_levels` (or a level below 1).
 void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displacement, TriangleMesh& out);
 
 }  // namespace dressed_human

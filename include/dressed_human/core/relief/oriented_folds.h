@@ -79,6 +79,20 @@ struct FoldTiles {
 ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
                            float strength);
 
+/// Both tiles' mip chains (buildMipChain), for lookups filtered to a sample spacing.
+struct FoldTileMips {
+  std::vector<ReliefMap> slight, strong;
+};
+FoldTileMips buildFoldTileMips(const FoldTiles& tiles);
+
+/// orientedFolds from the tiles' mip chains, filtered for samples `uv_spacing` apart in patch
+/// coordinates (displaced geometry's vertices, 1 / tessellation level): each orientation reads
+/// its tiles at the level whose texels are as far apart as the samples are in its lookup, as a
+/// texture unit does per pixel, so folds finer than the samples fade instead of aliasing.
+/// `uv_spacing` 0 reads level 0: orientedFolds(FoldTiles).
+ReliefSample orientedFolds(const FoldTileMips& mips, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
+                           float strength, double uv_spacing);
+
 /// The texture the shader samples: per pixel the slight tile's normal x, y then the strong
 /// tile's, each (n + 1) / 2 * 255 (z is sqrt(1 - x^2 - y^2), n_z > 0). RGBA, row-major.
 std::vector<std::uint8_t> encodeFoldTilesRgba(const FoldTiles& tiles);
