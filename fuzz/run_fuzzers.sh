@@ -23,17 +23,24 @@ build_target() {  # name, core sources (below src/core), then libraries
   done
   "$cxx" $flags "$here/fuzz/$name.cpp" $sources -o "$build/bin/$name" $libraries
 }
-build_target fuzz_bvh_parser motion/bvh_file.cpp io/text_file.cpp
-build_target fuzz_mot_parser motion/opensim_motion_file.cpp io/text_file.cpp
-build_target fuzz_opensim_model motion/opensim_model.cpp io/text_file.cpp -ltinyxml2
-# The skeleton layer (the body shape of a motion's body_shape and a body's shape: bone layout and
-# groups; a URDF's recorded shape through tinyxml2).
+# In two groups side by side: clang and each fuzzer use one core, CI has two.
 skeleton="skeleton/body_description.cpp skeleton/skeleton.cpp skeleton/forward_kinematics.cpp skeleton/urdf_body_shape.cpp"
-build_target fuzz_motion_yaml motion/motion_file.cpp motion/motion.cpp motion/motion_evaluator.cpp io/text_file.cpp \
-  $skeleton -lyaml-cpp -lurdfdom_model -ltinyxml2
-build_target fuzz_body_yaml $skeleton \
-  surfaces/skin.cpp surfaces/bezier_patch.cpp surfaces/tessellation.cpp surfaces/tessellation_error.cpp \
-  io/text_file.cpp -lyaml-cpp -lurdfdom_model -ltinyxml2
+(
+  build_target fuzz_bvh_parser motion/bvh_file.cpp io/text_file.cpp
+  build_target fuzz_mot_parser motion/opensim_motion_file.cpp io/text_file.cpp
+  build_target fuzz_opensim_model motion/opensim_model.cpp io/text_file.cpp -ltinyxml2
+) & first=$!
+(
+  build_target fuzz_motion_yaml motion/motion_file.cpp motion/motion.cpp motion/motion_evaluator.cpp io/text_file.cpp \
+    $skeleton -lyaml-cpp -lurdfdom_model -ltinyxml2
+  build_target fuzz_body_yaml $skeleton \
+    surfaces/skin.cpp surfaces/bezier_patch.cpp surfaces/tessellation.cpp surfaces/tessellation_error.cpp \
+    io/text_file.cpp -lyaml-cpp -lurdfdom_model -ltinyxml2
+) & second=$!
+built=0
+wait $first || built=1
+wait $second || built=1
+[ "$built" -eq 0 ] || { echo "run_fuzzers.sh: a fuzz target did not build" >&2; exit 1; }
 
 run_target() {  # name, seed files...
   name=$1; shift
@@ -44,15 +51,25 @@ run_target() {  # name, seed files...
   status=0
   (cd "$build/$1" && "$build/bin/$1" -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
       -print_final_stats=1 "$corpus") > "$build/$1.log" 2>&1 || status=$?
-  grep -E "stat::number_of_executed_units|Done [0-9]+ runs|ERROR|SUMMARY" "$build/$1.log" || true
+  grep -E "stat::number_of_executed_units|Done [0-9]+ runs|ERROR|SUMMARY" "$build/$1.log" | sed "s/^/$1: /" || true
   return $status
 }
 failed=0
 for target in fuzz_bvh_parser fuzz_mot_parser fuzz_opensim_model fuzz_motion_yaml fuzz_body_yaml; do mkdir -p "$build/$target"; done
-run_target fuzz_bvh_parser "$here"/data/motion/*.bvh "$here"/fuzz/seeds/*.bvh || failed=1
-run_target fuzz_mot_parser "$here"/data/motion/*.mot "$here"/fuzz/seeds/*.mot || failed=1
-run_target fuzz_opensim_model "$here"/fuzz/seeds/*.osim || failed=1
-run_target fuzz_motion_yaml "$here"/config/motions/*.yaml || failed=1
-run_target fuzz_body_yaml "$here"/config/bodies/*.yaml || failed=1
+(
+  status=0
+  run_target fuzz_bvh_parser "$here"/data/motion/*.bvh "$here"/fuzz/seeds/*.bvh || status=1
+  run_target fuzz_mot_parser "$here"/data/motion/*.mot "$here"/fuzz/seeds/*.mot || status=1
+  run_target fuzz_opensim_model "$here"/fuzz/seeds/*.osim || status=1
+  exit $status
+) & first=$!
+(
+  status=0
+  run_target fuzz_motion_yaml "$here"/config/motions/*.yaml || status=1
+  run_target fuzz_body_yaml "$here"/config/bodies/*.yaml || status=1
+  exit $status
+) & second=$!
+wait $first || failed=1
+wait $second || failed=1
 if [ -n "$(ls "$build"/fuzz_*/crash-* "$build"/fuzz_*/timeout-* 2>/dev/null)" ]; then failed=1; fi
 exit $failed

@@ -6,8 +6,10 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
+# Each step says when it began (UTC): where CI's time goes.
+section() { echo "== $* [$(date -u +%H:%M:%S)]"; }
 
-echo "== installing Debian packages (if missing)"
+section "installing Debian packages (if missing)"
 scripts/install_deps.sh
 
 # Debian's python must come first: a pyenv/conda python3 breaks catkin and rostest.
@@ -16,13 +18,13 @@ export ROS_HOSTNAME=localhost ROSCONSOLE_STDOUT_LINE_BUFFERED=1 PYTHONUNBUFFERED
 # Containers and chroots sometimes lack a resolvable localhost, which the ROS master needs.
 grep -qE '^127\.0\.0\.1[[:space:]].*\blocalhost\b' /etc/hosts 2>/dev/null || echo "127.0.0.1 localhost" >> /etc/hosts
 
-echo "== building (build/)"
+section "building (build/)"
 # No benchmarks, nor the tools that only draw figures: no test runs them (scripts/evaluate.sh
 # builds and runs them).
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDRESSED_HUMAN_BENCHMARKS=OFF
 cmake --build build -j"$jobs"
 
-echo "== building the core with ASan+UBSan (build_sanitize/)"
+section "building the core with ASan+UBSan (build_sanitize/)"
 cmake -S . -B build_sanitize -DDRESSED_HUMAN_CORE_ONLY=ON -DDRESSED_HUMAN_SANITIZE=ON \
       -DDRESSED_HUMAN_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=Debug
 cmake --build build_sanitize -j"$jobs"
@@ -30,19 +32,19 @@ cmake --build build_sanitize -j"$jobs"
 status=0
 # A failure list left by an earlier run would be digested again at the end.
 rm -f build/Testing/Temporary/LastTestsFailed.log build_sanitize/Testing/Temporary/LastTestsFailed.log
-echo "== core tests under ASan+UBSan"
+section "core tests under ASan+UBSan"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build_sanitize --output-on-failure -j"$jobs" || status=1
 
-echo "== fuzzing the file parsers: BVH, .mot, OpenSim model, motion YAML, body YAML (short run; fuzz/run_fuzzers.sh 600 for the long one)"
+section "fuzzing the file parsers: BVH, .mot, OpenSim model, motion YAML, body YAML (short run; fuzz/run_fuzzers.sh 600 for the long one)"
 fuzz/run_fuzzers.sh "${FUZZ_SECONDS:-20}" "$root/build_fuzz" || status=1
 
-echo "== core gtests, layout and tool tests (Release)"
+section "core gtests, layout and tool tests (Release)"
 # Each ctest run rewrites the failure list: the digest of this run's failures comes right after it.
 ctest --test-dir build --output-on-failure -E '^ros\.' -j"$jobs" || { status=1; scripts/failure_digest.py build || true; }
 # One at a time: each starts rviz under Xvfb and checks what it draws against TF in real time.
 # Last, so that ctest's summary closes the output.
-echo "== rostests"
+section "rostests"
 ctest --test-dir build --output-on-failure -R '^ros\.' || { status=1; rostests_failed=1; }
 
 if [ "$status" -ne 0 ]; then
@@ -50,4 +52,5 @@ if [ "$status" -ne 0 ]; then
   [ -z "${rostests_failed:-}" ] || scripts/failure_digest.py build || true
   echo "scripts/test.sh: SOME TESTS FAILED" >&2
 fi
+section "done"
 exit "$status"

@@ -76,15 +76,17 @@ namespace {
 
 std::map<const void*, std::weak_ptr<ReliefMaterial::SharedTexture>> shared_textures;  // rviz's thread only
 
-// Whether the normal-map textures get their mip levels (EncodedNormalMap's): yes, unless the
-// environment says DRESSED_HUMAN_RELIEF_MIPMAPS=0 (bench/relief_flicker.py measures what the
-// chain is worth).
-bool normalMapMipmaps() {
+// Which mip levels the normal-map textures get: the maps' own (EncodedNormalMap's, the default),
+// none (DRESSED_HUMAN_RELIEF_MIPMAPS=0), or the GPU's, averaged from level 0 (=gpu): the last
+// two for bench/relief_flicker.py, which measures what the chain is worth.
+enum class MipSource { kOwn, kNone, kGpu };
+MipSource normalMapMipmaps() {
   const char* setting = std::getenv("DRESSED_HUMAN_RELIEF_MIPMAPS");
-  if (setting == nullptr || std::string(setting) == "1") return true;
-  if (std::string(setting) == "0") return false;
+  if (setting == nullptr || std::string(setting) == "1") return MipSource::kOwn;
+  if (std::string(setting) == "0") return MipSource::kNone;
+  if (std::string(setting) == "gpu") return MipSource::kGpu;
   throw std::invalid_argument("DRESSED_HUMAN_RELIEF_MIPMAPS='" + std::string(setting) +
-                              "' must be 0 (no mipmaps) or 1 (the default, the maps' own chain)");
+                              "' must be 1 (the default: the maps' own chain), 0 (no mipmaps) or gpu (the GPU's chain)");
 }
 
 // The map's levels, each checked against the size it must have.
@@ -96,7 +98,8 @@ Ogre::TexturePtr uploadNormalMap(const EncodedNormalMap& map, const std::string&
     throw std::invalid_argument("normal map " + name + ": " + std::to_string(map.width) + " x " +
                                 std::to_string(map.height) + " pixels, " + std::to_string(map.levels.size()) + " levels");
   }
-  const std::size_t levels = normalMapMipmaps() ? map.levels.size() : 1;
+  const MipSource source = normalMapMipmaps();
+  const std::size_t levels = source == MipSource::kOwn ? map.levels.size() : 1;
   const Ogre::PixelFormat format = map.channels == 4 ? Ogre::PF_BYTE_RGBA : Ogre::PF_BYTE_RGB;
   for (std::size_t level = 0; level < levels; ++level) {
     const std::size_t expected = static_cast<std::size_t>(std::max(1, map.width >> level)) *
@@ -107,10 +110,12 @@ Ogre::TexturePtr uploadNormalMap(const EncodedNormalMap& map, const std::string&
                                   std::to_string(map.levels[level].size()) + " bytes, not " + std::to_string(expected));
     }
   }
-  // No TU_AUTOMIPMAP: the GPU would average the encoded normals (EncodedNormalMap says why not).
+  // No TU_AUTOMIPMAP by default: the GPU would average the encoded normals (EncodedNormalMap).
+  const bool gpu = source == MipSource::kGpu;
   Ogre::TexturePtr texture = Ogre::TextureManager::getSingleton().createManual(
       name, kGroup, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(map.width), static_cast<Ogre::uint>(map.height),
-      static_cast<int>(levels) - 1, format, Ogre::TU_STATIC_WRITE_ONLY);
+      gpu ? static_cast<int>(Ogre::MIP_UNLIMITED) : static_cast<int>(levels) - 1, format,
+      gpu ? Ogre::TU_STATIC_WRITE_ONLY | Ogre::TU_AUTOMIPMAP : Ogre::TU_STATIC_WRITE_ONLY);
   for (std::size_t level = 0; level < levels; ++level) {
     const Ogre::PixelBox box(static_cast<Ogre::uint32>(std::max(1, map.width >> level)),
                              static_cast<Ogre::uint32>(std::max(1, map.height >> level)), 1, format,
