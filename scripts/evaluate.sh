@@ -72,6 +72,8 @@ $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief
 rm -rf docs/relief_switch
 $PY bench/relief_switch.py --chart docs/relief_switch.png --images docs/relief_switch --markdown docs/relief_switch.md
 $PY bench/relief_flicker.py --markdown docs/relief_flicker.md
+$PY bench/skin_distance.py --chart docs/relief/skin_distance.png --closeup docs/relief/skin_closeup.png \
+  --markdown docs/skin_distance.md
 
 step "docs/EVALUATION.md and the README's Speed section"
 $PY scripts/make_evaluation.py "$RESULTS"

@@ -7,7 +7,7 @@ Reads from RESULTS_DIR: bench_*.json (Google Benchmark, repetitions with aggrega
 scene_budget.csv (src/tools/scene_budget.cpp), relief_modes.csv (bench/relief_modes.py),
 rviz_scaling.csv (bench/rviz_scaling.py), machine.txt; from docs/:
 fourier_order_sweep_cmu_02_01.csv, tessellation_accuracy.csv, node_cpu.md, rviz_scaling.md,
-relief_modes.md, relief_flicker.md, rviz_memory.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
+relief_modes.md, relief_flicker.md, skin_distance.md, rviz_memory.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
 docs/skin_map_speed.png, docs/EVALUATION.md, and the README's "Speed" section (between its
 generated-section markers). A missing input is an error: the report is all measured or not
 written.
@@ -358,6 +358,7 @@ def main():
         rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")),
         relief_flicker=read_text(os.path.join(DOCS, "relief_flicker.md")),
+        skin_distance=read_text(os.path.join(DOCS, "skin_distance.md")),
         stability=stability)
     with open(os.path.join(DOCS, "EVALUATION.md"), "w") as f:
         f.write(text)
@@ -493,15 +494,30 @@ What the renderer shows behind the knee and inside the elbow over `walk.yaml`
 mesh, the smooth folds tilting its normals (as the shader's bump mapping does per pixel), and
 the single unoriented Y-Y tile drawn before issue 21.
 
-### Shimmer under sub-pixel motion
+### Shimmer under sub-pixel motion and over a walk
 
-`bench/relief_flicker.py`: one human frozen with its left elbow bent 68 degrees, drawn twice from
+`bench/relief_flicker.py`: one human frozen at phase 0.5 of the shipped walk, drawn twice from
 distances 0.2 % apart (the figure moves by a fraction of a pixel, as between two frames of a slow
 walk); the mean change over the garments' and the skin's pixels, with the relief as drawn by
-default (faded out from 6 to 3 pixels per feature, then not drawn), forced on, forced on without
-mipmaps, and flat (what the motion alone changes).
+default (faded out from 6 to 3 pixels per feature, then not drawn), forced on (with the normal
+maps' own mip levels: the normals of the filtered relief), forced on with the GPU's mip levels
+instead (averaged encoded normals, for comparison), forced on without mipmaps, and flat (what the
+motion alone changes). Then the same human at consecutive 30 fps frames of its walk: what each
+condition changes beyond flat is the relief's own flicker.
 
 {relief_flicker}
+
+### The skin relief by distance
+
+![Skin relief by distance](relief/skin_distance.png)
+
+![Skin at 1 m](relief/skin_closeup.png)
+
+`bench/skin_distance.py`: the same frozen human from 1 to 8 m, drawn with the default relief and
+with `Relief: Flat`; what the relief adds over the skin's and the garments' pixels. The close-up
+is the nearest distance, cropped to the skin: relief (left), flat (right).
+
+{skin_distance}
 
 ## The display against rviz's RobotModel
 
