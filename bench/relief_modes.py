@@ -67,7 +67,7 @@ def difference(path, reference):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--seconds", type=float, default=5.0)
+    parser.add_argument("--seconds", type=float, default=10.0)  # displaced geometry draws about 5 fps: 30 frames and more
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--distances", type=float, nargs="+", default=[3.0, 10.0])
     parser.add_argument("--csv", default="")

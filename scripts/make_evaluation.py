@@ -437,8 +437,10 @@ somewhat more triangles for the same error bound.
 relief modes of the display; the image difference is measured against displaced geometry, the
 reference bump mapping approximates (relief strength 2 so that it is large enough to matter).
 The chart uses the garment pixels: displaced geometry at its 24 x 24 cuts per patch resolves the
-wrinkles (2 x 2 buckling cells per patch) but not the skin's cells (about 12 x 12 per patch), so
-on the skin it aliases into noise and is no reference; the whole-figure column shows that.
+folds but not the skin's finer cells (about 12 x 12 per patch, 2 or 3 levels), which it filters
+out (each vertex reads the relief's mip level for its spacing) rather than alias them into noise:
+on the skin it is a reference only for the coarse cells, and the whole-figure column carries
+what bump mapping adds finer than that.
 
 {relief_table}
 
