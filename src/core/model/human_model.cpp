@@ -5,12 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 
 #include "dressed_human/core/garments/garment_file.h"
 #include "dressed_human/core/model/relief_visibility.h"
 #include "dressed_human/core/surfaces/covered_patches.h"
+#include "dressed_human/core/surfaces/patch_keyed_cache.h"
 
 namespace dressed_human {
 namespace {
@@ -67,39 +67,15 @@ Eigen::AlignedBox3f vertexBounds(const std::vector<Eigen::Vector3f>& positions) 
 // per process for the same surfaces (a crowd of one body and outfit, humans coming and going).
 std::shared_ptr<const std::vector<std::vector<bool>>> sharedCoveredPatches(
     const std::vector<const std::vector<BezierPatch>*>& rest) {
-  struct Entry {
-    std::vector<std::vector<BezierPatch>> rest;
-    std::weak_ptr<const std::vector<std::vector<bool>>> covered;
-  };
-  static std::mutex mutex;
-  static std::vector<Entry> entries;
-  const auto same = [&](const std::vector<std::vector<BezierPatch>>& other) {
-    if (other.size() != rest.size()) return false;
+  static PatchKeyedCache<std::vector<std::vector<bool>>> cache;
+  return cache.obtain(rest, [&] {
+    auto covered = std::make_shared<std::vector<std::vector<bool>>>();
     for (std::size_t p = 0; p < rest.size(); ++p) {
-      if (!std::equal(other[p].begin(), other[p].end(), rest[p]->begin(), rest[p]->end(),
-                      [](const BezierPatch& a, const BezierPatch& b) { return a.controlPoints() == b.controlPoints(); })) {
-        return false;
-      }
+      const std::vector<const std::vector<BezierPatch>*> outer(rest.begin() + static_cast<std::ptrdiff_t>(p) + 1, rest.end());
+      covered->push_back(patchesCoveredBy(*rest[p], outer));
     }
-    return true;
-  };
-  std::lock_guard<std::mutex> lock(mutex);
-  entries.erase(std::remove_if(entries.begin(), entries.end(), [](const Entry& e) { return e.covered.expired(); }),
-                entries.end());
-  for (const Entry& entry : entries) {
-    if (!same(entry.rest)) continue;
-    if (auto covered = entry.covered.lock()) return covered;
-  }
-  auto covered = std::make_shared<std::vector<std::vector<bool>>>();
-  Entry entry;
-  for (std::size_t p = 0; p < rest.size(); ++p) {
-    const std::vector<const std::vector<BezierPatch>*> outer(rest.begin() + static_cast<std::ptrdiff_t>(p) + 1, rest.end());
-    covered->push_back(patchesCoveredBy(*rest[p], outer));
-    entry.rest.push_back(*rest[p]);
-  }
-  entry.covered = covered;
-  entries.push_back(std::move(entry));
-  return covered;
+    return std::shared_ptr<const std::vector<std::vector<bool>>>(std::move(covered));
+  });
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
 #include "dressed_human/core/surfaces/tessellation.h"
 
+#include "dressed_human/core/surfaces/patch_keyed_cache.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -194,29 +195,8 @@ CalibratedErrorBound::CalibratedErrorBound(const std::vector<BezierPatch>& refer
 }
 
 std::shared_ptr<const CalibratedErrorBound> CalibratedErrorBound::shared(const std::vector<BezierPatch>& reference) {
-  struct Entry {
-    std::vector<BezierPatch> reference;
-    std::weak_ptr<const CalibratedErrorBound> calibration;
-  };
-  static std::mutex mutex;
-  static std::vector<Entry> entries;
-  const auto same = [&](const std::vector<BezierPatch>& other) {
-    return other.size() == reference.size() &&
-           std::equal(other.begin(), other.end(), reference.begin(), [](const BezierPatch& a, const BezierPatch& b) {
-             return a.controlPoints() == b.controlPoints();
-           });
-  };
-  std::lock_guard<std::mutex> lock(mutex);
-  entries.erase(std::remove_if(entries.begin(), entries.end(), [](const Entry& e) { return e.calibration.expired(); }),
-                entries.end());
-  for (const Entry& entry : entries) {
-    if (same(entry.reference)) {
-      if (std::shared_ptr<const CalibratedErrorBound> calibration = entry.calibration.lock()) return calibration;
-    }
-  }
-  auto calibration = std::make_shared<const CalibratedErrorBound>(reference);
-  entries.push_back(Entry{reference, calibration});
-  return calibration;
+  static PatchKeyedCache<CalibratedErrorBound> cache;
+  return cache.obtain({&reference}, [&] { return std::make_shared<const CalibratedErrorBound>(reference); });
 }
 
 double CalibratedErrorBound::bound(std::size_t index, const BezierPatch& live, int level) const {
