@@ -14,6 +14,9 @@ packages=(
   rosout rosbash python3-roslaunch python3-rostopic python3-rosnode python3-rosbag python3-rostest librostest-dev python3-rosgraph
   ros-robot-state-publisher joint-state-publisher tf2-tools python3-tf2-ros
   python3-sensor-msgs python3-nav-msgs python3-tf2-msgs python3-geometry-msgs
+  # the crowd message (msg/): generators, and the .msg files it builds on
+  ros-message-generation ros-message-runtime python3-genmsg python3-gencpp python3-genpy
+  ros-std-msgs ros-geometry-msgs python3-std-msgs libstd-msgs-dev
   # tests and benchmarks
   libgtest-dev googletest libbenchmark-dev clang libclang-rt-14-dev
   # headless rviz and screenshots

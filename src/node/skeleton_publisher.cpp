@@ -9,6 +9,7 @@
 
 #include "dressed_human/core/motion/motion_file.h"
 #include "parameters.h"
+#include "transform_messages.h"
 
 namespace dressed_human {
 namespace {
@@ -16,24 +17,6 @@ namespace {
 constexpr double kMaxRate = 10000.0;
 constexpr double kMaxSpeedFactor = 10.0;
 constexpr double kMaxOriginMetres = 1e5;  // the DressedHuman display's drawable range
-
-void copy(const RigidTransform& from, geometry_msgs::Transform& to) {
-  to.translation.x = from.translation.x();
-  to.translation.y = from.translation.y();
-  to.translation.z = from.translation.z();
-  to.rotation.x = from.rotation.x();
-  to.rotation.y = from.rotation.y();
-  to.rotation.z = from.rotation.z();
-  to.rotation.w = from.rotation.w();
-}
-
-geometry_msgs::TransformStamped named(const std::string& parent, const std::string& child) {
-  geometry_msgs::TransformStamped transform;
-  transform.header.frame_id = parent;
-  transform.child_frame_id = child;
-  transform.transform.rotation.w = 1.0;
-  return transform;
-}
 
 // A motion fitted to a person (fit_motion) moves that person's bones: on another body its feet
 // slide and miss the ground, so a robot_description without those proportions is an error.
@@ -143,17 +126,9 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
   if (settings_.mode == "walk") startWalking(skeleton, motion, private_node);
   evaluator_ = std::make_unique<MotionEvaluator>(std::move(motion));
 
-  transforms_.transforms.push_back(named(settings_.world_frame, published(skeleton.rootFrame())));
+  transforms_.transforms = movingTransforms(skeleton, settings_.world_frame, extra_suffix_);
   for (const ArticulatedJoint& joint : skeleton.joints()) {
-    const Bone& bone = skeleton.bone(static_cast<std::size_t>(joint.bone));
-    const std::string parent = bone.parent < 0 ? skeleton.rootFrame()
-                                               : skeleton.frameName(skeleton.bone(static_cast<std::size_t>(bone.parent)).name);
-    const std::array<std::string, 4> chain = {parent, joint.intermediate_links[0], joint.intermediate_links[1],
-                                              skeleton.frameName(bone.name)};
-    for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
-      transforms_.transforms.push_back(named(published(chain[d]), published(chain[d + 1])));
-      joint_state_.name.push_back(published(joint.urdf_joints[d]));
-    }
+    for (const std::string& name : joint.urdf_joints) joint_state_.name.push_back(published(name));
   }
   joint_state_.position.resize(kDofCount);
   joint_state_.velocity.resize(kDofCount);
@@ -197,19 +172,7 @@ void SkeletonPublisher::placeWalker() {
 }
 
 void SkeletonPublisher::publishStaticTransforms(const ros::Time& stamp) {
-  const Skeleton& skeleton = kinematics_->skeleton();
-  std::vector<geometry_msgs::TransformStamped> fixed;
-  for (std::size_t b = 0; b < kBoneCount; ++b) {
-    const Bone& bone = skeleton.bone(b);
-    if (bone.joint >= 0) continue;
-    const std::string parent = bone.parent < 0 ? skeleton.rootFrame()
-                                               : skeleton.frameName(skeleton.bone(static_cast<std::size_t>(bone.parent)).name);
-    geometry_msgs::TransformStamped transform = named(published(parent), published(skeleton.frameName(bone.name)));
-    transform.header.stamp = stamp;
-    copy({kinematics_->scaledRestTranslation(b), bone.rest_rotation}, transform.transform);
-    fixed.push_back(transform);
-  }
-  static_broadcaster_.sendTransform(fixed);
+  static_broadcaster_.sendTransform(fixedBoneTransforms(*kinematics_, stamp, extra_suffix_));
 }
 
 void SkeletonPublisher::run() {
@@ -247,8 +210,8 @@ void SkeletonPublisher::tick() {
   }
 
   auto& transforms = transforms_.transforms;
-  copy(pose_.root, transforms[0].transform);
-  for (std::size_t i = 0; i < kDofCount; ++i) copy(pose_.dof_transforms[i], transforms[i + 1].transform);
+  copyTransform(pose_.root, transforms[0].transform);
+  for (std::size_t i = 0; i < kDofCount; ++i) copyTransform(pose_.dof_transforms[i], transforms[i + 1].transform);
   for (auto& transform : transforms) transform.header.stamp = now;
   tf_publisher_.publish(transforms_);
 

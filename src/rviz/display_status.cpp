@@ -23,6 +23,12 @@ void DisplayStatus::warn(const std::string& name, const std::string& text) {
   warnings_.insert(name);
 }
 
+void DisplayStatus::ok(const std::string& name, const std::string& text) {
+  display_.setStatusStd(rviz::StatusProperty::Ok, name, text);
+  logged_errors_.erase(name);
+  warnings_.insert(name);
+}
+
 void DisplayStatus::clear(const std::string& name) {
   const auto reported = logged_errors_.find(name);
   const auto warned = warnings_.find(name);

@@ -22,6 +22,8 @@ class DisplayStatus {
   void error(const std::string& name, const std::string& text, bool transient = false);
   // A Warn status, not logged (its text may change every frame).
   void warn(const std::string& name, const std::string& text);
+  // An Ok status (what is going well: counts, rates), replacing an error or warning of that name.
+  void ok(const std::string& name, const std::string& text);
   // Removes the status `name` if error() or warn() set it.
   void clear(const std::string& name);
   // Forgets what was reported, after rviz::Display::reset() removed every status.
@@ -30,7 +32,7 @@ class DisplayStatus {
  private:
   rviz::Display& display_;
   std::map<std::string, std::string> logged_errors_;
-  std::set<std::string> warnings_;
+  std::set<std::string> warnings_;  // and Ok statuses: every status clear() must remove
 };
 
 }  // namespace dressed_human

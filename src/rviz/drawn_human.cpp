@@ -21,10 +21,11 @@ bool drawable(const RigidTransform& pose) {
 
 }  // namespace
 
-DrawnHuman::DrawnHuman(const Skeleton& skeleton, const BodyDescription& shaped_body, const HumanModelSettings& settings,
+DrawnHuman::DrawnHuman(const Skeleton& skeleton, std::unique_ptr<HumanPoseSource> poses,
+                       const BodyDescription& shaped_body, const HumanModelSettings& settings,
                        Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& ogre_prefix,
                        const std::string& label)
-    : bone_source_(skeleton, label),
+    : poses_(std::move(poses)),
       kinematics_(skeleton, shaped_body.shape),
       model_(skeleton, shaped_body, settings),
       visual_(scene_manager, parent, ogre_prefix),
@@ -35,10 +36,8 @@ DrawnHuman::~DrawnHuman() = default;
 
 bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod,
                         const Ogre::Camera* camera, bool hide_unseen_relief, bool hide_covered) {
-  if (!bone_source_.lookUp(frames, status)) return false;
-  if (fresh(bone_source_.stamp())) last_seen_ = ros::WallTime::now();
-  // Eq. 5: TF carries the URDF's offsets (its own body shape in them); the display's shape on top.
-  kinematics_.composeFromTf(bone_source_.root(), bone_source_.bonesInParent(), bones_);
+  if (!poses_->pose(frames, status, kinematics_, root_, bones_)) return false;
+  if (fresh(poses_->stamp())) last_seen_ = ros::WallTime::now();
   if (!posesDrawable(status, frames.getFixedFrame())) return false;
   // Visibility first (by where the human was last frame): the model skips the wrinkles' per-vertex
   // work while they are not drawn, and must do it in the very frame they are drawn again.
@@ -46,7 +45,7 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   lod.hide_covered = hide_covered && small;
   visual_.setVertexLit(hide_unseen_relief && small);
   model_.setWrinklesWanted(visual_.reliefShown(ReliefKind::kCloth));
-  model_.update(bone_source_.root(), bones_, lod);
+  model_.update(root_, bones_, lod);
   visual_.update(model_.parts());
   visual_.updateSkeleton(kinematics_, bones_);
   return true;
@@ -73,7 +72,7 @@ void DrawnHuman::setDisplacement(const ReliefMapJobs& jobs, bool displaced, floa
 }
 
 void DrawnHuman::clearStatuses(DisplayStatus& status) {
-  bone_source_.clearStatuses(status);
+  poses_->clearStatuses(status);
   status.clear(pose_status_);
 }
 
@@ -104,9 +103,9 @@ bool DrawnHuman::posesDrawable(DisplayStatus& status, const std::string& fixed_f
   // with sane TF.
   std::string frame;
   const RigidTransform* pose = nullptr;
-  if (!drawable(bone_source_.root())) frame = bone_source_.rootFrame(), pose = &bone_source_.root();
+  if (!drawable(root_)) frame = poses_->rootFrame(), pose = &root_;
   for (std::size_t b = 0; pose == nullptr && b < kBoneCount; ++b) {
-    if (!drawable(bones_[b])) frame = bone_source_.boneFrame(b), pose = &bones_[b];
+    if (!drawable(bones_[b])) frame = poses_->boneFrame(b), pose = &bones_[b];
   }
   if (pose == nullptr) {
     if (!undrawable_frame_.empty()) {

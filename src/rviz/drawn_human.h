@@ -1,8 +1,9 @@
 #pragma once
-// One human a DressedHuman display draws: its bones from TF (TfBoneSource), its surfaces (the
-// core's HumanModel) and its Ogre objects (HumanVisual). A display draws one (its robot
-// description's) or every human in TF, each a DrawnHuman; what they share (properties, relief
-// maps, the body file) stays in the display.
+// One human a DressedHuman display draws: its bones from a pose source (TF or the crowd message,
+// HumanPoseSource), its surfaces (the core's HumanModel) and its Ogre objects (HumanVisual). A
+// display draws one (its robot description's), every human in TF or every human of a crowd
+// topic, each a DrawnHuman; what they share (properties, relief maps, the body file) stays in the
+// display.
 
 #include <array>
 #include <memory>
@@ -14,7 +15,7 @@
 #include "dressed_human/core/model/relief_map_jobs.h"
 #include "dressed_human/core/model/relief_visibility.h"
 #include "human_visual.h"
-#include "tf_bone_source.h"
+#include "human_pose_source.h"
 
 namespace Ogre {
 class Camera;
@@ -31,10 +32,11 @@ class DisplayStatus;
 
 class DrawnHuman {
  public:
-  // `skeleton` names this human's frames; `label` tells its statuses apart from other humans' of
-  // the display ("" for a display's only human, else its root frame). Throws what HumanModel
-  // throws (a garment or body file that does not fit).
-  DrawnHuman(const Skeleton& skeleton, const BodyDescription& shaped_body, const HumanModelSettings& settings,
+  // `skeleton` names this human's frames; `poses` says where its bones are; `label` tells its
+  // statuses apart from other humans' of the display ("" for a display's only human, else its
+  // root frame). Throws what HumanModel throws (a garment or body file that does not fit).
+  DrawnHuman(const Skeleton& skeleton, std::unique_ptr<HumanPoseSource> poses, const BodyDescription& shaped_body,
+             const HumanModelSettings& settings,
              Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& ogre_prefix,
              const std::string& label);
   ~DrawnHuman();
@@ -43,9 +45,9 @@ class DrawnHuman {
 
   HumanModel& model() { return model_; }
   HumanVisual& visual() { return visual_; }
-  const std::string& rootFrame() const { return bone_source_.rootFrame(); }
+  const std::string& rootFrame() const { return poses_->rootFrame(); }
 
-  // Bones from TF, then surfaces at `lod` (a displaced relief: `displaced_level` instead) and the
+  // Bones from the pose source, then surfaces at `lod` (a displaced relief: `displaced_level` instead) and the
   // relief shown or hidden by its size on screen (`hide_unseen_relief`), and what the clothes
   // cover left out while the gap past hems is too small to see into (`hide_covered`,
   // LevelOfDetail::hide_covered). False when the human is not drawn this frame: TF lacks a
@@ -77,11 +79,12 @@ class DrawnHuman {
   // where what they cover is left out and lighting per vertex does.
   bool updateDetailVisibility(const Ogre::Camera* camera, bool judge_relief);
 
-  TfBoneSource bone_source_;
+  std::unique_ptr<HumanPoseSource> poses_;
   ForwardKinematics kinematics_;
   HumanModel model_;
   HumanVisual visual_;
   std::string pose_status_;  // "Pose", or "Pose <root frame>"
+  RigidTransform root_;                           // in the fixed frame
   std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
   std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
   std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts

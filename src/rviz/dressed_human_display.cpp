@@ -1,5 +1,7 @@
 #include "dressed_human_display.h"
 
+#include <cmath>
+
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/package.h>
 #include <rviz/display_context.h>
@@ -8,6 +10,7 @@
 #include <rviz/view_manager.h>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
+#include "crowd_message_source.h"
 #include "drawn_human.h"
 #include "properties/body_properties.h"
 #include "properties/crowd_properties.h"
@@ -15,6 +18,7 @@
 #include "properties/garment_properties.h"
 #include "properties/lod_properties.h"
 #include "properties/relief_properties.h"
+#include "tf_bone_source.h"
 #include "tf_human_roster.h"
 
 namespace dressed_human {
@@ -36,6 +40,7 @@ DressedHumanDisplay::DressedHumanDisplay()
   connect(body_properties_.get(), SIGNAL(shapeChanged()), this, SLOT(updateBodyShape()));
   connect(body_properties_.get(), SIGNAL(skinColourChanged()), this, SLOT(rebuildHumans()));
   connect(crowd_properties_.get(), SIGNAL(changed()), this, SLOT(loadCrowdFile()));
+  connect(crowd_properties_.get(), SIGNAL(topicChanged()), this, SLOT(updateSubscription()));
   connect(garment_properties_.get(), SIGNAL(changed()), this, SLOT(rebuildHumans()));
   connect(relief_properties_.get(), SIGNAL(appearanceChanged()), this, SLOT(updateAppearance()));
   connect(relief_properties_.get(), SIGNAL(skinMapChanged()), this, SLOT(regenerateSkinRelief()));
@@ -68,10 +73,18 @@ void DressedHumanDisplay::onInitialize() {
 
 void DressedHumanDisplay::onEnable() {
   for (auto& human : humans_) human.second->visual().setVisible(true);
+  updateSubscription();
 }
 
 void DressedHumanDisplay::onDisable() {
   for (auto& human : humans_) human.second->visual().setVisible(false);
+  crowd_topic_.unsubscribe(status_);
+}
+
+void DressedHumanDisplay::updateSubscription() {
+  if (!ogre_ready_ || !isEnabled() || !crowd_properties_->fromTopic()) return crowd_topic_.unsubscribe(status_);
+  crowd_topic_.subscribe(update_nh_, crowd_properties_->topic(), status_);
+  rebuildHumans();
 }
 
 // rviz resets every display when ROS time jumps back, at each loop of a replayed bag: rebuilding
@@ -138,7 +151,7 @@ void DressedHumanDisplay::updateBodyShape() {
 void DressedHumanDisplay::loadCrowdFile() {
   crowd_file_.clear();
   const std::string path = crowd_properties_->crowdFile();
-  if (crowd_properties_->everyHumanInTf() && !path.empty()) {
+  if (crowd_properties_->crowd() && !path.empty()) {
     try {
       crowd_file_ = dressed_human::loadCrowdFile(path);
       status_.clear("Crowd File");
@@ -149,14 +162,17 @@ void DressedHumanDisplay::loadCrowdFile() {
     status_.clear("Crowd File");
   }
   loadRobotDescription();
+  updateSubscription();
 }
 
 void DressedHumanDisplay::rebuildHumans() {
   while (!humans_.empty()) removeHuman(humans_.begin());
-  deleteStatus("Humans");
+  status_.clear("Humans");
   if (!skeleton_ || !body_ || !ogre_ready_) return context_->queueRender();
   if (crowd_properties_->everyHumanInTf()) {
     lookForHumans();
+  } else if (crowd_properties_->fromTopic()) {
+    crowd_topic_.clear();  // every human of the next message is added again
   } else {
     addHuman(skeleton_->suffix());
   }
@@ -168,7 +184,7 @@ HumanModelSettings DressedHumanDisplay::settingsFor(const std::string& suffix) c
   settings.skin_colour = body_properties_->skinColour();
   settings.garment_directory = ros::package::getPath("dressed_human") + "/config/garments";
   garment_properties_->apply(settings);
-  if (crowd_properties_->everyHumanInTf()) {
+  if (crowd_properties_->crowd()) {
     const std::string id = suffix.empty() ? std::string() : suffix.substr(1);
     const auto listed = crowd_file_.find(id);
     if (crowd_properties_->varyUnlisted()) variedAppearance(id).applyTo(settings);
@@ -177,15 +193,21 @@ HumanModelSettings DressedHumanDisplay::settingsFor(const std::string& suffix) c
   return settings;
 }
 
-void DressedHumanDisplay::addHuman(const std::string& suffix) {
-  const bool crowd = crowd_properties_->everyHumanInTf();
+void DressedHumanDisplay::addHuman(const std::string& suffix, double stature) {
+  const bool crowd = crowd_properties_->crowd();
   const std::string label = crowd ? "body" + suffix : std::string();
   const std::string model_status = crowd ? "Model " + label : "Model";
   try {
-    const tf2_ros::Buffer& tf = *context_->getFrameManager()->getTF2BufferPtr();  // crowd humans' heights differ
-    const CrowdHumanBody body = crowdHumanBody(*skeleton_, urdf_, *body_, shape_, suffix, crowd ? statureInTf(tf, *skeleton_, suffix) : 1.0);
+    if (std::isnan(stature)) stature = statureInTf(*context_->getFrameManager()->getTF2BufferPtr(), *skeleton_, suffix);
+    const CrowdHumanBody body = crowdHumanBody(*skeleton_, urdf_, *body_, shape_, suffix, stature);
+    std::unique_ptr<HumanPoseSource> poses;
+    if (crowd_properties_->fromTopic()) {
+      poses = std::make_unique<CrowdMessageSource>(crowd_topic_.track(suffix.substr(1)), body.skeleton);
+    } else {
+      poses = std::make_unique<TfBoneSource>(body.skeleton, label);
+    }
     auto human = std::make_unique<DrawnHuman>(
-        body.skeleton, body.description, settingsFor(suffix), scene_manager_, scene_node_,
+        body.skeleton, std::move(poses), body.description, settingsFor(suffix), scene_manager_, scene_node_,
         "dressed_human/" + getName().toStdString() + "/" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
             "/" + (suffix.empty() ? std::string("body") : suffix.substr(1)),
         label);
@@ -212,9 +234,25 @@ void DressedHumanDisplay::lookForHumans() {
   if (!skeleton_ || !body_) return;
   rviz::FrameManager& frames = *context_->getFrameManager();
   for (const std::string& suffix : freshHumansInTf(*frames.getTF2BufferPtr(), frames.getFixedFrame())) {
-    if (humans_.count(suffix) == 0) addHuman(suffix);
+    if (humans_.count(suffix) == 0) addHuman(suffix, std::nan(""));  // crowd humans' heights differ
   }
-  setStatusStd(rviz::StatusProperty::Ok, "Humans", std::to_string(humans_.size()) + " in TF");
+  status_.ok("Humans", std::to_string(humans_.size()) + " in TF");
+}
+
+void DressedHumanDisplay::takeHumansFromTopic() {
+  if (!skeleton_ || !body_) return;
+  const std::size_t before = humans_.size();
+  for (const CrowdTopic::NewHuman& human : crowd_topic_.takeMessages(*context_->getFrameManager(), status_)) {
+    addHuman("_" + human.id, human.stature);
+  }
+  std::size_t left = 0;
+  for (const std::string& id : crowd_topic_.takeLeft()) {
+    const auto human = humans_.find("_" + id);
+    if (human != humans_.end()) removeHuman(human), ++left;
+  }
+  if (humans_.size() != before || left > 0 || humans_.empty()) {
+    status_.ok("Humans", std::to_string(humans_.size()) + " from '" + crowd_topic_.topic() + "'");
+  }
 }
 
 void DressedHumanDisplay::dropLostHumans() {
@@ -312,6 +350,7 @@ void DressedHumanDisplay::updateSurfaces(float wall_dt) {
     dropLostHumans();
     lookForHumans();
   }
+  if (crowd_properties_->fromTopic()) takeHumansFromTopic();
   const rviz::ViewController* view = context_->getViewManager()->getCurrent();
   const Ogre::Camera* camera = view ? view->getCamera() : nullptr;
   LevelOfDetail lod;
@@ -341,7 +380,7 @@ void DressedHumanDisplay::updateSurfaces(float wall_dt) {
 void DressedHumanDisplay::reportSurfaces(std::size_t humans, std::size_t parts, std::size_t triangles) {
   const std::array<std::size_t, 3> surfaces{humans, parts, triangles};
   if (surfaces == surfaces_reported_ || parts == 0) return;
-  const std::string drawn = crowd_properties_->everyHumanInTf() ? std::to_string(humans) + " humans, " : "";
+  const std::string drawn = crowd_properties_->crowd() ? std::to_string(humans) + " humans, " : "";
   setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
                drawn + std::to_string(parts) + " parts, " + std::to_string(triangles) + " triangles");
   surfaces_reported_ = surfaces;

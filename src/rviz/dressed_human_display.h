@@ -1,8 +1,8 @@
 #pragma once
-// rviz display "dressed_human/DressedHuman": skin and garments of one human, or of every human
-// in TF, attached to the skeleton's TF frames. Shaped like rviz's RobotModelDisplay: the display
+// rviz display "dressed_human/DressedHuman": skin and garments of one human, of every human in
+// TF, or of every human of a crowd topic (dressed_human/Crowd), on their skeletons' bones. Shaped like rviz's RobotModelDisplay: the display
 // owns the properties (grouped by concern, properties/) and what its humans share (skeleton, body, relief maps); each
-// human (DrawnHuman) reads its bones from TF, turns them into surfaces (the core's HumanModel)
+// human (DrawnHuman) reads its bones from a pose source (TF, or the crowd topic), turns them into surfaces (the core's HumanModel)
 // and owns its Ogre objects (HumanVisual).
 
 #include <array>
@@ -15,6 +15,7 @@
 #include "dressed_human/core/model/crowd_appearance.h"
 #include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/model/relief_map_jobs.h"
+#include "crowd_topic.h"
 #include "display_status.h"
 #include "update_cost_meter.h"
 
@@ -48,6 +49,7 @@ class DressedHumanDisplay : public rviz::Display {
   void loadRobotDescription();
   void updateBodyShape();
   void loadCrowdFile();
+  void updateSubscription();
   void rebuildHumans();
   void updateVertexEvaluation();
   void updateAppearance();
@@ -56,11 +58,14 @@ class DressedHumanDisplay : public rviz::Display {
  private:
   // A human of the robot description's skeleton with `suffix` ("" or "_<id>") on its frames,
   // dressed and coloured as the properties (and, for a crowd, the crowd file) say.
-  void addHuman(const std::string& suffix);
+  // `stature`: its size against the skeleton's (a crowd message's); NaN: read from its TF.
+  void addHuman(const std::string& suffix, double stature = 1.0);
   HumanModelSettings settingsFor(const std::string& suffix) const;
   // Crowd: adds each human TF carries that the display lacks, and drops each one whose TF stopped.
   void lookForHumans();
   void dropLostHumans();
+  // Crowd topic: the messages since the last frame; humans new to it added, those gone removed.
+  void takeHumansFromTopic();
   void removeHuman(std::map<std::string, std::unique_ptr<DrawnHuman>>::iterator human);
   // A new human: the vertex evaluation (`report`: in the status), appearance, maps and
   // displacement the properties ask for.
@@ -92,6 +97,7 @@ class DressedHumanDisplay : public rviz::Display {
   std::map<std::string, HumanAppearance> crowd_file_;  // by human id
   std::map<std::string, std::unique_ptr<DrawnHuman>> humans_;  // by frame suffix
   float seconds_since_roster_ = 0.0f;  // since lookForHumans()
+  CrowdTopic crowd_topic_;
   // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode. The
   // newest normal map of each kind goes to every human, those added later too.
   ReliefMapJobs relief_jobs_;

@@ -82,6 +82,15 @@ bool TfBoneSource::lookUp(rviz::FrameManager& frames, DisplayStatus& status) {
   return found || lookUpAt(*buffer, stamp, true, status);
 }
 
+bool TfBoneSource::pose(rviz::FrameManager& frames, DisplayStatus& status, const ForwardKinematics& kinematics,
+                        RigidTransform& root, std::array<RigidTransform, kBoneCount>& bones) {
+  if (!lookUp(frames, status)) return false;
+  // Eq. 5: TF carries the URDF's offsets (its own body shape in them); the drawn body's on top.
+  kinematics.composeFromTf(root_, bone_in_parent_, bones);
+  root = root_;
+  return true;
+}
+
 void TfBoneSource::clearStatuses(DisplayStatus& status) const {
   status.clear(root_status_name_);
   status.clear(stale_status_name_);

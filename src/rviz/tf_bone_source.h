@@ -11,6 +11,7 @@
 #include <ros/time.h>
 
 #include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "human_pose_source.h"
 
 namespace rviz {
 class FrameManager;
@@ -21,12 +22,18 @@ class Buffer;
 
 namespace dressed_human {
 
-class DisplayStatus;
-
-class TfBoneSource {
+class TfBoneSource : public HumanPoseSource {
  public:
   // `label` tells this human's "TF" status apart from other humans' of one display ("TF <label>").
   explicit TfBoneSource(const Skeleton& skeleton, const std::string& label = "");
+
+  // lookUp(), then every bone in the fixed frame (ForwardKinematics::composeFromTf).
+  bool pose(rviz::FrameManager& frames, DisplayStatus& status, const ForwardKinematics& kinematics, RigidTransform& root,
+            std::array<RigidTransform, kBoneCount>& bones) override;
+  ros::Time stamp() const override { return stamp_; }
+  const std::string& rootFrame() const override { return root_frame_; }
+  const std::string& boneFrame(std::size_t bone) const override { return bone_frames_[bone]; }
+  void clearStatuses(DisplayStatus& status) const override;
 
   // Looks up the root and every bone at one stamp; false (and the failing frames reported) if
   // any is missing. Clears the statuses of frames found again.
@@ -35,12 +42,6 @@ class TfBoneSource {
   // as TF carries it (the URDF's offsets, its body shape in them; ForwardKinematics::composeFromTf).
   const RigidTransform& root() const { return root_; }
   const std::array<RigidTransform, kBoneCount>& bonesInParent() const { return bone_in_parent_; }
-  const std::string& rootFrame() const { return root_frame_; }
-  // The stamp of the last successful lookUp(): the bones' common time.
-  const ros::Time& stamp() const { return stamp_; }
-  const std::string& boneFrame(std::size_t bone) const { return bone_frames_[bone]; }
-  // Removes every status lookUp() set.
-  void clearStatuses(DisplayStatus& status) const;
 
  private:
   // Every bone at `stamp`; false at the first failure, or (report) after reporting each one.

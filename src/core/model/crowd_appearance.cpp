@@ -88,7 +88,9 @@ std::map<std::string, HumanAppearance> loadCrowdFile(const std::string& path) {
     if (!id_ok) reader.fail(entry.first, key, "a human id is the letters and digits after 'body_' in its frames");
     const YAML::Node& fields = entry.second;
     reader.requireMap(fields, key);
-    reader.rejectUnknownKeys(fields, key, {"outfit", "skin_colour", "upper_colour", "lower_colour"});
+    // How the human walks is the crowd publisher's (crowd_walks.h): one file describes the crowd.
+    reader.rejectUnknownKeys(fields, key, {"outfit", "skin_colour", "upper_colour", "lower_colour", "route", "route_end",
+                                           "speed", "stature", "start_phase"});
     HumanAppearance appearance;
     if (fields["outfit"]) {
       try {

@@ -4,6 +4,7 @@
 #include <rviz/properties/bool_property.h>
 #include <rviz/properties/enum_property.h>
 #include <rviz/properties/float_property.h>
+#include <rviz/properties/ros_topic_property.h>
 #include <rviz/properties/string_property.h>
 
 namespace dressed_human {
@@ -11,6 +12,7 @@ namespace {
 
 const char* const kRobotDescription = "Robot Description";
 const char* const kEveryHumanInTf = "Every Human in TF";
+const char* const kFromTopic = "From Topic";
 
 }  // namespace
 
@@ -19,10 +21,16 @@ CrowdProperties::CrowdProperties(rviz::Property* parent) {
       "Humans", kRobotDescription,
       "Robot Description: the one human whose skeleton the Robot Description names. Every Human in TF: "
       "each skeleton TF carries (root frames body, body_<id>, checked every second), all with the "
-      "Robot Description's skeleton; a human whose TF stops for Human Timeout leaves the display.",
+      "Robot Description's skeleton; a human whose TF stops for Human Timeout leaves the display. From Topic: "
+      "every human of the dressed_human/Crowd messages on Topic (crowd_publisher), one message for all; a "
+      "human absent from the messages for 1 s leaves the display.",
       parent, SLOT(humansChanged()), this);
   humans_->addOption(kRobotDescription);
   humans_->addOption(kEveryHumanInTf);
+  humans_->addOption(kFromTopic);
+  topic_ = new rviz::RosTopicProperty("Topic", "/crowd", "dressed_human/Crowd",
+                                      "The dressed_human/Crowd topic the humans come from (crowd_publisher's /crowd).",
+                                      parent, SIGNAL(topicChanged()), this);
   crowd_file_ = new rviz::StringProperty(
       "Crowd File", "",
       "YAML file of what each human wears, by id, as a path or package://<package>/<path> "
@@ -42,6 +50,10 @@ CrowdProperties::CrowdProperties(rviz::Property* parent) {
 
 bool CrowdProperties::everyHumanInTf() const { return humans_->getStdString() == kEveryHumanInTf; }
 
+bool CrowdProperties::fromTopic() const { return humans_->getStdString() == kFromTopic; }
+
+std::string CrowdProperties::topic() const { return topic_->getTopicStd(); }
+
 std::string CrowdProperties::crowdFile() const {
   // package://<package>/<path>, as rviz's mesh resources are named, so that a saved config works
   // wherever the package is installed.
@@ -60,8 +72,9 @@ bool CrowdProperties::varyUnlisted() const { return vary_unlisted_->getBool(); }
 double CrowdProperties::humanTimeout() const { return human_timeout_->getFloat(); }
 
 void CrowdProperties::updateVisibility() {
-  crowd_file_->setHidden(!everyHumanInTf());
-  vary_unlisted_->setHidden(!everyHumanInTf());
+  topic_->setHidden(!fromTopic());
+  crowd_file_->setHidden(!crowd());
+  vary_unlisted_->setHidden(!crowd());
   human_timeout_->setHidden(!everyHumanInTf());
 }
 

@@ -10,6 +10,7 @@ class EnumProperty;
 class FloatProperty;
 class IntProperty;
 class Property;
+class RosTopicProperty;
 class StringProperty;
 class VectorProperty;
 }  // namespace rviz

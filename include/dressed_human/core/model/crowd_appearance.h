@@ -36,7 +36,8 @@ HumanAppearance variedAppearance(const std::string& id);
 // The crowd file (config/crowds/example.yaml):
 //   humans:
 //     "3": {outfit: jacket_pants, skin_colour: [0.55, 0.38, 0.28], upper_colour: [...], lower_colour: [...]}
-// Every field optional; colours RGB in [0, 1]. Throws CrowdFileError naming the file, line and key.
+// Every field optional; colours RGB in [0, 1]; the walking keys (route, speed, ...) are the crowd
+// publisher's (crowd_walks.h). Throws CrowdFileError naming the file, line and key.
 std::map<std::string, HumanAppearance> loadCrowdFile(const std::string& path);
 
 }  // namespace dressed_human

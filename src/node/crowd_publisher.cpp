@@ -1,0 +1,177 @@
+#include "crowd_publisher.h"
+
+#include <cmath>
+
+#include <ros/package.h>
+
+#include "dressed_human/core/locomotion/normative_gait.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/skeleton/urdf_body_shape.h"
+#include "parameters.h"
+#include "transform_messages.h"
+
+namespace dressed_human {
+namespace {
+
+constexpr int kMaxCount = 1000;
+constexpr double kMaxRate = 1000.0;
+
+// The robot description's skeleton at a crowd human's stature, as a DressedHuman display draws it
+// (tf_human_roster.h's crowdHumanBody: within 0.5 % of 1, or a description with proportions of its
+// own, unscaled; the message then says 1).
+double drawnStature(const Skeleton& skeleton, double stature) {
+  return std::abs(stature - 1.0) < 0.005 || !skeleton.bodyShape().isIdentity() ? 1.0 : stature;
+}
+
+Skeleton skeletonAtStature(const Skeleton& skeleton, const std::string& urdf, double stature) {
+  if (stature == 1.0) return skeleton;
+  BodyShape tall;
+  for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(stature);
+  return Skeleton::fromUrdf(shapedUrdf(urdf, tall));
+}
+
+}  // namespace
+
+CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHandle& private_node) {
+  const Parameters parameters(private_node);
+  CrowdPublisherSettings s;
+  const std::string package = ros::package::getPath("dressed_human");
+  s.crowd_file = parameters.text("crowd_file", s.crowd_file);
+  s.count = static_cast<int>(parameters.numberIn("count", s.count, 0, kMaxCount, "humans"));
+  if (parameters.number("count", s.count) != s.count) {
+    throw ParameterError("parameter " + parameters.fullName("count") + " must be a whole number of humans");
+  }
+  s.motion_file = parameters.text("motion_file", package.empty() ? "" : package + "/config/motions/walk.yaml");
+  s.gait_file = parameters.text("gait_file", package.empty() ? "" : package + "/config/gait/speed_gaits.yaml");
+  if (s.motion_file.empty() || s.gait_file.empty()) {
+    throw ParameterError("parameters " + parameters.fullName("motion_file") + " and " + parameters.fullName("gait_file") +
+                         " are needed: the dressed_human package path is unknown");
+  }
+  s.rate = parameters.numberIn("rate", s.rate, 1.0, kMaxRate, "Hz");
+  s.world_frame = parameters.text("world_frame", s.world_frame);
+  if (s.world_frame.empty()) throw ParameterError("parameter " + parameters.fullName("world_frame") + " is empty");
+  s.skeleton_tf = parameters.boolean("skeleton_tf", s.skeleton_tf);
+  return s;
+}
+
+CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_node)
+    : settings_(CrowdPublisherSettings::fromParameters(private_node)) {
+  const std::string urdf = Parameters(node).requiredText("robot_description");
+  const Motion motion = loadMotionFile(settings_.motion_file);
+  if (motion.body_shape) {
+    throw ParameterError("motion file " + settings_.motion_file + " was fitted to one person's body; a crowd walks the "
+                         "robot description's body at each human's stature: give a motion without body_shape");
+  }
+  const NormativeGait gait = loadNormativeGaitFile(settings_.gait_file);
+  const std::vector<CrowdWalk> walks = settings_.crowd_file.empty()
+                                           ? defaultCrowdWalks(static_cast<std::size_t>(settings_.count))
+                                           : loadCrowdWalks(settings_.crowd_file);
+  const Skeleton plain = Skeleton::fromUrdf(urdf);
+  if (!plain.suffix().empty()) {
+    throw ParameterError("robot_description's frames carry the suffix '" + plain.suffix() +
+                         "'; a crowd names its humans itself: give the plain skeleton (urdf/human.urdf)");
+  }
+  members_.reserve(walks.size());
+  for (const CrowdWalk& walk : walks) addMember(walk, plain, urdf, motion, gait);
+
+  message_.header.frame_id = settings_.world_frame;
+  message_.humans.resize(members_.size());
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    Member& member = members_[i];
+    message_.humans[i].id = member.walk.id;
+    message_.humans[i].stature = static_cast<float>(member.stature);
+    message_.humans[i].joint_angles.resize(kDofCount);
+    const std::vector<geometry_msgs::TransformStamped> moving = movingTransforms(member.skeleton, settings_.world_frame);
+    if (settings_.skeleton_tf) {
+      transforms_.transforms.insert(transforms_.transforms.end(), moving.begin(), moving.end());
+    } else {
+      transforms_.transforms.push_back(moving.front());
+    }
+  }
+  crowd_publisher_ = node.advertise<dressed_human::Crowd>("crowd", 10);
+  tf_publisher_ = node.advertise<tf2_msgs::TFMessage>("/tf", 100);
+  ROS_INFO("crowd_publisher: %zu humans (%s) at %.1f Hz on %s in %s; %s on /tf", members_.size(),
+           settings_.crowd_file.empty() ? "default layout" : settings_.crowd_file.c_str(), settings_.rate,
+           crowd_publisher_.getTopic().c_str(), settings_.world_frame.c_str(),
+           settings_.skeleton_tf ? "whole skeletons" : "root frames body_<id>");
+}
+
+void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, const std::string& urdf,
+                               const Motion& motion, const NormativeGait& gait) {
+  const double stature = drawnStature(plain, walk.stature);
+  const Skeleton scaled = skeletonAtStature(plain, urdf, stature);
+  auto walker = std::make_unique<Walker>(scaled, scaled.bodyShape(), SpeedGait(motion, gait, scaled, scaled.bodyShape()));
+  walker->setCruiseSpeed(walk.speed);
+  members_.push_back(Member{walk, stature, scaled.withSuffix("_" + walk.id), std::move(walker), {}, {}});
+}
+
+// Each human starts at its route's last waypoint facing the first, at its own gait phase.
+void CrowdPublisher::place() {
+  for (Member& member : members_) {
+    const std::vector<Eigen::Vector2d>& waypoints = member.walk.route.waypoints;
+    const Eigen::Vector2d from = member.walk.route.closed ? waypoints.back() : waypoints.front();
+    const Eigen::Vector2d to = member.walk.route.closed ? waypoints.front() : waypoints[std::min<std::size_t>(1, waypoints.size() - 1)];
+    const Eigen::Vector2d direction = to - from;
+    member.walker->place(from, direction.norm() > 0.0 ? std::atan2(direction.y(), direction.x()) : 0.0,
+                         member.walk.start_phase);
+    member.walker->followRoute(member.walk.route);
+  }
+}
+
+void CrowdPublisher::publishStaticTransforms(const ros::Time& stamp) {
+  if (!settings_.skeleton_tf) return;
+  std::vector<geometry_msgs::TransformStamped> fixed;
+  for (const Member& member : members_) {
+    const std::vector<geometry_msgs::TransformStamped> bones =
+        fixedBoneTransforms(ForwardKinematics(member.skeleton, member.skeleton.bodyShape()), stamp);
+    fixed.insert(fixed.end(), bones.begin(), bones.end());
+  }
+  static_broadcaster_.sendTransform(fixed);
+}
+
+void CrowdPublisher::run() {
+  if (!ros::Time::waitForValid()) return;
+  ros::Rate rate(settings_.rate);
+  while (ros::ok()) {
+    tick();
+    ros::spinOnce();
+    rate.sleep();
+  }
+}
+
+void CrowdPublisher::tick() {
+  const ros::Time now = ros::Time::now();
+  if (now.isZero()) return;
+  if (started_ && now < last_time_) {
+    ROS_INFO("crowd_publisher: time jumped back from %.3f to %.3f s (bag loop?): every human starts again",
+             last_time_.toSec(), now.toSec());
+    started_ = false;
+  }
+  if (!started_) {
+    started_ = true;
+    last_time_ = now;
+    place();
+    publishStaticTransforms(now);
+  }
+  const double dt = (now - last_time_).toSec();
+  last_time_ = now;
+  const std::size_t per_member = settings_.skeleton_tf ? 1 + kDofCount : 1;
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    Member& member = members_[i];
+    member.walker->step(dt, member.angles, member.pose);
+    dressed_human::HumanState& state = message_.humans[i];
+    copyPose(member.pose.root, state.root);
+    for (std::size_t d = 0; d < kDofCount; ++d) state.joint_angles[d] = static_cast<float>(member.angles[d]);
+    geometry_msgs::TransformStamped* transforms = &transforms_.transforms[i * per_member];
+    copyTransform(member.pose.root, transforms[0].transform);
+    if (settings_.skeleton_tf) {
+      for (std::size_t d = 0; d < kDofCount; ++d) copyTransform(member.pose.dof_transforms[d], transforms[1 + d].transform);
+    }
+  }
+  message_.header.stamp = now;
+  for (auto& transform : transforms_.transforms) transform.header.stamp = now;
+  crowd_publisher_.publish(message_);
+  tf_publisher_.publish(transforms_);
+}
+
+}  // namespace dressed_human

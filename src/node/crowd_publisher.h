@@ -1,0 +1,71 @@
+#pragma once
+// ROS adapter: walks every human of a crowd in one process and publishes, per tick, one
+// dressed_human/Crowd message for all of them (the display draws from it) and each human's root
+// frame body_<id> on /tf (where navigation and perception code looks people up). Whole skeletons
+// on /tf only on request (skeleton_tf): rviz keeps ten minutes of /tf, 49 moving frames a human.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+#include <tf2_msgs/TFMessage.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+
+#include "dressed_human/Crowd.h"
+#include "dressed_human/core/locomotion/walker.h"
+#include "dressed_human/core/model/crowd_walks.h"
+
+namespace dressed_human {
+
+struct CrowdPublisherSettings {
+  std::string crowd_file;      // humans, routes, statures (crowd_walks.h); empty: `count` on the default layout
+  int count = 6;
+  std::string motion_file;     // the walk every human's gait comes from
+  std::string gait_file;       // the normative gait table
+  double rate = 30.0;          // Hz
+  std::string world_frame = "world";
+  bool skeleton_tf = false;    // every human's whole skeleton on /tf too
+
+  // Reads the private parameters of `private_node`; throws ParameterError naming the bad one.
+  static CrowdPublisherSettings fromParameters(const ros::NodeHandle& private_node);
+};
+
+class CrowdPublisher {
+ public:
+  // Throws (ParameterError, SkeletonError, MotionError, LocomotionError, CrowdFileError) with a
+  // message naming what is wrong.
+  CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_node);
+
+  // Publishes at the configured rate until ROS shuts down (ticks paced by ros::Rate, simulated
+  // time aware, as skeleton_publisher's).
+  void run();
+
+ private:
+  struct Member {
+    CrowdWalk walk;
+    double stature;     // as drawn: 1 when the robot description carries proportions of its own
+    Skeleton skeleton;  // suffixed with _<id>, scaled by the stature
+    std::unique_ptr<Walker> walker;
+    JointAngles angles{};
+    SkeletonPose pose;
+  };
+  void addMember(const CrowdWalk& walk, const Skeleton& plain, const std::string& urdf, const Motion& motion,
+                 const NormativeGait& gait);
+  void place();
+  void tick();
+  void publishStaticTransforms(const ros::Time& stamp);
+
+  CrowdPublisherSettings settings_;
+  std::vector<Member> members_;
+  dressed_human::Crowd message_;
+  // Per member its root, then (skeleton_tf) its 48 DOFs; names set once, filled in place.
+  tf2_msgs::TFMessage transforms_;
+  ros::Publisher crowd_publisher_;
+  ros::Publisher tf_publisher_;
+  tf2_ros::StaticTransformBroadcaster static_broadcaster_;
+  ros::Time last_time_;
+  bool started_ = false;
+};
+
+}  // namespace dressed_human
