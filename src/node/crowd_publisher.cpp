@@ -105,16 +105,22 @@ void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, con
   members_.push_back(Member{walk, stature, scaled.withSuffix("_" + walk.id), std::move(walker), {}, {}});
 }
 
-// Each human starts at its route's last waypoint facing the first, at its own gait phase.
+// Each human at its start facing its route's first waypoint (a treadmill walker: its second),
+// at its own gait phase.
 void CrowdPublisher::place() {
   for (Member& member : members_) {
-    const std::vector<Eigen::Vector2d>& waypoints = member.walk.route.waypoints;
-    const Eigen::Vector2d from = member.walk.route.closed ? waypoints.back() : waypoints.front();
-    const Eigen::Vector2d to = member.walk.route.closed ? waypoints.front() : waypoints[std::min<std::size_t>(1, waypoints.size() - 1)];
-    const Eigen::Vector2d direction = to - from;
-    member.walker->place(from, direction.norm() > 0.0 ? std::atan2(direction.y(), direction.x()) : 0.0,
-                         member.walk.start_phase);
-    member.walker->followRoute(member.walk.route);
+    const CrowdWalk& walk = member.walk;
+    const std::vector<Eigen::Vector2d>& waypoints = walk.route.waypoints;
+    const Eigen::Vector2d from = walk.treadmill ? waypoints.front() : walk.start;
+    Eigen::Vector2d direction = (walk.treadmill ? waypoints[1] : waypoints.front()) - from;
+    if (direction.norm() == 0.0 && waypoints.size() > 1) direction = waypoints[1] - from;  // starts on its first waypoint
+    const double heading = std::atan2(direction.y(), direction.x());
+    member.walker->place(from, heading, walk.start_phase);
+    if (walk.treadmill) {
+      member.walker->drive(walk.speed, 0.0);
+    } else {
+      member.walker->followRoute(walk.route);
+    }
   }
 }
 
@@ -159,6 +165,9 @@ void CrowdPublisher::tick() {
   for (std::size_t i = 0; i < members_.size(); ++i) {
     Member& member = members_[i];
     member.walker->step(dt, member.angles, member.pose);
+    if (member.walk.treadmill) {  // the ground under it moves back as far as it walked
+      member.pose.root.translation.head<2>() += member.walk.route.waypoints.front() - member.walker->position();
+    }
     dressed_human::HumanState& state = message_.humans[i];
     copyPose(member.pose.root, state.root);
     for (std::size_t d = 0; d < kDofCount; ++d) state.joint_angles[d] = static_cast<float>(member.angles[d]);

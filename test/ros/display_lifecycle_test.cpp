@@ -3,7 +3,7 @@
 // resident memory growing by more than 5 %; and a bone frame that goes missing from TF is
 // reported on its own and recovers by itself; unseen relief is drawn with the plain material;
 // automatic vertex evaluation picks the CPU on this software renderer; one display draws every
-// human in TF, as they come and go.
+// human in TF, as they come and go, and every human of a crowd topic, refusing bad messages.
 #include <algorithm>
 #include <fstream>
 #include <functional>
@@ -29,6 +29,8 @@
 #include <rviz/visualization_manager.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <urdf_parser/urdf_parser.h>
+
+#include "dressed_human/Crowd.h"
 
 namespace {
 
@@ -456,6 +458,90 @@ TEST_F(DisplayLifecycleTest, CrowdHumansComeAndGoWithoutGrowth) {
   EXPECT_LE(after - before, std::max(before - start, 0L) + kHumansCreated * kKilobytesPerHuman);
   EXPECT_TRUE(says("Surfaces", "3 humans")) << allStatuses();
   display_->subProp("Humans")->setValue("Robot Description");
+}
+
+// "Humans: From Topic": humans come with the crowd message, leave a second after they are no
+// longer in it, and a bad human or message is refused and named while the others stay drawn.
+TEST_F(DisplayLifecycleTest, CrowdTopicHumansComeGoAndBadMessagesAreNamed) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  ros::NodeHandle node;
+  ros::Publisher publisher = node.advertise<dressed_human::Crowd>("/test_crowd", 10);
+  display_->subProp("Robot Description")->setValue("robot_description");
+  display_->subProp("Humans")->setValue("From Topic");
+  display_->subProp("Topic")->setValue("/test_crowd");
+  const auto human = [](const std::string& id, double x) {
+    dressed_human::HumanState state;
+    state.id = id;
+    state.root.position.x = x;
+    state.root.position.z = 1.0;
+    state.root.orientation.w = 1.0;
+    state.joint_angles.assign(48, 0.1f);
+    state.stature = 1.0f;
+    return state;
+  };
+  // Sends `message` (its stamp now) with each frame until `done` or `seconds` pass.
+  ros::WallTime last_sent;
+  const auto runUntil = [&](dressed_human::Crowd message, double seconds, const std::function<bool()>& done) {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+    do {
+      message.header.stamp = ros::Time::now();
+      if (message.header.frame_id.empty()) message.header.frame_id = "world";
+      publisher.publish(message);
+      last_sent = ros::WallTime::now();
+      frames(2);
+      ros::WallDuration(0.02).sleep();
+      if (done()) return true;
+    } while (ros::WallTime::now() < deadline);
+    return false;
+  };
+  const auto says = [&](const QString& name, const std::string& part) {
+    return status(name) != nullptr && status(name)->getValue().toString().toStdString().find(part) != std::string::npos;
+  };
+  dressed_human::Crowd two;
+  two.humans = {human("3", 2.0), human("4", 4.0)};
+  two.humans[1].stature = 1.1f;
+  ASSERT_TRUE(runUntil(two, 30.0, [&] { return says("Humans", "2 from '/test_crowd'") && says("Surfaces", "2 humans"); }))
+      << "the two humans of the message were never drawn:\n" << allStatuses();
+  EXPECT_EQ(unexpectedErrors(""), "");
+
+  dressed_human::Crowd one;
+  one.humans = {human("3", 2.0)};
+  const ros::WallTime dropped = last_sent;  // the last message with human 4
+  ASSERT_TRUE(runUntil(one, 5.0, [&] { return says("Humans", "1 from") && says("Surfaces", "1 humans"); }))
+      << "human 4 left the messages but stayed:\n" << allStatuses();
+  const double left_after = (ros::WallTime::now() - dropped).toSec();
+  EXPECT_GE(left_after, 0.9) << "human 4 left before its second was up";
+  EXPECT_LE(left_after, 1.5) << "human 4 stayed more than a second after its last message";
+  EXPECT_EQ(status("Model body_4"), nullptr);
+
+  // Each bad message: the status names the human and what is wrong; human 3 stays drawn.
+  struct Bad {
+    std::string why;
+    std::function<void(dressed_human::Crowd&)> spoil;
+  };
+  const std::vector<Bad> bad = {
+      {"human '5': 47 joint angles, expected 48", [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", 6.0)); m.humans.back().joint_angles.resize(47); }},
+      {"human '5': its root position is not finite", [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", NAN)); }},
+      {"human '5': joint angle 4 is not finite", [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", 6.0)); m.humans.back().joint_angles[4] = INFINITY; }},
+      {"human '3' appears twice", [&](dressed_human::Crowd& m) { m.humans.push_back(human("3", 8.0)); }},
+      {"human id 'a b' is not letters and digits", [&](dressed_human::Crowd& m) { m.humans.push_back(human("a b", 6.0)); }},
+      {"frame 'nowhere' has no transform", [&](dressed_human::Crowd& m) { m.header.frame_id = "nowhere"; }},
+  };
+  for (const Bad& b : bad) {
+    dressed_human::Crowd message = one;
+    b.spoil(message);
+    EXPECT_TRUE(runUntil(message, 5.0, [&] { return says("Crowd Message", b.why); }))
+        << "not reported: " << b.why << "\n" << allStatuses();
+    EXPECT_TRUE(says("Crowd Message", "'/test_crowd'")) << "the topic is not named:\n" << allStatuses();
+    EXPECT_TRUE(says("Surfaces", "1 humans")) << b.why << "\n" << allStatuses();
+    EXPECT_EQ(unexpectedErrors("Crowd Message"), "") << b.why;
+  }
+  ASSERT_TRUE(runUntil(one, 5.0, [&] { return status("Crowd Message") == nullptr; }))
+      << "a clean message did not clear the error:\n" << allStatuses();
+  EXPECT_TRUE(says("Surfaces", "1 humans")) << allStatuses();
+  display_->subProp("Humans")->setValue("Robot Description");
+  frames(5);
+  EXPECT_EQ(status("Topic"), nullptr) << "the topic's status outlived From Topic";
 }
 
 // The Ogre objects under `node` that hold geometry (non-empty bounds), each with its bounds' size.

@@ -90,7 +90,7 @@ std::map<std::string, HumanAppearance> loadCrowdFile(const std::string& path) {
     reader.requireMap(fields, key);
     // How the human walks is the crowd publisher's (crowd_walks.h): one file describes the crowd.
     reader.rejectUnknownKeys(fields, key, {"outfit", "skin_colour", "upper_colour", "lower_colour", "route", "route_end",
-                                           "speed", "stature", "start_phase"});
+                                           "speed", "stature", "start_phase", "treadmill"});
     HumanAppearance appearance;
     if (fields["outfit"]) {
       try {

@@ -1,5 +1,6 @@
 #include "dressed_human/core/model/crowd_walks.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -11,19 +12,44 @@
 namespace dressed_human {
 namespace {
 
-// The default layout's place `index`: its ring's rectangle, walked from the corner before its own.
-CrowdWalk defaultWalk(std::size_t index) {
-  const std::size_t ring = index / 4, corner = index % 4;
-  const double half_x = 1.6 + 0.7 * static_cast<double>(ring), half_y = 1.0 + 0.7 * static_cast<double>(ring);
-  // Corner k: 0 (+x, -y), 1 (+x, +y), 2 (-x, +y), 3 (-x, -y); odd rings clockwise.
-  const std::array<Eigen::Vector2d, 4> corners = {
-      {{half_x, -half_y}, {half_x, half_y}, {-half_x, half_y}, {-half_x, -half_y}}};
+constexpr double kLoopSpacing = 0.7;      // m between nested loops
+constexpr double kSpacingAlongLoop = 2.5;  // m of loop per human
+
+struct Loop {
+  double half_x, half_y;
+  std::size_t capacity;
+};
+
+Loop loop(std::size_t ring) {
+  const double half_x = 1.6 + kLoopSpacing * static_cast<double>(ring);
+  const double half_y = 1.0 + kLoopSpacing * static_cast<double>(ring);
+  const auto fits = static_cast<std::size_t>(4.0 * (half_x + half_y) / kSpacingAlongLoop);
+  return {half_x, half_y, std::max<std::size_t>(4, fits)};
+}
+
+// Human `index` of `on_ring` humans on loop `ring`, `place` of them along it.
+CrowdWalk walkOnLoop(std::size_t index, std::size_t ring, std::size_t place, std::size_t on_ring) {
+  const Loop l = loop(ring);
+  // Corners in walking order: counter-clockwise from (+x, -y) on even loops, clockwise on odd.
+  std::array<Eigen::Vector2d, 4> corners = {{{l.half_x, -l.half_y}, {l.half_x, l.half_y}, {-l.half_x, l.half_y},
+                                             {-l.half_x, -l.half_y}}};
+  if (ring % 2 == 1) std::swap(corners[1], corners[3]);
+  // Evenly along the loop, each loop's humans shifted by half a spacing against the last loop's.
+  const double perimeter = 4.0 * (l.half_x + l.half_y);
+  double along = std::fmod((static_cast<double>(place) + 0.5 * static_cast<double>(ring % 2)) * perimeter /
+                               static_cast<double>(on_ring), perimeter);
+  std::size_t edge = 0;
+  for (; edge < 3; ++edge) {
+    const double length = (corners[(edge + 1) % 4] - corners[edge]).norm();
+    if (along < length) break;
+    along -= length;
+  }
+  const Eigen::Vector2d& from = corners[edge];
+  const Eigen::Vector2d& to = corners[(edge + 1) % 4];
   CrowdWalk walk;
   walk.id = std::to_string(index);
-  for (std::size_t j = 0; j < 4; ++j) {
-    const std::size_t k = ring % 2 == 0 ? (corner + j) % 4 : 3 - (corner + j) % 4;
-    walk.route.waypoints.push_back(corners[k]);
-  }
+  walk.start = from + (to - from).normalized() * along;
+  for (std::size_t j = 1; j <= 4; ++j) walk.route.waypoints.push_back(corners[(edge + j) % 4]);
   walk.route.closed = true;
   walk.speed = 1.0 + 0.15 * static_cast<double>(ring % 4);
   walk.stature = 0.92 + 0.02 * static_cast<double>((index * 5) % 9);
@@ -35,7 +61,10 @@ CrowdWalk defaultWalk(std::size_t index) {
 
 std::vector<CrowdWalk> defaultCrowdWalks(std::size_t count) {
   std::vector<CrowdWalk> walks;
-  for (std::size_t i = 0; i < count; ++i) walks.push_back(defaultWalk(i));
+  for (std::size_t ring = 0; walks.size() < count; ++ring) {
+    const std::size_t on_ring = std::min(loop(ring).capacity, count - walks.size());
+    for (std::size_t place = 0; place < on_ring; ++place) walks.push_back(walkOnLoop(walks.size(), ring, place, on_ring));
+  }
   return walks;
 }
 
@@ -49,7 +78,7 @@ std::vector<CrowdWalk> loadCrowdWalks(const std::string& path) {
     const std::string id = entry.first.Scalar();
     const std::string key = "humans." + id;
     const YAML::Node& fields = entry.second;
-    CrowdWalk walk = defaultWalk(walks.size());
+    CrowdWalk walk = defaultCrowdWalks(walks.size() + 1).back();
     walk.id = id;
     if (fields["route"]) {
       const YAML::Node route = fields["route"];
@@ -70,9 +99,14 @@ std::vector<CrowdWalk> loadCrowdWalks(const std::string& path) {
     } catch (const LocomotionError& error) {
       throw CrowdFileError(error.what());
     }
+    if (fields["route"]) walk.start = walk.route.closed ? walk.route.waypoints.back() : walk.route.waypoints.front();
     if (fields["speed"]) walk.speed = reader.numberWithin(fields["speed"], key + ".speed", 0.0, WalkerSettings::kMaxSpeed, " m/s");
     if (fields["stature"]) walk.stature = reader.numberWithin(fields["stature"], key + ".stature", 0.8, 1.2, "");
     if (fields["start_phase"]) walk.start_phase = reader.numberWithin(fields["start_phase"], key + ".start_phase", 0.0, 1.0, " cycles");
+    if (fields["treadmill"]) walk.treadmill = reader.boolean(fields["treadmill"], key + ".treadmill");
+    if (walk.treadmill && walk.route.waypoints.size() < 2) {
+      reader.fail(fields["treadmill"], key + ".treadmill", "needs a route of two waypoints: where it walks and which way");
+    }
     walks.push_back(walk);
   }
   return walks;
