@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <OgreAxisAlignedBox.h>
+#include <OgreCamera.h>
 #include <rviz/frame_manager.h>
 
 #include "display_status.h"
@@ -13,6 +15,8 @@ namespace {
 // Ogre draws in float: beyond this distance from the fixed frame a human's millimetres are lost
 // (float spacing at 100 km is 8 mm) and further out its coordinates overflow. No map is larger.
 constexpr double kMaxDrawableCoordinate = 1e5;
+// How far skin and clothes reach beyond the bone frames' origins (head top, hands, skirt hem).
+constexpr double kReachMetres = 0.5;
 
 bool drawable(const RigidTransform& pose) {
   return pose.translation.allFinite() && pose.translation.cwiseAbs().maxCoeff() <= kMaxDrawableCoordinate &&
@@ -39,6 +43,12 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   if (!poses_->pose(frames, status, kinematics_, root_, bones_)) return false;
   if (fresh(poses_->stamp())) last_seen_ = ros::WallTime::now();
   if (!posesDrawable(status, frames.getFixedFrame())) return false;
+  // A human outside the view is neither posed nor tessellated: a crowd around the camera costs
+  // what is in front of it. Hidden, so that Ogre never draws its stale mesh.
+  const bool in_view = inView(camera);
+  if (!in_view || !in_view_) visual_.setVisible(in_view);  // hidden every frame out of view, as posesDrawable does
+  in_view_ = in_view;
+  if (!in_view) return false;
   // Visibility first (by where the human was last frame): the model skips the wrinkles' per-vertex
   // work while they are not drawn, and must do it in the very frame they are drawn again.
   const bool small = updateDetailVisibility(camera, hide_unseen_relief);
@@ -49,6 +59,17 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   visual_.update(model_.parts());
   visual_.updateSkeleton(kinematics_, bones_);
   return true;
+}
+
+bool DrawnHuman::inView(const Ogre::Camera* camera) const {
+  if (camera == nullptr) return true;
+  Eigen::AlignedBox3d box;
+  for (const RigidTransform& bone : bones_) box.extend(bone.translation);
+  box.extend(root_.translation);
+  const Eigen::Vector3d low = box.min().array() - kReachMetres, high = box.max().array() + kReachMetres;
+  return camera->isVisible(Ogre::AxisAlignedBox(static_cast<float>(low.x()), static_cast<float>(low.y()),
+                                                static_cast<float>(low.z()), static_cast<float>(high.x()),
+                                                static_cast<float>(high.y()), static_cast<float>(high.z())));
 }
 
 void DrawnHuman::resetReliefVisibility(double skin_cell_size) {

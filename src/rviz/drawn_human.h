@@ -50,9 +50,10 @@ class DrawnHuman {
   // Bones from the pose source, then surfaces at `lod` (a displaced relief: `displaced_level` instead) and the
   // relief shown or hidden by its size on screen (`hide_unseen_relief`), and what the clothes
   // cover left out while the gap past hems is too small to see into (`hide_covered`,
-  // LevelOfDetail::hide_covered). False when the human is not drawn this frame: TF lacks a
-  // bone, or a pose is beyond what rviz can draw (then the human hides and a status names the
-  // frame until TF is sane again).
+  // LevelOfDetail::hide_covered). False when the human is not drawn this frame: its source has no
+  // pose (TF lacks a bone), it is outside the camera's view (hidden, not posed), or a pose is
+  // beyond what rviz can draw (then the human hides and a status names the frame until the
+  // pose is sane again).
   bool update(rviz::FrameManager& frames, DisplayStatus& status, LevelOfDetail lod, const Ogre::Camera* camera,
               bool hide_unseen_relief, bool hide_covered);
   // Wall time of the newest update() that found every bone in TF, at most kFreshSeconds old
@@ -74,6 +75,9 @@ class DrawnHuman {
 
  private:
   bool posesDrawable(DisplayStatus& status, const std::string& fixed_frame);
+  // Whether the human, from its bones grown by the body's reach, is at least partly in `camera`'s
+  // view (no camera: in view).
+  bool inView(const Ogre::Camera* camera) const;
   // Judges, from where the human was last frame, which reliefs show (if `judge_relief`) and
   // whether the human is small: its garments' gap too small to see into (HumanModel::kCoverGap),
   // where what they cover is left out and lighting per vertex does.
@@ -87,6 +91,7 @@ class DrawnHuman {
   RigidTransform root_;                           // in the fixed frame
   std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
   std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
+  bool in_view_ = true;           // at the last update()
   std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts
   ReliefVisibility cover_gap_visibility_{HumanModel::kCoverGap};
   ros::WallTime last_seen_;

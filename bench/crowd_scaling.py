@@ -1,0 +1,362 @@
+#!/usr/bin/python3
+"""A crowd in rviz from one publisher (issue 35): frame rate and rviz CPU per human per frame for
+N walking humans drawn by one DressedHuman display from crowd_publisher's dressed_human/Crowd
+messages ("Humans: From Topic"), against spencer's walking-man meshes (the crowd peer: its
+TrackedPersons display, "Person meshes") fed one TrackedPersons message for all persons at the
+same rate, in the same run, at the same places; then rviz's resident memory over minutes with the
+shipped `crowd.launch count:=40` and its rviz config.
+
+Scene points (bench/rviz_display_scaling.cpp does the rviz side): the humans walk on treadmills
+(crowd file `treadmill: true`, 1.2 m/s, 30 Hz messages) in rows of 10, 1 m apart, rows 3 m apart
+(bench/rviz_scaling.py's places and views), the camera --points' distance away. Each point saves
+a screenshot when its measurement starts and one when it ends and fails unless every one of its
+N figures is drawn in both: at least MIN_BOX_SHARE of the box its place projects to (0.6 m wide
+across the row, where neighbours stand 1 m apart) covered by figure pixels. rviz CPU per human
+per frame = (rviz CPU per frame - rviz drawing only its grid while the same publisher runs) / N,
+each subject against its own publisher's grid. The crowd publisher's own CPU is measured while
+ours are.
+
+Memory: `roslaunch dressed_human crowd.launch count:=40 rviz_args:=--disable-anti-aliasing` on
+its own virtual X server for --memory-minutes, rviz's resident memory sampled every 10 s,
+screenshots judged as the on-screen rostests judge them (each human's root frame body_<id> from
+TF, its box grown by the body's reach) at minute 1 and at the end.
+
+Usage: bench/crowd_scaling.py [--seconds 15] [--points 10@12 20@12 ...] [--peer-workspace DIR]
+       [--memory-minutes 5] [--memory-count 40] [--markdown F] [--csv F] [--chart F] [--screenshots DIR]
+Exits 1 if a point did not draw all its humans or the memory run did not show all of them.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy
+from PIL import Image
+
+import rviz_scaling as rs
+from ros_processes import report, ros_environment, start, stop
+
+sys.path.insert(0, os.path.join(rs.ROOT, "test", "ros"))
+from on_screen import OrbitView, figure_mask  # noqa: E402
+
+OURS = ("DressedHuman from one crowd message", "dressed_human/DressedHuman",
+        ["--set", "Robot Description=robot_description", "--set", "Humans=From Topic", "--set", "Topic=/crowd"])
+PEER = rs.PEER
+PUBLISH_HZ = 30.0
+MIN_BOX_SHARE = 0.08  # of a 1 m x 0.6 m x 1.95 m box a figure covers about a quarter
+DEFAULT_POINTS = ["10@12", "20@12", "30@12", "40@12", "10@30", "20@30", "40@30", "100@30"]
+
+
+def parse_points(texts):
+    points = []
+    for text in texts:
+        count, distance = text.split("@")
+        points.append((int(count), float(distance)))
+    return points
+
+
+def crowd_file(places, directory):
+    path = os.path.join(directory, "treadmill_crowd_%d.yaml" % len(places))
+    with open(path, "w") as f:
+        f.write("humans:\n")
+        for i, (x, y) in enumerate(places):
+            f.write('  "%d": {route: [[%g, %g], [%g, %g]], treadmill: true, speed: 1.2, start_phase: %g}\n'
+                    % (i, x, y, x + 1.0, y, (0.37 * i) % 1.0))
+    return path
+
+
+def drawn(path, places, orbit):
+    """How many of the humans at `places` show in the screenshot at `path`, each judged in a box
+    0.6 m across its row (neighbours stand 1 m apart: 0.4 m between boxes) against the box's
+    projected area."""
+    image = numpy.asarray(Image.open(path).convert("RGB")).astype(numpy.float64)
+    mask = figure_mask(image)
+    height, width = mask.shape
+    count = 0
+    for x, y in places:
+        corners = numpy.array([[cx, cy, cz] for cx in (x - 0.5, x + 0.5) for cy in (y - 0.3, y + 0.3)
+                               for cz in (-0.05, 1.9)])
+        columns, rows, depth, _ = orbit.project(corners, numpy.zeros(3), width, height)
+        if (depth <= orbit.near).any():
+            continue
+        left, right = int(max(columns.min(), 0)), int(min(columns.max(), width))
+        top, bottom = int(max(rows.min(), 0)), int(min(rows.max(), height))
+        box_area = (columns.max() - columns.min()) * (rows.max() - rows.min())
+        if right <= left or bottom <= top:
+            continue
+        if mask[top:bottom, left:right].sum() >= max(15.0, MIN_BOX_SHARE * box_area):
+            count += 1
+    return count
+
+
+def cpu_seconds(pid):
+    with open("/proc/%d/stat" % pid) as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def measure(subject, count, distance, args, shots, env, env_script=None):
+    label, display_class, extra = subject
+    name = re.sub(r"[^a-z]+", "_", label.lower()).strip("_")
+    screenshot = os.path.join(shots, "%s_%d_%gm.png" % (name, count, distance))
+    point = rs.harness(display_class, 1, args.seconds, extra, screenshot, env, distance, 0.0, env_script)
+    orbit = rs.view(count, distance)
+    places = rs.positions(count)
+    point["drawn"] = min(drawn(screenshot[:-4] + "_start.png", places, orbit), drawn(screenshot, places, orbit))
+    point["screenshot"] = os.path.relpath(screenshot, rs.ROOT)
+    print(label, count, distance, point, file=sys.stderr)
+    return point
+
+
+def measure_ours(count, distances, args, shots, directory, env):
+    places = rs.positions(count)
+    publisher = start([os.path.join(rs.DEVEL, "lib", "dressed_human", "crowd_publisher"),
+                       "_crowd_file:=" + crowd_file(places, directory), "_rate:=%g" % PUBLISH_HZ], env)
+    try:
+        time.sleep(3)
+        if publisher.poll() is not None:
+            raise RuntimeError("crowd_publisher exited (status %s)" % publisher.returncode)
+        grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_ours_%d.png" % count), env)
+        cpu_start, wall_start = cpu_seconds(publisher.pid), time.time()
+        points = {d: measure(OURS, count, d, args, shots, env) for d in distances}
+        publisher_cpu = 100.0 * (cpu_seconds(publisher.pid) - cpu_start) / (time.time() - wall_start)
+    finally:
+        stop(publisher)
+    for point in points.values():
+        point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
+        point["grid_ms"] = grid["cpu_ms_per_frame"]
+        point["publisher_cpu"] = publisher_cpu
+    return points
+
+
+def measure_peer(count, distances, args, shots, env):
+    setup = os.path.join(args.peer_workspace, "devel")
+    places = ["%g,%g" % place for place in rs.positions(count)]
+    publisher = start(["/bin/bash", "-c", ". %s/setup.bash && exec /usr/bin/python3 %s %g %s" % (
+        setup, os.path.join(rs.ROOT, "bench", "peer_rows.py"), PUBLISH_HZ, " ".join(places))], env)
+    env_script = os.path.join(setup, "env.sh")
+    try:
+        time.sleep(4)
+        grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_peer_%d.png" % count), env,
+                          env_script=env_script)
+        points = {d: measure(PEER, count, d, args, shots, env, env_script) for d in distances}
+    finally:
+        stop(publisher)
+    for point in points.values():
+        point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
+        point["grid_ms"] = grid["cpu_ms_per_frame"]
+        point["publisher_cpu"] = -1.0
+    return points
+
+
+def rviz_pid(marker):
+    """The rviz process whose command line names `marker` (its config), or None."""
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open("/proc/%s/cmdline" % entry, "rb") as f:
+                command = f.read().decode(errors="replace").split("\0")
+        except OSError:
+            continue
+        if command and os.path.basename(command[0]) == "rviz" and any(marker in part for part in command):
+            return int(entry)
+    return None
+
+
+def resident_mb(pid):
+    with open("/proc/%d/status" % pid) as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024.0
+    return -1.0
+
+
+def measure_memory(count, minutes, shots, env):
+    """rviz's resident memory over `minutes` of the shipped crowd launch, and the humans shown."""
+    import rospy
+    import tf2_ros
+    from on_screen import Launch, LoopingTfListener, observe
+    display = ":%d" % (90 + os.getpid() % 100)
+    xvfb = subprocess.Popen(["Xvfb", display, "-screen", "0", "1280x1024x24"], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, start_new_session=True)
+    os.environ.update(env)
+    os.environ["DISPLAY"] = display
+    directory = os.path.join(shots, "memory_%d" % count)
+    os.makedirs(directory, exist_ok=True)
+    samples = []
+    verdicts = []
+    launch = Launch("crowd.launch", ["count:=%d" % count, "rviz_args:=--disable-anti-aliasing"],
+                    os.path.join(directory, "launch.log"))
+    try:
+        rospy.init_node("crowd_scaling", anonymous=True, disable_signals=True)
+        buffer = tf2_ros.Buffer(rospy.Duration(10.0))
+        listener = LoopingTfListener(buffer)  # noqa: F841 (fills the buffer)
+        view = OrbitView.from_config(os.path.join(rs.ROOT, "rviz", "crowd.rviz"))
+        humans = {"body_%d" % i: ["body_%d" % i] for i in range(count)}
+        pid = None
+        deadline = time.time() + 120
+        while pid is None and time.time() < deadline:
+            time.sleep(1.0)
+            pid = rviz_pid("crowd.rviz")
+        if pid is None:
+            raise RuntimeError("rviz did not start:\n" + launch.output()[-2000:])
+        start_time = time.time()
+        judged_at = [60.0, minutes * 60.0]
+        while True:
+            elapsed = time.time() - start_time
+            samples.append((elapsed, resident_mb(pid)))
+            if judged_at and elapsed >= judged_at[0]:
+                # Root frames only (skeleton_tf off, as users run it): each box grown by the whole
+                # body's reach about the pelvis.
+                result = observe(launch, buffer, view, humans, os.path.join(directory, "minute_%d" % round(elapsed / 60)),
+                                 0.0, 1.0, 1.0)[0]
+                verdicts.append((elapsed, result))
+                judged_at.pop(0)
+            if elapsed >= minutes * 60.0:
+                break
+            time.sleep(10.0)
+    finally:
+        launch.stop()
+        xvfb.terminate()
+    return samples, verdicts
+
+
+def chart(results, points, memory, memory_count, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(1, 3, figsize=(18, 4.8))
+    distances = sorted(set(d for _, d in points))
+    for label, _, _ in (OURS, PEER):
+        for distance in distances:
+            counts = [n for n, d in points if d == distance and (label, n, d) in results]
+            if not counts:
+                continue
+            style = "o-" if distance == distances[0] else "s--"
+            axes[0].plot(counts, [results[(label, n, distance)]["fps"] for n in counts], style,
+                         label="%s, %g m" % (label, distance))
+            axes[1].plot(counts, [results[(label, n, distance)]["per_human_ms"] for n in counts], style,
+                         label="%s, %g m" % (label, distance))
+    axes[0].axhline(30.0, color="grey", lw=0.8, ls="--")
+    axes[0].set_ylabel("frames per second (rviz caps at 30)")
+    axes[1].set_ylabel("rviz CPU per human per frame (ms)\n(rviz CPU per frame - grid with the publisher) / N")
+    for ax in axes[:2]:
+        ax.set_xlabel("walking humans in view")
+        ax.set_ylim(bottom=0)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    if memory:
+        samples, _ = memory
+        axes[2].plot([t / 60.0 for t, _ in samples], [m for _, m in samples], "o-", ms=3)
+        axes[2].set_xlabel("minutes since rviz started (crowd.launch count:=%d)" % memory_count)
+        axes[2].set_ylabel("rviz resident memory (MB)")
+        axes[2].grid(True, alpha=0.3)
+    figure.suptitle("A crowd from one publisher, rviz on Mesa llvmpipe, %d cores (bench/crowd_scaling.py)"
+                    % os.cpu_count())
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    plt.close(figure)
+
+
+def memory_growth(samples, from_s, to_s):
+    """Resident memory at `to_s` less at `from_s` (the samples nearest each)."""
+    nearest = lambda t: min(samples, key=lambda s: abs(s[0] - t))[1]  # noqa: E731
+    return nearest(to_s) - nearest(from_s)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--seconds", type=float, default=15.0)
+    parser.add_argument("--points", nargs="+", default=DEFAULT_POINTS, help="COUNT@DISTANCE ...")
+    parser.add_argument("--peer-workspace", default="")
+    parser.add_argument("--memory-minutes", type=float, default=5.0, help="0: no memory run")
+    parser.add_argument("--memory-count", type=int, default=40)
+    parser.add_argument("--markdown", default="")
+    parser.add_argument("--csv", default="")
+    parser.add_argument("--chart", default="")
+    parser.add_argument("--screenshots", default="")
+    args = parser.parse_args()
+    points = parse_points(args.points)
+    shots = args.screenshots or tempfile.mkdtemp()
+    os.makedirs(shots, exist_ok=True)
+    directory = tempfile.mkdtemp()
+    env = ros_environment(11917)
+    processes = [start(["roscore", "-p", "11917"], env)]
+    results = {}
+    memory = None
+    try:
+        time.sleep(4)
+        import rosgraph  # after ROS_MASTER_URI is known to this process
+        master = rosgraph.Master("/crowd_scaling", master_uri=env["ROS_MASTER_URI"])
+        with open(os.path.join(rs.ROOT, "urdf", "human.urdf")) as f:
+            master.setParam("/robot_description", f.read())
+        for count in sorted(set(n for n, _ in points)):
+            distances = [d for n, d in points if n == count]
+            for distance, point in measure_ours(count, distances, args, shots, directory, env).items():
+                results[(OURS[0], count, distance)] = point
+            if args.peer_workspace:
+                for distance, point in measure_peer(count, distances, args, shots, env).items():
+                    results[(PEER[0], count, distance)] = point
+        if args.memory_minutes > 0:
+            memory = measure_memory(args.memory_count, args.memory_minutes, shots, env)
+    finally:
+        for process in reversed(processes):
+            stop(process)
+
+    failed = ["%s x %d at %g m" % key for key, p in results.items() if p["drawn"] < key[1]]
+    lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per frame (grid with the same "
+             "publisher) | rviz CPU per human per frame | crowd_publisher CPU |", "|---|---|---|---|---|---|---|---|---|"]
+    rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,grid_ms,per_human_ms,publisher_cpu,"
+            "screenshot"]
+    for count, distance in points:
+        for label in (OURS[0], PEER[0]):
+            p = results.get((label, count, distance))
+            if p is None:
+                continue
+            drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")
+            publisher = "%.1f %%" % p["publisher_cpu"] if p["publisher_cpu"] >= 0 else "—"
+            lines.append("| %d | %g m | %s | %s | %.1f | %.0f %% | %.1f ms (%.1f ms) | %.2f ms | %s |" % (
+                count, distance, label, drawn_text, p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
+                p["per_human_ms"], publisher))
+            rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%.1f,%s" % (
+                label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
+                p["per_human_ms"], p["publisher_cpu"], p["screenshot"]))
+    lines.append("")
+    lines.append("Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, one message for all at "
+                 "%g Hz (ours: crowd_publisher's dressed_human/Crowd, with each root frame on /tf; the peer: "
+                 "TrackedPersons from bench/peer_rows.py); %g s per point after 5 s of warm-up; rviz CPU in %% of one "
+                 "core, Mesa llvmpipe on %d cores, no anti-aliasing; \"drawn\": figures in both the screenshot at the "
+                 "start and at the end of the point (`%s/`). `bench/crowd_scaling.py`."
+                 % (rs.ROW_LENGTH, rs.ROW_SPACING, PUBLISH_HZ, args.seconds, os.cpu_count(),
+                    os.path.relpath(shots, rs.ROOT)))
+    if memory:
+        samples, verdicts = memory
+        growth = memory_growth(samples, 60.0, args.memory_minutes * 60.0)
+        shown = ["minute %.0f: %d of %d humans drawn in their boxes%s" % (
+            t / 60.0, sum(1 for h in v["humans"].values() if h["state"] == "in" and h["ok"]),
+            args.memory_count, "" if v["ok"] else " (**FAILED**: %s)" % {k: h for k, h in v["humans"].items()
+                                                                         if not h["ok"]}) for t, v in verdicts]
+        if any(not v["ok"] for _, v in verdicts):
+            failed.append("the memory run's screenshots")
+        lines.append("")
+        lines.append("rviz's resident memory with `crowd.launch count:=%d` (its own rviz config, no anti-aliasing): "
+                     "%.0f MB at minute 1, %.0f MB at minute %g: **%+.0f MB** from minute 1 to minute %g (%s)."
+                     % (args.memory_count, min(samples, key=lambda s: abs(s[0] - 60))[1], samples[-1][1],
+                        args.memory_minutes, growth, args.memory_minutes, "; ".join(shown)))
+    if args.csv:
+        with open(args.csv, "w") as f:
+            f.write("\n".join(rows) + "\n")
+    if args.chart:
+        chart(results, points, memory, args.memory_count, args.chart)
+    report("\n".join(lines), args.markdown)
+    if failed:
+        print("crowd_scaling.py: not every human drawn in %s" % ", ".join(failed), file=sys.stderr)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
