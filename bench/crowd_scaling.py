@@ -16,10 +16,11 @@ per frame = (rviz CPU per frame - rviz drawing only its grid while the same publ
 each subject against its own publisher's grid. The crowd publisher's own CPU is measured while
 ours are.
 
-Memory: `roslaunch dressed_human crowd.launch count:=40 rviz_args:=--disable-anti-aliasing` on
-its own virtual X server for --memory-minutes, rviz's resident memory sampled every 10 s,
-screenshots judged as the on-screen rostests judge them (each human's root frame body_<id> from
-TF, its box grown by the body's reach) at minute 1 and at the end.
+Memory: `roslaunch dressed_human crowd.launch count:=40`, as a user starts it (rviz's default
+anti-aliasing, as in the harness, which does not disable it), on its own virtual X server for
+--memory-minutes, rviz's resident memory sampled every 10 s, screenshots judged as the on-screen
+rostests judge them (each human's root frame body_<id> from TF, its box grown by the body's
+reach) at minute 1 and at the end.
 
 Usage: bench/crowd_scaling.py [--seconds 15] [--points 10@12 20@12 ...] [--peer-workspace DIR]
        [--memory-minutes 5] [--memory-count 40] [--markdown F] [--csv F] [--chart F] [--screenshots DIR]
@@ -189,8 +190,7 @@ def measure_memory(count, minutes, shots, env):
     os.makedirs(directory, exist_ok=True)
     samples = []
     verdicts = []
-    launch = Launch("crowd.launch", ["count:=%d" % count, "rviz_args:=--disable-anti-aliasing"],
-                    os.path.join(directory, "launch.log"))
+    launch = Launch("crowd.launch", ["count:=%d" % count], os.path.join(directory, "launch.log"))
     try:
         rospy.init_node("crowd_scaling", anonymous=True, disable_signals=True)
         buffer = tf2_ros.Buffer(rospy.Duration(10.0))
@@ -329,7 +329,7 @@ def main():
     lines.append("Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, one message for all at "
                  "%g Hz (ours: crowd_publisher's dressed_human/Crowd, with each root frame on /tf; the peer: "
                  "TrackedPersons from bench/peer_rows.py); %g s per point after 5 s of warm-up; rviz CPU in %% of one "
-                 "core, Mesa llvmpipe on %d cores, no anti-aliasing; \"drawn\": figures in both the screenshot at the "
+                 "core, Mesa llvmpipe on %d cores, rviz's default anti-aliasing; \"drawn\": figures in both the screenshot at the "
                  "start and at the end of the point (`%s/`). `bench/crowd_scaling.py`."
                  % (rs.ROW_LENGTH, rs.ROW_SPACING, PUBLISH_HZ, args.seconds, os.cpu_count(),
                     os.path.relpath(shots, rs.ROOT)))
@@ -343,7 +343,7 @@ def main():
         if any(not v["ok"] for _, v in verdicts):
             failed.append("the memory run's screenshots")
         lines.append("")
-        lines.append("rviz's resident memory with `crowd.launch count:=%d` (its own rviz config, no anti-aliasing): "
+        lines.append("rviz's resident memory with `crowd.launch count:=%d` (its own rviz config, rviz's defaults): "
                      "%.0f MB at minute 1, %.0f MB at minute %g: **%+.0f MB** from minute 1 to minute %g (%s)."
                      % (args.memory_count, min(samples, key=lambda s: abs(s[0] - 60))[1], samples[-1][1],
                         args.memory_minutes, growth, args.memory_minutes, "; ".join(shown)))

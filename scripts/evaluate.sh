@@ -68,6 +68,9 @@ $PY bench/rviz_scaling.py --counts 1 5 10 20 30 --distances 12 18 30 --markdown 
   --csv "$RESULTS/rviz_scaling.csv" \
   --chart docs/rviz_scaling.png --screenshots docs/rviz_scaling "${peer[@]}"
 $PY bench/rviz_memory.py --markdown docs/rviz_memory.md
+rm -rf docs/crowd_scaling
+$PY bench/crowd_scaling.py --markdown docs/crowd_scaling.md --csv "$RESULTS/crowd_scaling.csv" \
+  --chart docs/crowd_scaling.png --screenshots docs/crowd_scaling "${peer[@]}"
 $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
 rm -rf docs/relief_switch
 $PY bench/relief_switch.py --chart docs/relief_switch.png --images docs/relief_switch --markdown docs/relief_switch.md

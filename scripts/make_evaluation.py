@@ -7,7 +7,7 @@ Reads from RESULTS_DIR: bench_*.json (Google Benchmark, repetitions with aggrega
 scene_budget.csv (src/tools/scene_budget.cpp), relief_modes.csv (bench/relief_modes.py),
 rviz_scaling.csv (bench/rviz_scaling.py), machine.txt; from docs/:
 fourier_order_sweep_cmu_02_01.csv, tessellation_accuracy.csv, node_cpu.md, rviz_scaling.md,
-relief_modes.md, relief_flicker.md, skin_distance.md, rviz_memory.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
+relief_modes.md, relief_flicker.md, skin_distance.md, rviz_memory.md, crowd_scaling.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
 docs/skin_map_speed.png, docs/EVALUATION.md, and the README's "Speed" section (between its
 generated-section markers). A missing input is an error: the report is all measured or not
 written.
@@ -310,6 +310,7 @@ def readme_speed_section(results, machine, skeleton_lines, rviz_verdict):
         node_cpu=read_text(os.path.join(DOCS, "node_cpu.md")), node_verdict=node_cpu_verdict(),
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")), rviz_verdict=rviz_verdict,
         rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
+        crowd_scaling=read_text(os.path.join(DOCS, "crowd_scaling.md")),
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")))
 
 
@@ -356,6 +357,7 @@ def main():
         rviz_verdict=rviz_verdict,
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")),
         rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
+        crowd_scaling=read_text(os.path.join(DOCS, "crowd_scaling.md")),
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")),
         relief_flicker=read_text(os.path.join(DOCS, "relief_flicker.md")),
         skin_distance=read_text(os.path.join(DOCS, "skin_distance.md")),
@@ -543,6 +545,19 @@ humans publishing that differ only in what rviz draws:
 
 {rviz_memory}
 
+## A crowd from one publisher against spencer's walking-man meshes
+
+![crowd scaling](crowd_scaling.png)
+
+`bench/crowd_scaling.py`: one `crowd_publisher` walks every human (on treadmills, in the rows
+above) and publishes one `dressed_human/Crowd` message for all at 30 Hz; one DressedHuman display
+draws them (`Humans: From Topic`). The peer, spencer's TrackedPersons display with its walking-man
+meshes, gets one TrackedPersons message for all persons at the same rate and places. Each subject's
+per-human cost is counted against rviz drawing only its grid while that subject's publisher runs.
+Then rviz's resident memory over minutes with the shipped `crowd.launch count:=40`.
+
+{crowd_scaling}
+
 "rviz CPU per human" is the whole rviz process (its thread, Ogre, and Mesa's software rasteriser
 on both cores) minus the empty scene, divided by the humans; "the display's own update" is what
 the DressedHuman display measures of its update() on rviz's thread (TF lookups, posing, level of
@@ -586,6 +601,14 @@ level of detail) against the same number of RobotModel displays of the same URDF
 Memory per additional human, with the same humans publishing TF in every run (`bench/rviz_memory.py`):
 
 {rviz_memory}
+
+A crowd from one publisher (one `dressed_human/Crowd` message for all at 30 Hz, one display "From
+Topic") against spencer's walking-man meshes fed one TrackedPersons message at the same rate and
+places, and rviz's memory over minutes with `crowd.launch count:=40` (`bench/crowd_scaling.py`):
+
+![crowd scaling](docs/crowd_scaling.png)
+
+{crowd_scaling}
 """
 
 if __name__ == "__main__":

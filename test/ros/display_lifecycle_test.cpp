@@ -124,23 +124,27 @@ class DisplayLifecycleTest : public ::testing::Test {
     }
     return text;
   }
-  // The human tiny on screen (rviz's default orbit in a 60 px view) or large (a 1200 px view 2 m
-  // from its body frame, wherever the walk has taken it), then ten frames.
-  void viewHuman(bool near) {
+  // The view's focal point on the human's body frame, wherever the walk (mode replay: straight
+  // on) has taken it: a human outside the view is not updated at all.
+  void focusOnHuman() {
     rviz::ViewController* view = manager_->getViewManager()->getCurrent();
     ASSERT_NE(view, nullptr);
     if (!default_distance_.isValid()) {
       default_distance_ = view->subProp("Distance")->getValue();
       default_focal_ = view->subProp("Focal Point")->getValue();
     }
-    const int height = near ? 1200 : 60;
-    panel_->resize(height * 4 / 3, height);
     Ogre::Vector3 body;
     Ogre::Quaternion unused;
     ASSERT_TRUE(manager_->getFrameManager()->getTransform("body", ros::Time(), body, unused));
-    view->subProp("Focal Point")
-        ->setValue(near ? QVariant(QString("%1;%2;%3").arg(body.x).arg(body.y).arg(body.z)) : default_focal_);
-    view->subProp("Distance")->setValue(near ? QVariant(2.0) : default_distance_);
+    view->subProp("Focal Point")->setValue(QVariant(QString("%1;%2;%3").arg(body.x).arg(body.y).arg(body.z)));
+  }
+  // The human tiny on screen (rviz's default orbit distance in a 60 px view) or large (a 1200 px
+  // view 2 m from its body frame), then ten frames.
+  void viewHuman(bool near) {
+    focusOnHuman();
+    const int height = near ? 1200 : 60;
+    panel_->resize(height * 4 / 3, height);
+    manager_->getViewManager()->getCurrent()->subProp("Distance")->setValue(near ? QVariant(2.0) : default_distance_);
     frames(10);
   }
   // rviz's default view in the suite's 320 x 240 panel again.
@@ -566,6 +570,7 @@ std::vector<std::pair<std::string, float>> drawnObjects(Ogre::SceneNode* node) {
 // rebuild left it undrawn until its next frame, every loop of a replay).
 TEST_F(DisplayLifecycleTest, ResetKeepsTheHumanDrawn) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  focusOnHuman();
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(60.0);
   while (!drawn() && ros::WallTime::now() < deadline) frame();
   ASSERT_TRUE(drawn()) << allStatuses();
@@ -577,6 +582,38 @@ TEST_F(DisplayLifecycleTest, ResetKeepsTheHumanDrawn) {
   EXPECT_TRUE(drawn()) << allStatuses();
   frames(5);
   EXPECT_EQ(unexpectedErrors(""), "");
+  restoreView();
+}
+
+// Visible Ogre objects with geometry under `node`.
+int visibleObjects(Ogre::SceneNode* node) {
+  int visible = 0;
+  for (unsigned short i = 0; i < node->numAttachedObjects(); ++i) {
+    const Ogre::MovableObject* object = node->getAttachedObject(i);
+    visible += object->getVisible() && !object->getBoundingBox().isNull() ? 1 : 0;
+  }
+  for (unsigned short i = 0; i < node->numChildren(); ++i) {
+    if (auto* child = dynamic_cast<Ogre::SceneNode*>(node->getChild(i))) visible += visibleObjects(child);
+  }
+  return visible;
+}
+
+// A human outside the view is hidden and not updated (its mesh would be stale), and is drawn
+// again as soon as the view comes back to it.
+TEST_F(DisplayLifecycleTest, AHumanOutsideTheViewIsHiddenUntilItIsInViewAgain) {
+  ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
+  focusOnHuman();
+  frames(10);
+  ASSERT_GT(visibleObjects(display_->getSceneNode()), 0) << allStatuses();
+  rviz::ViewController* view = manager_->getViewManager()->getCurrent();
+  view->subProp("Focal Point")->setValue(QVariant(QString("5000;5000;0")));
+  frames(10);
+  EXPECT_EQ(visibleObjects(display_->getSceneNode()), 0) << "a human far outside the view is still shown";
+  focusOnHuman();
+  frames(10);
+  EXPECT_GT(visibleObjects(display_->getSceneNode()), 0) << "the human did not come back into view";
+  EXPECT_EQ(unexpectedErrors(""), "");
+  restoreView();
 }
 
 // "Relief Strength" was renamed "Skin Relief Strength": a configuration saved before still sets

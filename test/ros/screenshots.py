@@ -54,6 +54,17 @@ class Rviz:
         return self.process.poll() is None
 
 
+# What this package's programs print in their log lines: the display names itself (rosconsole's
+# default format does not print the logger's name, "dressed_human"), the nodes their node type.
+PACKAGE_LOG_MARKERS = ("DressedHuman display", "skeleton_publisher", "crowd_publisher", "dressed_human")
+
+
+def package_errors(output):
+    """The ERROR and FATAL lines of `output` that this package's display or nodes printed."""
+    return [line for line in output.splitlines()
+            if ("[ERROR]" in line or "[FATAL]" in line) and any(marker in line for marker in PACKAGE_LOG_MARKERS)]
+
+
 def grab(path):
     """The screen, cropped to rviz's 3D view: the bounding box of the background colour."""
     subprocess.run(["import", "-window", "root", path], check=True)

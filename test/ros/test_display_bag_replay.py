@@ -10,7 +10,7 @@ import roslib.packages
 import rospy
 import rostest
 
-from screenshots import Rviz, figure_mask, wait_for_figure
+from screenshots import Rviz, figure_mask, package_errors, wait_for_figure
 
 
 class DisplayBagReplayTest(unittest.TestCase):
@@ -43,7 +43,7 @@ class DisplayBagReplayTest(unittest.TestCase):
         rospy.loginfo("figure pixels: %d, then %d after the loop", figure_mask(first).sum(), figure_mask(second).sum())
         self.assertGreater(figure_mask(first).sum(), 20000)
         self.assertGreater(figure_mask(second).sum(), 20000)
-        errors = [line for line in output.splitlines() if "ERROR" in line and "dressed_human" in line.lower()]
+        errors = package_errors(output)
         self.assertEqual(errors, [])
 
 

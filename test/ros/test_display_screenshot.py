@@ -9,7 +9,7 @@ import numpy
 import rospy
 import rostest
 
-from screenshots import Rviz, figure_mask, high_pass_energy, wait_for_figure
+from screenshots import Rviz, figure_mask, high_pass_energy, package_errors, wait_for_figure
 
 
 class DisplayScreenshotTest(unittest.TestCase):
@@ -130,7 +130,7 @@ class DisplayScreenshotTest(unittest.TestCase):
 
     def test_no_error_reported(self):
         for mode, output in self.outputs.items():
-            errors = [line for line in output.splitlines() if "ERROR" in line and "dressed_human" in line.lower()]
+            errors = package_errors(output)
             self.assertEqual(errors, [], "%s: %s" % (mode, errors))
 
 

@@ -24,6 +24,7 @@ import tf2_ros
 
 from on_screen import (BODY_MARGIN_METRES, Launch, LoopingTfListener, OrbitView, bone_frames, crowd_frames,
                        edited_config, observe, wait_for_view)
+from screenshots import package_errors
 
 PACKAGE = roslib.packages.get_pkg_dir("dressed_human")
 
@@ -159,7 +160,7 @@ class HumanOnScreenTest(unittest.TestCase):
         self.check_log(log)
 
     def check_log(self, log):
-        errors = [line for line in log.splitlines() if "ERROR" in line and "dressed_human" in line.lower()]
+        errors = package_errors(log)
         self.assertEqual(errors, [])
 
     def check_crowd(self, name, results, failed, output, log):
