@@ -7,11 +7,12 @@ same rate, in the same run, at the same places; then rviz's resident memory over
 shipped `crowd.launch count:=40` and its rviz config.
 
 Scene points (bench/rviz_display_scaling.cpp does the rviz side): the humans walk on treadmills
-(crowd file `treadmill: true`, 1.2 m/s, 30 Hz messages) in rows of 10, 1 m apart, rows 3 m apart
-(bench/rviz_scaling.py's places and views), the camera --points' distance away. Each point saves
+(crowd file `treadmill: true`, 1.2 m/s, 30 Hz messages) in rows of 10, 1 m apart, rows 3.5 m apart
+(bench/rviz_scaling.py's views), the camera --points' distance away. Each point saves
 a screenshot when its measurement starts and one when it ends and fails unless every one of its
 N figures is drawn in both: at least MIN_BOX_SHARE of the box its place projects to (0.6 m wide
-across the row, where neighbours stand 1 m apart) covered by figure pixels. rviz CPU per human
+across the row, where neighbours stand 1 m apart; rows far enough apart that no box overlaps the
+next row's on screen) covered by figure pixels. rviz CPU per human
 per frame = (rviz CPU per frame - rviz drawing only its grid while the same publisher runs) / N,
 each subject against its own publisher's grid. The crowd publisher's own CPU is measured while
 ours are.
@@ -47,7 +48,11 @@ OURS = ("DressedHuman from one crowd message", "dressed_human/DressedHuman",
         ["--set", "Robot Description=robot_description", "--set", "Humans=From Topic", "--set", "Topic=/crowd"])
 PEER = rs.PEER
 PUBLISH_HZ = 30.0
-MIN_BOX_SHARE = 0.08  # of a 1 m x 0.6 m x 1.95 m box a figure covers about a quarter
+# Of a 1 m x 0.6 m x 1.95 m box a figure covers a quarter (ours) or a tenth (the peer's), less of
+# it coloured enough for the figure mask in dark clothes (a black jacket at 30 m: 4.3 %); a box
+# whose human is missing holds none (checked by leaving a human out of the crowd).
+MIN_BOX_SHARE = 0.03
+ROW_SPACING = 3.5  # m: the boxes of one row and the next do not overlap on screen, even from 30 m at 0.7 rad
 DEFAULT_POINTS = ["10@12", "20@12", "30@12", "40@12", "10@30", "20@30", "40@30", "100@30"]
 
 
@@ -57,6 +62,11 @@ def parse_points(texts):
         count, distance = text.split("@")
         points.append((int(count), float(distance)))
     return points
+
+
+def positions(count):
+    """(x, y) of each human: rows of rs.ROW_LENGTH, 1 m apart, ROW_SPACING apart, centred on the view."""
+    return [(x * ROW_SPACING / rs.ROW_SPACING, y) for x, y in rs.positions(count)]
 
 
 def crowd_file(places, directory):
@@ -103,9 +113,11 @@ def measure(subject, count, distance, args, shots, env, env_script=None):
     label, display_class, extra = subject
     name = re.sub(r"[^a-z]+", "_", label.lower()).strip("_")
     screenshot = os.path.join(shots, "%s_%d_%gm.png" % (name, count, distance))
-    point = rs.harness(display_class, 1, args.seconds, extra, screenshot, env, distance, 0.0, env_script)
+    # One display draws them all: the view's pitch is the one for `count` humans, not for one.
+    point = rs.harness(display_class, 1, args.seconds, extra + ["--view", "Pitch=%g" % rs.pitch(count)], screenshot,
+                       env, distance, 0.0, env_script)
     orbit = rs.view(count, distance)
-    places = rs.positions(count)
+    places = positions(count)
     point["drawn"] = min(drawn(screenshot[:-4] + "_start.png", places, orbit), drawn(screenshot, places, orbit))
     point["screenshot"] = os.path.relpath(screenshot, rs.ROOT)
     print(label, count, distance, point, file=sys.stderr)
@@ -113,44 +125,62 @@ def measure(subject, count, distance, args, shots, env, env_script=None):
 
 
 def measure_ours(count, distances, args, shots, directory, env):
-    places = rs.positions(count)
+    places = positions(count)
     publisher = start([os.path.join(rs.DEVEL, "lib", "dressed_human", "crowd_publisher"),
                        "_crowd_file:=" + crowd_file(places, directory), "_rate:=%g" % PUBLISH_HZ], env)
     try:
         time.sleep(3)
         if publisher.poll() is not None:
             raise RuntimeError("crowd_publisher exited (status %s)" % publisher.returncode)
-        grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_ours_%d.png" % count), env)
-        cpu_start, wall_start = cpu_seconds(publisher.pid), time.time()
-        points = {d: measure(OURS, count, d, args, shots, env) for d in distances}
-        publisher_cpu = 100.0 * (cpu_seconds(publisher.pid) - cpu_start) / (time.time() - wall_start)
+        runs = {d: [] for d in distances}
+        publisher_cpu = []
+        for _ in range(args.repeats):
+            grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_ours_%d.png" % count), env)
+            for distance in distances:
+                cpu_start, wall_start = cpu_seconds(publisher.pid), time.time()
+                point = measure(OURS, count, distance, args, shots, env)
+                publisher_cpu.append(100.0 * (cpu_seconds(publisher.pid) - cpu_start) / (time.time() - wall_start))
+                point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
+                point["grid_ms"] = grid["cpu_ms_per_frame"]
+                runs[distance].append(point)
     finally:
         stop(publisher)
-    for point in points.values():
-        point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
-        point["grid_ms"] = grid["cpu_ms_per_frame"]
-        point["publisher_cpu"] = publisher_cpu
-    return points
+    return {d: summary(points, max(publisher_cpu)) for d, points in runs.items()}
 
 
 def measure_peer(count, distances, args, shots, env):
     setup = os.path.join(args.peer_workspace, "devel")
-    places = ["%g,%g" % place for place in rs.positions(count)]
+    places = ["%g,%g" % place for place in positions(count)]
     publisher = start(["/bin/bash", "-c", ". %s/setup.bash && exec /usr/bin/python3 %s %g %s" % (
         setup, os.path.join(rs.ROOT, "bench", "peer_rows.py"), PUBLISH_HZ, " ".join(places))], env)
     env_script = os.path.join(setup, "env.sh")
     try:
         time.sleep(4)
-        grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_peer_%d.png" % count), env,
-                          env_script=env_script)
-        points = {d: measure(PEER, count, d, args, shots, env, env_script) for d in distances}
+        runs = {d: [] for d in distances}
+        for _ in range(args.repeats):
+            grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_peer_%d.png" % count), env,
+                              env_script=env_script)
+            for distance in distances:
+                point = measure(PEER, count, distance, args, shots, env, env_script)
+                point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
+                point["grid_ms"] = grid["cpu_ms_per_frame"]
+                runs[distance].append(point)
     finally:
         stop(publisher)
-    for point in points.values():
-        point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
-        point["grid_ms"] = grid["cpu_ms_per_frame"]
-        point["publisher_cpu"] = -1.0
-    return points
+    return {d: summary(points, -1.0) for d, points in runs.items()}
+
+
+def summary(points, publisher_cpu):
+    """The repetitions of one point: medians, the per-human cost's range, the fewest drawn."""
+    median = lambda key: float(numpy.median([p[key] for p in points]))  # noqa: E731
+    result = {key: median(key) for key in ("fps", "cpu_percent", "cpu_ms_per_frame", "grid_ms", "per_human_ms")}
+    result["per_human_range"] = (min(p["per_human_ms"] for p in points), max(p["per_human_ms"] for p in points))
+    result["fps_range"] = (min(p["fps"] for p in points), max(p["fps"] for p in points))
+    result["drawn"] = min(p["drawn"] for p in points)
+    result["screenshot"] = points[-1]["screenshot"]
+    result["publisher_cpu"] = publisher_cpu
+    result["repeats"] = len(points)
+    return result
 
 
 def rviz_pid(marker):
@@ -239,8 +269,11 @@ def chart(results, points, memory, memory_count, path):
             style = "o-" if distance == distances[0] else "s--"
             axes[0].plot(counts, [results[(label, n, distance)]["fps"] for n in counts], style,
                          label="%s, %g m" % (label, distance))
-            axes[1].plot(counts, [results[(label, n, distance)]["per_human_ms"] for n in counts], style,
-                         label="%s, %g m" % (label, distance))
+            medians = [results[(label, n, distance)]["per_human_ms"] for n in counts]
+            ranges = numpy.array([[m - results[(label, n, distance)]["per_human_range"][0],
+                                   results[(label, n, distance)]["per_human_range"][1] - m]
+                                  for m, n in zip(medians, counts)]).T
+            axes[1].errorbar(counts, medians, yerr=ranges, fmt=style, capsize=3, label="%s, %g m" % (label, distance))
     axes[0].axhline(30.0, color="grey", lw=0.8, ls="--")
     axes[0].set_ylabel("frames per second (rviz caps at 30)")
     axes[1].set_ylabel("rviz CPU per human per frame (ms)\n(rviz CPU per frame - grid with the publisher) / N")
@@ -271,6 +304,7 @@ def memory_growth(samples, from_s, to_s):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--seconds", type=float, default=15.0)
+    parser.add_argument("--repeats", type=int, default=2, help="runs per point, each against its own grid run")
     parser.add_argument("--points", nargs="+", default=DEFAULT_POINTS, help="COUNT@DISTANCE ...")
     parser.add_argument("--peer-workspace", default="")
     parser.add_argument("--memory-minutes", type=float, default=5.0, help="0: no memory run")
@@ -309,7 +343,8 @@ def main():
 
     failed = ["%s x %d at %g m" % key for key, p in results.items() if p["drawn"] < key[1]]
     lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per frame (grid with the same "
-             "publisher) | rviz CPU per human per frame | crowd_publisher CPU |", "|---|---|---|---|---|---|---|---|---|"]
+             "publisher) | rviz CPU per human per frame (range) | crowd_publisher CPU (most) |",
+             "|---|---|---|---|---|---|---|---|---|"]
     rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,grid_ms,per_human_ms,publisher_cpu,"
             "screenshot"]
     for count, distance in points:
@@ -319,19 +354,22 @@ def main():
                 continue
             drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")
             publisher = "%.1f %%" % p["publisher_cpu"] if p["publisher_cpu"] >= 0 else "—"
-            lines.append("| %d | %g m | %s | %s | %.1f | %.0f %% | %.1f ms (%.1f ms) | %.2f ms | %s |" % (
-                count, distance, label, drawn_text, p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
-                p["per_human_ms"], publisher))
+            fps_text = "%.1f" % p["fps"] + ("" if p["fps_range"][1] - p["fps_range"][0] < 0.5 else " (%.1f–%.1f)" % p["fps_range"])
+            lines.append("| %d | %g m | %s | %s | %s | %.0f %% | %.1f ms (%.1f ms) | %.2f ms (%.2f–%.2f) | %s |" % (
+                count, distance, label, drawn_text, fps_text, p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
+                p["per_human_ms"], p["per_human_range"][0], p["per_human_range"][1], publisher))
             rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%.1f,%s" % (
                 label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
                 p["per_human_ms"], p["publisher_cpu"], p["screenshot"]))
     lines.append("")
-    lines.append("Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, one message for all at "
+    lines.append("Medians of %d runs per point, each run's per-human cost against its own grid run (the range: "
+                 "lowest and highest run). " % args.repeats +
+                 "Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, one message for all at "
                  "%g Hz (ours: crowd_publisher's dressed_human/Crowd, with each root frame on /tf; the peer: "
                  "TrackedPersons from bench/peer_rows.py); %g s per point after 5 s of warm-up; rviz CPU in %% of one "
                  "core, Mesa llvmpipe on %d cores, rviz's default anti-aliasing; \"drawn\": figures in both the screenshot at the "
                  "start and at the end of the point (`%s/`). `bench/crowd_scaling.py`."
-                 % (rs.ROW_LENGTH, rs.ROW_SPACING, PUBLISH_HZ, args.seconds, os.cpu_count(),
+                 % (rs.ROW_LENGTH, ROW_SPACING, PUBLISH_HZ, args.seconds, os.cpu_count(),
                     os.path.relpath(shots, rs.ROOT)))
     if memory:
         samples, verdicts = memory
