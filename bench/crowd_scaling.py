@@ -7,8 +7,9 @@ same rate, in the same run, at the same places; then rviz's resident memory over
 shipped `crowd.launch count:=40` and its rviz config.
 
 Scene points (bench/rviz_display_scaling.cpp does the rviz side): the humans walk on treadmills
-(crowd file `treadmill: true`, 1.2 m/s, 30 Hz messages) in rows of 10, 1 m apart, rows 3.5 m apart
-(bench/rviz_scaling.py's views), the camera --points' distance away. Each point saves
+(crowd file `treadmill: true`, 1.2 m/s, 30 Hz messages) in rows of 10, 1 m apart, rows 3.5 m apart,
+the camera --points' distance from the middle of the nearest row (pitched 0.25 rad for one row,
+0.7 rad for more, as bench/rviz_scaling.py's views), every other row farther off. Each point saves
 a screenshot when its measurement starts and one when it ends and fails unless every one of its
 N figures is drawn in both: at least MIN_BOX_SHARE of the box its place projects to (0.6 m wide
 across the row, where neighbours stand 1 m apart; rows far enough apart that no box overlaps the
@@ -69,6 +70,12 @@ def positions(count):
     return [(x * ROW_SPACING / rs.ROW_SPACING, y) for x, y in rs.positions(count)]
 
 
+def front_row_x(count):
+    """The x of the row nearest the camera (the orbit's eye is on the +x side): the view's focal
+    point is that row's middle, `distance` away, and every other row stands farther off."""
+    return max(x for x, _ in positions(count))
+
+
 def crowd_file(places, directory):
     path = os.path.join(directory, "treadmill_crowd_%d.yaml" % len(places))
     with open(path, "w") as f:
@@ -113,10 +120,12 @@ def measure(subject, count, distance, args, shots, env, env_script=None):
     label, display_class, extra = subject
     name = re.sub(r"[^a-z]+", "_", label.lower()).strip("_")
     screenshot = os.path.join(shots, "%s_%d_%gm.png" % (name, count, distance))
-    # One display draws them all: the view's pitch is the one for `count` humans, not for one.
-    point = rs.harness(display_class, 1, args.seconds, extra + ["--view", "Pitch=%g" % rs.pitch(count)], screenshot,
-                       env, distance, 0.0, env_script)
-    orbit = rs.view(count, distance)
+    # One display draws them all: the view is the one for `count` humans, not for one.
+    front = front_row_x(count)
+    view_arguments = ["--view", "Pitch=%g" % rs.pitch(count), "--focal", "%g;0;%g" % (front, rs.FOCAL_Z)]
+    point = rs.harness(display_class, 1, args.seconds, extra + view_arguments, screenshot, env, distance, 0.0,
+                       env_script)
+    orbit = OrbitView(distance, rs.YAW, rs.pitch(count), (front, 0.0, rs.FOCAL_Z))
     places = positions(count)
     point["drawn"] = min(drawn(screenshot[:-4] + "_start.png", places, orbit), drawn(screenshot, places, orbit))
     point["screenshot"] = os.path.relpath(screenshot, rs.ROOT)
@@ -364,7 +373,8 @@ def main():
     lines.append("")
     lines.append("Medians of %d runs per point, each run's per-human cost against its own grid run (the range: "
                  "lowest and highest run). " % args.repeats +
-                 "Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, one message for all at "
+                 "Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, the distance from the camera to "
+                 "the middle of the nearest row (the others farther off); one message for all at "
                  "%g Hz (ours: crowd_publisher's dressed_human/Crowd, with each root frame on /tf; the peer: "
                  "TrackedPersons from bench/peer_rows.py); %g s per point after 5 s of warm-up; rviz CPU in %% of one "
                  "core, Mesa llvmpipe on %d cores, rviz's default anti-aliasing; \"drawn\": figures in both the screenshot at the "
