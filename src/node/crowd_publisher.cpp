@@ -8,6 +8,7 @@
 #include "dressed_human/core/motion/motion_file.h"
 #include "dressed_human/core/skeleton/urdf_body_shape.h"
 #include "parameters.h"
+#include "tick_clock.h"
 #include "transform_messages.h"
 
 namespace dressed_human {
@@ -136,31 +137,18 @@ void CrowdPublisher::publishStaticTransforms(const ros::Time& stamp) {
 }
 
 void CrowdPublisher::run() {
-  if (!ros::Time::waitForValid()) return;
-  ros::Rate rate(settings_.rate);
-  while (ros::ok()) {
-    tick();
-    ros::spinOnce();
-    rate.sleep();
-  }
+  runAtRate(settings_.rate, [this] { tick(); });
 }
 
 void CrowdPublisher::tick() {
   const ros::Time now = ros::Time::now();
-  if (now.isZero()) return;
-  if (started_ && now < last_time_) {
-    ROS_INFO("crowd_publisher: time jumped back from %.3f to %.3f s (bag loop?): every human starts again",
-             last_time_.toSec(), now.toSec());
-    started_ = false;
-  }
-  if (!started_) {
-    started_ = true;
-    last_time_ = now;
+  double dt = 0.0;
+  const TickClock::Tick tick = clock_.advance(now, dt);
+  if (tick == TickClock::Tick::kNoTime) return;
+  if (tick == TickClock::Tick::kFirst) {
     place();
     publishStaticTransforms(now);
   }
-  const double dt = (now - last_time_).toSec();
-  last_time_ = now;
   const std::size_t per_member = settings_.skeleton_tf ? 1 + kDofCount : 1;
   for (std::size_t i = 0; i < members_.size(); ++i) {
     Member& member = members_[i];

@@ -15,6 +15,7 @@
 #include "dressed_human/Crowd.h"
 #include "dressed_human/core/locomotion/walker.h"
 #include "dressed_human/core/model/crowd_walks.h"
+#include "tick_clock.h"
 
 namespace dressed_human {
 
@@ -37,8 +38,7 @@ class CrowdPublisher {
   // message naming what is wrong.
   CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_node);
 
-  // Publishes at the configured rate until ROS shuts down (ticks paced by ros::Rate, simulated
-  // time aware, as skeleton_publisher's).
+  // Publishes at the configured rate until ROS shuts down (runAtRate).
   void run();
 
  private:
@@ -64,8 +64,7 @@ class CrowdPublisher {
   ros::Publisher crowd_publisher_;
   ros::Publisher tf_publisher_;
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;
-  ros::Time last_time_;
-  bool started_ = false;
+  TickClock clock_{"crowd_publisher", "every human starts again"};
 };
 
 }  // namespace dressed_human

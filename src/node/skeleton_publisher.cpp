@@ -9,6 +9,7 @@
 
 #include "dressed_human/core/motion/motion_file.h"
 #include "parameters.h"
+#include "tick_clock.h"
 #include "transform_messages.h"
 
 namespace dressed_human {
@@ -176,33 +177,20 @@ void SkeletonPublisher::publishStaticTransforms(const ros::Time& stamp) {
 }
 
 void SkeletonPublisher::run() {
-  // Under simulated time, sleeping from time zero never returns: wait for the first /clock.
-  if (!ros::Time::waitForValid()) return;
-  ros::Rate rate(settings_.rate);
-  while (ros::ok()) {
-    tick();
-    ros::spinOnce();
-    rate.sleep();
-  }
+  runAtRate(settings_.rate, [this] { tick(); });
 }
 
 void SkeletonPublisher::tick() {
   const ros::Time now = ros::Time::now();
-  if (now.isZero()) return;  // simulated time has not started yet
-  if (started_ && now < last_time_) {
-    ROS_INFO("skeleton_publisher: time jumped back from %.3f to %.3f s (bag loop?): restarting the motion",
-             last_time_.toSec(), now.toSec());
-    started_ = false;
-  }
-  if (!started_) {
+  double ros_dt = 0.0;
+  const TickClock::Tick tick = clock_.advance(now, ros_dt);
+  if (tick == TickClock::Tick::kNoTime) return;
+  if (tick == TickClock::Tick::kFirst) {
     start_time_ = now;
-    last_time_ = now;
-    started_ = true;
     publishStaticTransforms(now);
     if (walker_) placeWalker();
   }
-  const double dt = (now - last_time_).toSec() * settings_.speed_factor;
-  last_time_ = now;
+  const double dt = ros_dt * settings_.speed_factor;
   if (walker_) {
     walk(now, dt);
   } else {

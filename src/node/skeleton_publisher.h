@@ -14,6 +14,7 @@
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 #include "dressed_human/core/locomotion/walker.h"
 #include "dressed_human/core/motion/motion_evaluator.h"
+#include "tick_clock.h"
 #include "walk_commands.h"
 
 namespace dressed_human {
@@ -45,9 +46,7 @@ class SkeletonPublisher {
   // Throws (ParameterError, SkeletonError, MotionError) with a message naming what is wrong.
   SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle private_node);
 
-  // Publishes at the configured rate until ROS shuts down. Ticks run in the calling thread,
-  // paced by ros::Rate (simulated time aware): a ros::Timer would hand every tick from the timer
-  // thread to the spinner thread, and those context switches cost more than the tick itself.
+  // Publishes at the configured rate until ROS shuts down (runAtRate).
   void run();
 
  private:
@@ -79,8 +78,7 @@ class SkeletonPublisher {
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;
   ros::Publisher joint_state_publisher_;
   ros::Time start_time_;
-  ros::Time last_time_;
-  bool started_ = false;
+  TickClock clock_{"skeleton_publisher", "restarting the motion"};
 };
 
 }  // namespace dressed_human
