@@ -17,20 +17,6 @@ namespace {
 constexpr int kMaxCount = 1000;
 constexpr double kMaxRate = 1000.0;
 
-// The robot description's skeleton at a crowd human's stature, as a DressedHuman display draws it
-// (tf_human_roster.h's crowdHumanBody: within 0.5 % of 1, or a description with proportions of its
-// own, unscaled; the message then says 1).
-double drawnStature(const Skeleton& skeleton, double stature) {
-  return std::abs(stature - 1.0) < 0.005 || !skeleton.bodyShape().isIdentity() ? 1.0 : stature;
-}
-
-Skeleton skeletonAtStature(const Skeleton& skeleton, const std::string& urdf, double stature) {
-  if (stature == 1.0) return skeleton;
-  BodyShape tall;
-  for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(stature);
-  return Skeleton::fromUrdf(shapedUrdf(urdf, tall));
-}
-
 }  // namespace
 
 CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHandle& private_node) {
@@ -100,7 +86,7 @@ CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_nod
 void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, const std::string& urdf,
                                const Motion& motion, const NormativeGait& gait) {
   const double stature = drawnStature(plain, walk.stature);
-  const Skeleton scaled = skeletonAtStature(plain, urdf, stature);
+  const Skeleton scaled = skeletonAtStature(plain, urdf, walk.stature);
   auto walker = std::make_unique<Walker>(scaled, scaled.bodyShape(), SpeedGait(motion, gait, scaled, scaled.bodyShape()));
   walker->setCruiseSpeed(walk.speed);
   members_.push_back(Member{walk, stature, scaled.withSuffix("_" + walk.id), std::move(walker), {}, {}});

@@ -1,7 +1,6 @@
 #include "crowd_topic.h"
 
 #include <algorithm>
-#include <cctype>
 #include <set>
 
 #include <OgreQuaternion.h>
@@ -21,10 +20,6 @@ constexpr double kTimeJumpSeconds = 0.5;
 
 const char* const kTopicStatus = "Topic";
 const char* const kMessageStatus = "Crowd Message";
-
-bool validId(const std::string& id) {
-  return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) { return std::isalnum(c) != 0; });
-}
 
 // The type `topic` is published with, "" if nobody publishes it yet.
 std::string publishedType(const std::string& topic) {
@@ -121,7 +116,7 @@ void CrowdTopic::take(const Crowd& message, rviz::FrameManager& frames, std::vec
   std::set<std::string> seen;
   const ros::WallTime now = ros::WallTime::now();
   for (const HumanState& state : message.humans) {
-    if (!validId(state.id)) {
+    if (!isHumanId(state.id)) {
       problems.push_back(where + ": human id '" + state.id + "' is not letters and digits; refused");
       continue;
     }

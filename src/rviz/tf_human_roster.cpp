@@ -59,13 +59,10 @@ double statureInTf(const tf2_ros::Buffer& buffer, const Skeleton& skeleton, cons
 
 CrowdHumanBody crowdHumanBody(const Skeleton& skeleton, const std::string& urdf, const BodyDescription& body,
                               const BodyShape& shape, const std::string& suffix, double stature) {
-  CrowdHumanBody human{skeleton.withSuffix(suffix), body};
+  CrowdHumanBody human{skeletonAtStature(skeleton, urdf, stature).withSuffix(suffix), body};
   human.description.shape = shape;
-  if (std::abs(stature - 1.0) < 0.005 || !skeleton.bodyShape().isIdentity() || urdf.empty()) return human;
-  BodyShape tall;
-  for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(stature);
-  human.skeleton = Skeleton::fromUrdf(shapedUrdf(urdf, tall)).withSuffix(suffix);
-  for (Eigen::Vector3d& scale : human.description.shape.scale) scale *= stature;
+  const double drawn = urdf.empty() ? 1.0 : drawnStature(skeleton, stature);
+  for (Eigen::Vector3d& scale : human.description.shape.scale) scale *= drawn;
   return human;
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/skeleton/urdf_body_shape.h"
 
 namespace dressed_human {
 namespace {
@@ -235,6 +236,40 @@ TEST(SkeletonErrors, NameWhatDoesNotFit) {
       << skeletonErrorOf(text);
 
   EXPECT_THROW(Skeleton::fromUrdfFile("/nonexistent/human.urdf"), SkeletonError);
+}
+
+}  // namespace
+}  // namespace dressed_human
+
+namespace dressed_human {
+namespace {
+
+// A crowd human's stature, as the crowd publisher walks it and the display draws it: whole
+// bones scaled by it, nothing for a stature within 0.5 % of 1 or a URDF carrying a person's
+// proportions of its own.
+TEST(CrowdStature, ScalesTheBonesUnlessNegligibleOrAlreadyAPersons) {
+  std::ifstream file(kUrdfPath);
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string urdf = text.str();
+  const Skeleton plain = Skeleton::fromUrdf(urdf);
+  // The knee's offset in the thigh as the URDF puts it (rest offset times the URDF's own shape).
+  const auto thigh = [](const Skeleton& s) {
+    return shapedRestTranslation(s, s.bodyShape(), static_cast<std::size_t>(s.findBone("l_knee"))).norm();
+  };
+  EXPECT_DOUBLE_EQ(drawnStature(plain, 1.003), 1.0);
+  EXPECT_DOUBLE_EQ(drawnStature(plain, 1.1), 1.1);
+  EXPECT_NEAR(thigh(skeletonAtStature(plain, urdf, 1.1)), 1.1 * thigh(plain), 1e-9);
+  EXPECT_NEAR(thigh(skeletonAtStature(plain, urdf, 1.003)), thigh(plain), 1e-12);
+  BodyShape person;
+  for (Eigen::Vector3d& scale : person.scale) scale.setConstant(0.9);
+  const std::string fitted = shapedUrdf(urdf, person);
+  const Skeleton fitted_skeleton = Skeleton::fromUrdf(fitted);
+  EXPECT_DOUBLE_EQ(drawnStature(fitted_skeleton, 1.1), 1.0);
+  EXPECT_NEAR(thigh(skeletonAtStature(fitted_skeleton, fitted, 1.1)), thigh(fitted_skeleton), 1e-12);
+  EXPECT_TRUE(isHumanId("a7"));
+  EXPECT_FALSE(isHumanId(""));
+  EXPECT_FALSE(isHumanId("a b"));
 }
 
 }  // namespace

@@ -84,8 +84,7 @@ std::map<std::string, HumanAppearance> loadCrowdFile(const std::string& path) {
   for (const auto& entry : humans) {
     const std::string id = entry.first.Scalar();
     const std::string key = "humans." + id;
-    const bool id_ok = !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) { return std::isalnum(c) != 0; });
-    if (!id_ok) reader.fail(entry.first, key, "a human id is the letters and digits after 'body_' in its frames");
+    if (!isHumanId(id)) reader.fail(entry.first, key, "a human id is the letters and digits after 'body_' in its frames");
     const YAML::Node& fields = entry.second;
     reader.requireMap(fields, key);
     // How the human walks is the crowd publisher's (crowd_walks.h): one file describes the crowd.

@@ -92,9 +92,7 @@ urdf::LinkConstSharedPtr readArticulatedChain(const urdf::ModelInterface& model,
 }
 
 bool validSuffix(const std::string& suffix) {
-  return suffix.empty() || (suffix.size() > 1 && suffix[0] == '_' &&
-                            std::all_of(suffix.begin() + 1, suffix.end(),
-                                        [](unsigned char c) { return std::isalnum(c) != 0; }));
+  return suffix.empty() || (suffix[0] == '_' && isHumanId(suffix.substr(1)));
 }
 
 void readBoneCylinder(const urdf::Link& link, Bone& bone) {
@@ -230,6 +228,10 @@ Skeleton Skeleton::withSuffix(const std::string& suffix) const {
   }
   renamed.suffix_ = suffix;
   return renamed;
+}
+
+bool isHumanId(const std::string& id) {
+  return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) { return std::isalnum(c) != 0; });
 }
 
 std::vector<std::string> humanSuffixesAmong(const std::vector<std::string>& frames) {

@@ -178,4 +178,16 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
   return printer.CStr();
 }
 
+double drawnStature(const Skeleton& skeleton, double stature) {
+  return std::abs(stature - 1.0) < 0.005 || !skeleton.bodyShape().isIdentity() ? 1.0 : stature;
+}
+
+Skeleton skeletonAtStature(const Skeleton& skeleton, const std::string& urdf_xml, double stature) {
+  const double drawn = drawnStature(skeleton, stature);
+  if (drawn == 1.0 || urdf_xml.empty()) return skeleton;
+  BodyShape tall;
+  for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(drawn);
+  return Skeleton::fromUrdf(shapedUrdf(urdf_xml, tall)).withSuffix(skeleton.suffix());
+}
+
 }  // namespace dressed_human

@@ -111,6 +111,9 @@ const std::array<BoneLayoutEntry, kBoneCount>& humanBoneLayout();
 // The suffixes ("" or "_<id>") of every human among `frames` (e.g. every frame TF knows): a root
 // frame "body" or "body_<id>" with the first bone of the same suffix ("waist_<id>") beside it,
 // so that another robot's "body_link" is not taken for a human. Sorted, each once.
+// A human id: the letters and digits after "body_" in its frames (REP-155 style suffix "_<id>").
+bool isHumanId(const std::string& id);
+
 std::vector<std::string> humanSuffixesAmong(const std::vector<std::string>& frames);
 
 }  // namespace dressed_human
