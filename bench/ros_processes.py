@@ -21,8 +21,10 @@ def stop(process):
     try:
         os.killpg(process.pid, signal.SIGINT)
         process.wait(timeout=15)
-    except (ProcessLookupError, subprocess.TimeoutExpired):
+    except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass  # already gone: its failure is reported by the caller
 
 
 def report(table, markdown_path):

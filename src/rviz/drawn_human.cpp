@@ -54,6 +54,7 @@ bool DrawnHuman::update(rviz::FrameManager& frames, DisplayStatus& status, Level
   const bool small = updateDetailVisibility(camera, hide_unseen_relief);
   lod.hide_covered = hide_covered && small;
   visual_.setVertexLit(hide_unseen_relief && small);
+  visual_.setInsidesHidden(lod.hide_covered);
   model_.setWrinklesWanted(visual_.reliefShown(ReliefKind::kCloth));
   model_.update(root_, bones_, lod);
   visual_.update(model_.parts());

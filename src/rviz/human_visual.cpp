@@ -33,9 +33,10 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       part.name = source.name;
       part.relief = source.relief;
       part.bezier_vertices = bezier_vertices;
+      part.closed = source.closed;
       part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices,
                                                        source.relief == ReliefKind::kCloth);
-      part.material->setBackFacesCulled(source.closed);
+      part.material->setBackFacesCulled(part.closed || insides_hidden_);
       part.material->setVertexLit(vertex_lit_);
       part.mesh = std::make_unique<SurfaceMeshObject>(scene_manager_, node_, part.material->name());
       part.mesh->setVisible(visible_);
@@ -73,6 +74,12 @@ void HumanVisual::setVertexLit(bool lit) {
   if (lit == vertex_lit_) return;
   vertex_lit_ = lit;
   for (Part& part : parts_) part.material->setVertexLit(lit);
+}
+
+void HumanVisual::setInsidesHidden(bool hidden) {
+  if (hidden == insides_hidden_) return;
+  insides_hidden_ = hidden;
+  for (Part& part : parts_) part.material->setBackFacesCulled(part.closed || hidden);
 }
 
 void HumanVisual::setVisible(bool visible) {

@@ -37,6 +37,10 @@ class HumanVisual {
   void setReliefFade(ReliefKind kind, float fade);
   // true: parts whose relief is not shown are lit per vertex (ReliefMaterial::setVertexLit).
   void setVertexLit(bool lit);
+  // true: open parts' back faces are culled too. A garment's inside shows only past its hems and
+  // cuffs; while that gap is too small to see (LevelOfDetail::hide_covered) drawing it is wasted:
+  // on llvmpipe a small human's cost is its triangles' setup, not its pixels.
+  void setInsidesHidden(bool hidden);
   // A finished map's texture (3 channels for the skin, 4 for the garments' fold tiles), tiled once
   // per patch, on every part of its kind.
   void setNormalMap(const FinishedReliefMap& finished);
@@ -49,6 +53,7 @@ class HumanVisual {
     std::string name;
     ReliefKind relief;
     bool bezier_vertices;  // the vertex shader evaluates the patches (SurfacePart::evaluated false)
+    bool closed;           // SurfacePart::closed: back faces always culled
     Eigen::Vector4f colour = Eigen::Vector4f::Zero();
     bool colour_set = false;
     std::unique_ptr<ReliefMaterial> material;
@@ -69,6 +74,7 @@ class HumanVisual {
   std::shared_ptr<const EncodedNormalMap> skin_map_, cloth_map_;  // null until built
   bool visible_ = true;
   bool vertex_lit_ = false;
+  bool insides_hidden_ = false;
   std::unique_ptr<SkeletonVisual> skeleton_;
   bool skeleton_visible_ = false;
 };
