@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libboost-dev liburdfdom-dev liburdfdom-tools libtinyxml2-dev
   # ROS 1 (Debian's own packages)
   libroscpp-dev libroslib-dev librosconsole-dev libtf2-ros-dev libtf2-eigen-dev libtf2-msgs-dev
+  libtopic-tools-dev  # topic_tools::ShapeShifter: people messages of packages Debian lacks
   libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libstd-msgs-dev librosbag-dev
   pluginlib-dev librviz-dev rviz qtbase5-dev libgl-dev
   rosout rosbash python3-roslaunch python3-rostopic python3-rosnode python3-rosbag python3-rostest librostest-dev python3-rosgraph
