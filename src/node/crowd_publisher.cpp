@@ -1,5 +1,6 @@
 #include "crowd_publisher.h"
 
+#include <cctype>
 #include <cmath>
 
 #include <ros/package.h>
@@ -18,6 +19,17 @@ constexpr int kMaxCount = 1000;
 constexpr double kMaxRate = 1000.0;
 
 }  // namespace
+
+std::string framePrefixParameter(const Parameters& parameters) {
+  const std::string prefix = parameters.text("frame_prefix", "");
+  for (const char c : prefix) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') {
+      throw ParameterError("parameter " + parameters.fullName("frame_prefix") + " '" + prefix +
+                           "' may hold only letters, digits, '_' and '/' (it starts TF frame names)");
+    }
+  }
+  return prefix;
+}
 
 CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHandle& private_node) {
   const Parameters parameters(private_node);
@@ -38,6 +50,7 @@ CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHan
   s.world_frame = parameters.text("world_frame", s.world_frame);
   if (s.world_frame.empty()) throw ParameterError("parameter " + parameters.fullName("world_frame") + " is empty");
   s.skeleton_tf = parameters.boolean("skeleton_tf", s.skeleton_tf);
+  s.frame_prefix = framePrefixParameter(parameters);
   return s;
 }
 
@@ -61,25 +74,13 @@ CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_nod
   members_.reserve(walks.size());
   for (const CrowdWalk& walk : walks) addMember(walk, plain, urdf, motion, gait);
 
-  message_.header.frame_id = settings_.world_frame;
-  message_.humans.resize(members_.size());
-  for (std::size_t i = 0; i < members_.size(); ++i) {
-    Member& member = members_[i];
-    message_.humans[i].id = member.walk.id;
-    message_.humans[i].stature = static_cast<float>(member.stature);
-    message_.humans[i].joint_angles.resize(kDofCount);
-    const std::vector<geometry_msgs::TransformStamped> moving = movingTransforms(member.skeleton, settings_.world_frame);
-    if (settings_.skeleton_tf) {
-      transforms_.transforms.insert(transforms_.transforms.end(), moving.begin(), moving.end());
-    } else {
-      transforms_.transforms.push_back(moving.front());
-    }
+  output_ = std::make_unique<CrowdOutput>(node, settings_.skeleton_tf, settings_.frame_prefix);
+  for (const Member& member : members_) {
+    output_humans_.push_back({member.walk.id, member.stature, member.skeleton, member.angles, member.pose});
   }
-  crowd_publisher_ = node.advertise<dressed_human::Crowd>("crowd", 10);
-  tf_publisher_ = node.advertise<tf2_msgs::TFMessage>("/tf", 100);
   ROS_INFO("crowd_publisher: %zu humans (%s) at %.1f Hz on %s in %s; %s on /tf", members_.size(),
            settings_.crowd_file.empty() ? "default layout" : settings_.crowd_file.c_str(), settings_.rate,
-           crowd_publisher_.getTopic().c_str(), settings_.world_frame.c_str(),
+           output_->topic().c_str(), settings_.world_frame.c_str(),
            settings_.skeleton_tf ? "whole skeletons" : "root frames body_<id>");
 }
 
@@ -111,17 +112,6 @@ void CrowdPublisher::place() {
   }
 }
 
-void CrowdPublisher::publishStaticTransforms(const ros::Time& stamp) {
-  if (!settings_.skeleton_tf) return;
-  std::vector<geometry_msgs::TransformStamped> fixed;
-  for (const Member& member : members_) {
-    const std::vector<geometry_msgs::TransformStamped> bones =
-        fixedBoneTransforms(ForwardKinematics(member.skeleton, member.skeleton.bodyShape()), stamp);
-    fixed.insert(fixed.end(), bones.begin(), bones.end());
-  }
-  static_broadcaster_.sendTransform(fixed);
-}
-
 void CrowdPublisher::run() {
   runAtRate(settings_.rate, [this] { tick(); });
 }
@@ -131,30 +121,14 @@ void CrowdPublisher::tick() {
   double dt = 0.0;
   const TickClock::Tick tick = clock_.advance(now, dt);
   if (tick == TickClock::Tick::kNoTime) return;
-  if (tick == TickClock::Tick::kFirst) {
-    place();
-    publishStaticTransforms(now);
-  }
-  const std::size_t per_member = settings_.skeleton_tf ? 1 + kDofCount : 1;
-  for (std::size_t i = 0; i < members_.size(); ++i) {
-    Member& member = members_[i];
+  if (tick == TickClock::Tick::kFirst) place();
+  for (Member& member : members_) {
     member.walker->step(dt, member.angles, member.pose);
     if (member.walk.treadmill) {  // the ground under it moves back as far as it walked
       member.pose.root.translation.head<2>() += member.walk.route.waypoints.front() - member.walker->position();
     }
-    dressed_human::HumanState& state = message_.humans[i];
-    copyPose(member.pose.root, state.root);
-    for (std::size_t d = 0; d < kDofCount; ++d) state.joint_angles[d] = static_cast<float>(member.angles[d]);
-    geometry_msgs::TransformStamped* transforms = &transforms_.transforms[i * per_member];
-    copyTransform(member.pose.root, transforms[0].transform);
-    if (settings_.skeleton_tf) {
-      for (std::size_t d = 0; d < kDofCount; ++d) copyTransform(member.pose.dof_transforms[d], transforms[1 + d].transform);
-    }
   }
-  message_.header.stamp = now;
-  for (auto& transform : transforms_.transforms) transform.header.stamp = now;
-  crowd_publisher_.publish(message_);
-  tf_publisher_.publish(transforms_);
+  output_->publish(now, settings_.world_frame, output_humans_);
 }
 
 }  // namespace dressed_human

@@ -9,10 +9,8 @@
 #include <vector>
 
 #include <ros/ros.h>
-#include <tf2_msgs/TFMessage.h>
-#include <tf2_ros/static_transform_broadcaster.h>
 
-#include "dressed_human/Crowd.h"
+#include "crowd_output.h"
 #include "dressed_human/core/locomotion/walker.h"
 #include "dressed_human/core/model/crowd_walks.h"
 #include "tick_clock.h"
@@ -27,10 +25,15 @@ struct CrowdPublisherSettings {
   double rate = 30.0;          // Hz
   std::string world_frame = "world";
   bool skeleton_tf = false;    // every human's whole skeleton on /tf too
+  std::string frame_prefix;    // before every frame name but the world frame (CrowdOutput)
 
   // Reads the private parameters of `private_node`; throws ParameterError naming the bad one.
   static CrowdPublisherSettings fromParameters(const ros::NodeHandle& private_node);
 };
+
+class Parameters;
+// ~frame_prefix, checked: TF frame name characters only.
+std::string framePrefixParameter(const Parameters& parameters);
 
 class CrowdPublisher {
  public:
@@ -54,16 +57,11 @@ class CrowdPublisher {
                  const NormativeGait& gait);
   void place();
   void tick();
-  void publishStaticTransforms(const ros::Time& stamp);
 
   CrowdPublisherSettings settings_;
   std::vector<Member> members_;
-  dressed_human::Crowd message_;
-  // Per member its root, then (skeleton_tf) its 48 DOFs; names set once, filled in place.
-  tf2_msgs::TFMessage transforms_;
-  ros::Publisher crowd_publisher_;
-  ros::Publisher tf_publisher_;
-  tf2_ros::StaticTransformBroadcaster static_broadcaster_;
+  std::unique_ptr<CrowdOutput> output_;
+  std::vector<CrowdOutput::Human> output_humans_;
   TickClock clock_{"crowd_publisher", "every human starts again"};
 };
 

@@ -11,6 +11,10 @@ constexpr double kGravity = 9.81;
 constexpr double kIdleRate = 0.25;         // Hz
 constexpr double kIdleSway = 0.015;        // rad, the waist side to side
 constexpr double kIdleBreath = 0.008;      // rad, the torso forward and back
+// Of the slowest gait's speed: from here down to standing the steps shrink (and the cadence
+// stays); above it they keep the slowest gait's length and only the cadence drops.
+constexpr double kFullStrides = 0.12;
+constexpr double kStrideChange = 0.4;  // s from standing to full steps and back: about a step
 
 }  // namespace
 
@@ -21,10 +25,12 @@ Walker::Walker(const Skeleton& skeleton, const BodyShape& shape, SpeedGait gait,
   torso_ = static_cast<std::size_t>(skeleton.findJoint("torso")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kY);
 }
 
-void Walker::place(const Eigen::Vector2d& position, double heading, double phase) {
+void Walker::place(const Eigen::Vector2d& position, double heading, double phase, double speed) {
   position_ = position;
   heading_ = heading;
   phase_ = phase;
+  speed_ = std::clamp(speed, 0.0, WalkerSettings::kMaxSpeed);
+  stride_ = speed_ > 0.0 ? 1.0 : 0.0;
   feet_.reset(position);
 }
 
@@ -58,11 +64,20 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   const double wanted_lean = -settings_.lean * std::atan(speed_ * turn_rate_ / kGravity);
   lean_ += (wanted_lean - lean_) * (1.0 - std::exp(-dt / settings_.lean_time));
 
-  // Below the slowest gait the legs' range shrinks toward standing at that gait's cadence.
+  // Below the slowest gait a person takes the slowest gait's steps more slowly, which the planted
+  // feet turn into the speed; only near standing do the steps shrink too. (Shrinking the steps
+  // at the slowest gait's cadence carried the body backwards below 0.4 m/s: the swing foot,
+  // barely lifted, took over as the lowest point mid-swing.)
+  // The steps open and close over kStrideChange seconds, however fast the speed comes and goes:
+  // legs snapping together in one frame would move the body by half a step.
   walking_ = std::clamp(speed_ / gait_.slowestSpeed(), 0.0, 1.0);
-  if (walking_ > 0.0) phase_ = std::fmod(phase_ + dt * gait_.cycleRate(speed_), 1.0);
+  const double wanted_stride = std::clamp(walking_ / kFullStrides, 0.0, 1.0);
+  stride_ += std::clamp(wanted_stride - stride_, -dt / kStrideChange, dt / kStrideChange);
+  if (walking_ > 0.0 && stride_ > 0.0) {
+    phase_ = std::fmod(phase_ + dt * gait_.cycleRate(speed_) * std::min(1.0, walking_ / stride_), 1.0);
+  }
   Eigen::Quaterniond pelvis;
-  gait_.evaluate(phase_, speed_, walking_, angles, pelvis);
+  gait_.evaluate(phase_, speed_, stride_, angles, pelvis);
   idleSway(dt, angles);
 
   const Eigen::Quaterniond body = Eigen::AngleAxisd(heading_, Eigen::Vector3d::UnitZ()) *

@@ -27,8 +27,9 @@ class Walker {
   Walker(const Walker&) = delete;  // the leg IK refers to the kinematics
   Walker& operator=(const Walker&) = delete;
 
-  // Where the walk starts: the root's ground point, heading (rad) and gait phase (cycles).
-  void place(const Eigen::Vector2d& position, double heading, double phase = 0.0);
+  // Where the walk starts: the root's ground point, heading (rad), gait phase (cycles) and the
+  // speed it is already walking at (m/s; a person seen first in mid-walk).
+  void place(const Eigen::Vector2d& position, double heading, double phase = 0.0, double speed = 0.0);
   // Walks `route` (validated by the caller) at `cruise_speed` (m/s, 0 = stand where it is).
   void followRoute(Route route);
   void setCruiseSpeed(double speed) { cruise_speed_ = speed; }
@@ -67,6 +68,7 @@ class Walker {
   double lean_ = 0.0;
   double phase_ = 0.0;
   double walking_ = 0.0;
+  double stride_ = 0.0;  // of the gait's steps taken: 0 standing, 1 full steps (at a lower cadence below the slowest gait)
   double idle_time_ = 0.0;
   std::size_t waist_ = 0, torso_ = 0;  // angle indices of the idle sway
 };

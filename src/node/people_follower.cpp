@@ -1,0 +1,122 @@
+#include "people_follower.h"
+
+#include <cmath>
+
+#include "dressed_human/core/locomotion/normative_gait.h"
+#include "dressed_human/core/motion/motion_file.h"
+#include "parameters.h"
+#include "people_messages.h"
+
+namespace dressed_human {
+namespace {
+
+// Stamps further than this from the node's clock are not this clock's (bag time vs wall time).
+constexpr double kStampTrust = 5.0;
+
+}  // namespace
+
+PeopleFollower::PeopleFollower(ros::NodeHandle node, const CrowdPublisherSettings& settings, const std::string& topic,
+                               double smoothing)
+    : settings_(settings), topic_(node.resolveName(topic)),
+      skeleton_(Skeleton::fromUrdf(Parameters(node).requiredText("robot_description"))) {
+  if (!skeleton_.suffix().empty()) {
+    throw ParameterError("robot_description's frames carry the suffix '" + skeleton_.suffix() +
+                         "'; the people are named by their track ids: give the plain skeleton (urdf/human.urdf)");
+  }
+  const Motion motion = loadMotionFile(settings_.motion_file);
+  if (motion.body_shape) {
+    throw ParameterError("motion file " + settings_.motion_file +
+                         " was fitted to one person's body; give a motion without body_shape");
+  }
+  gait_ = std::make_unique<SpeedGait>(motion, loadNormativeGaitFile(settings_.gait_file), skeleton_,
+                                      skeleton_.bodyShape());
+  TrackedCrowdSettings crowd_settings;
+  crowd_settings.track.smoothing = smoothing;
+  crowd_ = std::make_unique<TrackedCrowd>(
+      [this](const std::string&, const WalkerSettings& walker) {
+        return std::make_unique<Walker>(skeleton_, skeleton_.bodyShape(), *gait_, walker);
+      },
+      crowd_settings);
+  frame_ = settings_.world_frame;
+  output_ = std::make_unique<CrowdOutput>(node, settings_.skeleton_tf, settings_.frame_prefix);
+  subscriber_ = node.subscribe<topic_tools::ShapeShifter>(topic_, 10, &PeopleFollower::receive, this);
+  ROS_INFO("crowd_publisher: the people of %s (%s) walking at %.1f Hz on %s; %s on /tf", topic_.c_str(),
+           supportedPeopleTypes().c_str(), settings_.rate, output_->topic().c_str(),
+           settings_.skeleton_tf ? "whole skeletons" : "root frames body_<id>");
+}
+
+void PeopleFollower::run() {
+  runAtRate(settings_.rate, [this] { tick(); });
+}
+
+double PeopleFollower::sightingTime(const ros::Time& stamp) {
+  const ros::Time now = ros::Time::now();
+  const bool trusted = !stamp.isZero() && std::abs((now - stamp).toSec()) <= kStampTrust;
+  if (!trusted && !receipt_times_) {
+    ROS_WARN("crowd_publisher: %s: message stamps %s; the people are placed at the times their messages come "
+             "instead (is /use_sim_time set for a bag?)",
+             topic_.c_str(),
+             stamp.isZero() ? "are zero" : ("are " + std::to_string((now - stamp).toSec()) + " s from now").c_str());
+  }
+  receipt_times_ = !trusted;
+  return (trusted ? stamp : now).toSec();
+}
+
+void PeopleFollower::receive(const topic_tools::ShapeShifter::ConstPtr& message) {
+  ObservedPeople people;
+  try {
+    people = decodePeople(*message, topic_);
+  } catch (const PeopleMessageError& error) {
+    if (error.what() != type_error_) ROS_ERROR("crowd_publisher: %s", error.what());
+    type_error_ = error.what();
+    return;
+  }
+  type_error_.clear();
+  if (people.frame_id.empty()) {
+    ROS_WARN_THROTTLE(10.0, "crowd_publisher: %s: a message without header.frame_id: its people taken to be in %s",
+                      topic_.c_str(), frame_.c_str());
+  } else if (people.frame_id != frame_) {
+    if (!crowd_->humans().empty()) {
+      ROS_WARN("crowd_publisher: %s: the people's frame changed from %s to %s", topic_.c_str(), frame_.c_str(),
+               people.frame_id.c_str());
+    }
+    frame_ = people.frame_id;
+  }
+  const double time = sightingTime(people.stamp);
+  std::vector<PersonSighting> sightings;
+  sightings.reserve(people.people.size());
+  for (const ObservedPerson& person : people.people) {
+    PersonSighting sighting;
+    sighting.id = person.id;
+    sighting.observation.time = time;
+    sighting.observation.position = person.position.head<2>();
+    sighting.observation.yaw = person.yaw;
+    sighting.observation.occluded = person.occluded;
+    if (!person.position.allFinite()) sighting.observation.position.x() = NAN;  // z too: named as not finite
+    sightings.push_back(sighting);
+  }
+  for (const std::string& warning : crowd_->observe(time, sightings)) {
+    ROS_WARN_THROTTLE(2.0, "crowd_publisher: %s: %s", topic_.c_str(), warning.c_str());
+  }
+}
+
+void PeopleFollower::tick() {
+  const ros::Time now = ros::Time::now();
+  double dt = 0.0;
+  const TickClock::Tick tick = clock_.advance(now, dt);
+  if (tick == TickClock::Tick::kNoTime) return;
+  crowd_->advance(now.toSec(), dt);
+  output_humans_.clear();
+  for (const auto& [id, human] : crowd_->humans()) {
+    if (!human.posed) continue;
+    auto suffixed = suffixed_.find(id);
+    if (suffixed == suffixed_.end()) suffixed = suffixed_.emplace(id, skeleton_.withSuffix("_" + id)).first;
+    output_humans_.push_back({suffixed->first, 1.0, suffixed->second, human.angles, human.pose});
+  }
+  for (auto it = suffixed_.begin(); it != suffixed_.end();) {
+    it = crowd_->humans().count(it->first) ? std::next(it) : suffixed_.erase(it);
+  }
+  output_->publish(now, frame_, output_humans_);
+}
+
+}  // namespace dressed_human
