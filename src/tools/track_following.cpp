@@ -137,6 +137,7 @@ void follow(const Scene& scene, const std::string& file, const std::map<std::str
       drawn_long += drawn_at.count(id);
     }
     if (drawn_at.count(id)) latest_appearance = std::max(latest_appearance, drawn_at[id] - first);
+    if (getenv("TRACE_LATE") && drawn_at.count(id) && drawn_at[id] - first > 0.6) std::fprintf(stderr, "late %s first %.2f drawn %.2f last %.2f\n", id.c_str(), first, drawn_at[id], last_seen[id]);
     if (left_at.count(id)) latest_leave = std::max(latest_leave, left_at[id] - last_seen[id]);
   }
   std::vector<double> slides;

@@ -140,7 +140,7 @@ TEST(TrackedCrowd, AWalkerTurnsACornerStopsAndStandsThenWalksOn) {
   };
   follow.run(10.5, 10.0, path);
   const TrackedCrowd::Human& standing = follow.crowd.humans().at("7");
-  EXPECT_LT(standing.walker->speed(), 0.05) << "standing where its track stands";
+  EXPECT_LT(standing.walker->speed(), TrackedCrowdSettings().standing_speed) << "standing where its track stands";
   EXPECT_LT((standing.walker->position() - Eigen::Vector2d(4.8, 4.8)).norm(), 0.15);
   follow.run(5.0, 10.0, path);
   EXPECT_GT(follow.crowd.humans().at("7").walker->speed(), 0.9) << "walking on";
@@ -159,7 +159,7 @@ TEST(TrackedCrowd, TracksComeAndGoAndBadSightingsAreNamed) {
   const auto step = [&](double from, double to) {
     for (double t = from; t < to; t += 0.1) crowd.advance(t, 0.1);
   };
-  // Both tracks at 10 Hz (a render delay of 0.3 s), then track 2 ends: absent from the messages.
+  // Both tracks at 10 Hz (the render delay: the smoothing window), then track 2 ends: absent from the messages.
   double t = 0.0;
   for (; t < 0.55; t += 0.1) {
     EXPECT_TRUE(crowd.observe(t, {{"1", at(t, 0.0, 0.0)}, {"2", at(t, 5.0, 0.0)}}).empty());
@@ -176,7 +176,7 @@ TEST(TrackedCrowd, TracksComeAndGoAndBadSightingsAreNamed) {
     crowd.observe(t, {{"1", at(t, 0.0, 0.0)}});
     crowd.advance(t, 0.1);
   }
-  EXPECT_NEAR(crowd.delay(), 0.3, 1e-9);
+  EXPECT_NEAR(crowd.delay(), PersonTrackSettings().smoothing, 1e-9);
   EXPECT_EQ(crowd.humans().count("2"), 0u);
   // Bad sightings are named and left out; the track they belong to keeps walking.
   TrackObservation broken = at(t, NAN, 0.0);

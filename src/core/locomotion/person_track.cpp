@@ -15,7 +15,8 @@ PersonTrack::Added PersonTrack::add(const TrackObservation& observation) {
     const Point heading = at(last.time);
     const Eigen::Vector2d expected = last.position + dt * heading.velocity;
     const double moved = (observation.position - last.position).norm();
-    if ((observation.position - expected).norm() > settings_.max_jump ||
+    // From a single sample there is no heading to expect it along: only the speed tells.
+    if ((samples_.size() > 1 && (observation.position - expected).norm() > settings_.max_jump) ||
         (moved > PersonTrackSettings::kMinJumpDistance && moved / dt > settings_.max_speed)) {
       samples_.clear();
       occluded_since_ = -1.0;

@@ -112,7 +112,8 @@ void TrackedCrowd::steer(Human& human, double render_time) {
   human.moving = steering_speed > (human.moving ? settings_.standing_speed : settings_.moving_speed);
   double heading_error = 0.0;
   if (human.moving) {
-    heading_error = angleBetween(std::atan2(wanted.y(), wanted.x()), walker.heading());
+    const Eigen::Vector2d aim = target.velocity + 0.6 * settings_.position_gain * off;
+    heading_error = angleBetween(std::atan2(aim.y(), aim.x()), walker.heading());
   } else if (target.yaw) {
     heading_error = angleBetween(*target.yaw, walker.heading());  // a standing person turns as the source says
   }

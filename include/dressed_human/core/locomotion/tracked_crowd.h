@@ -27,8 +27,10 @@ struct TrackedCrowdSettings {
   double moving_speed = 0.25;    // m/s: a track this fast turns its walker where it goes...
   double standing_speed = 0.15;  // m/s: ... until it is slower than this (hysteresis); slower, the
                                  // heading stays (a tracker's jitter does not spin a standing person)...
-  double catch_up = 0.5;         // m: ... unless the track is this far off
-  double position_gain = 1.5;    // 1/s: speed added toward the track per metre behind or ahead
+  double catch_up = 0.2;         // m: ... unless the track is this far off
+  double position_gain = 2.0;    // 1/s: speed added toward the track per metre behind or ahead
+  double heading_pull = 1.0;     // 1/s: the same for the heading, gentler: a person veers back onto
+                                 // a path over a second or so, not in a twitch
   double heading_gain = 4.0;     // 1/s: turn rate per radian off the wanted heading
   double occlusion_limit = 1.0;  // s an occluded track is walked on its prediction
   double silence_limit = 0.5;    // s past its newest sample (at the render time) before a silent track ends
