@@ -71,6 +71,8 @@ $PY bench/rviz_memory.py --markdown docs/rviz_memory.md
 rm -rf docs/crowd_scaling
 $PY bench/crowd_scaling.py --markdown docs/crowd_scaling.md --csv "$RESULTS/crowd_scaling.csv" \
   --chart docs/crowd_scaling.png --screenshots docs/crowd_scaling "${peer[@]}"
+$PY bench/track_following.py --tool "$BIN/track_following" --markdown docs/track_following.md \
+  --csv docs/track_following.csv --chart docs/track_following.png
 $PY bench/relief_modes.py --csv "$RESULTS/relief_modes.csv" --images docs/relief_modes --markdown docs/relief_modes.md
 rm -rf docs/relief_switch
 $PY bench/relief_switch.py --chart docs/relief_switch.png --images docs/relief_switch --markdown docs/relief_switch.md

@@ -7,7 +7,7 @@ Reads from RESULTS_DIR: bench_*.json (Google Benchmark, repetitions with aggrega
 scene_budget.csv (src/tools/scene_budget.cpp), relief_modes.csv (bench/relief_modes.py),
 rviz_scaling.csv (bench/rviz_scaling.py), machine.txt; from docs/:
 fourier_order_sweep_cmu_02_01.csv, tessellation_accuracy.csv, node_cpu.md, rviz_scaling.md,
-relief_modes.md, relief_flicker.md, skin_distance.md, rviz_memory.md, crowd_scaling.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
+relief_modes.md, relief_flicker.md, skin_distance.md, rviz_memory.md, crowd_scaling.md, track_following.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
 docs/skin_map_speed.png, docs/EVALUATION.md, and the README's "Speed" section (between its
 generated-section markers). A missing input is an error: the report is all measured or not
 written.
@@ -358,6 +358,7 @@ def main():
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")),
         rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
         crowd_scaling=read_text(os.path.join(DOCS, "crowd_scaling.md")),
+        track_following=read_text(os.path.join(DOCS, "track_following.md")),
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")),
         relief_flicker=read_text(os.path.join(DOCS, "relief_flicker.md")),
         skin_distance=read_text(os.path.join(DOCS, "skin_distance.md")),
@@ -557,6 +558,16 @@ per-human cost is counted against rviz drawing only its grid while that subject'
 Then rviz's resident memory over minutes with the shipped `crowd.launch count:=40`.
 
 {crowd_scaling}
+
+## People from elsewhere: walkers following recorded pedestrians
+
+![track following](track_following.png)
+
+`bench/track_following.py`: the shared Jülich recordings resampled at a tracker's rates, each
+person a walker following its track (`src/tools/track_following.cpp` runs the core's TrackedCrowd
+as `crowd_publisher ~people_topic` does), and the node's CPU following `trajectories.launch`.
+
+{track_following}
 
 "rviz CPU per human" is the whole rviz process (its thread, Ogre, and Mesa's software rasteriser
 on both cores) minus the empty scene, divided by the humans; "the display's own update" is what

@@ -111,13 +111,6 @@ void follow(const Scene& scene, const std::string& file, const std::map<std::str
       const Recorded& person = people.at(id);
       if (!person.covers(render)) continue;
       root_errors.push_back((human.walker->position() - person.at(render)).norm());
-      if (getenv("TRACE_ID") && id == getenv("TRACE_ID")) {
-        const PersonTrack::Point fitted = human.track.at(render);
-        std::fprintf(stderr, "%.2f walker %.3f %.3f h %.0f v %.2f | rec %.3f %.3f | fit %.3f %.3f v %.2f %.2f moving %d\n", now,
-                     human.walker->position().x(), human.walker->position().y(), human.walker->heading() * 57.3,
-                     human.walker->speed(), person.at(render).x(), person.at(render).y(), fitted.position.x(),
-                     fitted.position.y(), fitted.velocity.x(), fitted.velocity.y(), human.moving);
-      }
       const Eigen::Vector2d travel = person.at(render + kTravelWindow) - person.at(render - kTravelWindow);
       if (person.covers(render - kTravelWindow) && person.covers(render + kTravelWindow) &&
           travel.norm() > kWalkingSpeed * 2.0 * kTravelWindow) {
@@ -137,7 +130,6 @@ void follow(const Scene& scene, const std::string& file, const std::map<std::str
       drawn_long += drawn_at.count(id);
     }
     if (drawn_at.count(id)) latest_appearance = std::max(latest_appearance, drawn_at[id] - first);
-    if (getenv("TRACE_LATE") && drawn_at.count(id) && drawn_at[id] - first > 0.6) std::fprintf(stderr, "late %s first %.2f drawn %.2f last %.2f\n", id.c_str(), first, drawn_at[id], last_seen[id]);
     if (left_at.count(id)) latest_leave = std::max(latest_leave, left_at[id] - last_seen[id]);
   }
   std::vector<double> slides;
