@@ -12,12 +12,17 @@ namespace {
 
 // Stamps further than this from the node's clock are not this clock's (bag time vs wall time).
 constexpr double kStampTrust = 5.0;
+// s: each warning about a message's people is said at most this often (each bad track its own).
+constexpr double kWarningPeriod = 2.0;
+// s: while the topic has a type no people message has, the subscription is made again this often
+// so that the right type is taken when it comes.
+constexpr double kResubscribePeriod = 1.0;
 
 }  // namespace
 
 PeopleFollower::PeopleFollower(ros::NodeHandle node, const CrowdPublisherSettings& settings, const std::string& topic,
                                double smoothing)
-    : settings_(settings), topic_(node.resolveName(topic)),
+    : node_(node), settings_(settings), topic_(node.resolveName(topic)),
       skeleton_(Skeleton::fromUrdf(Parameters(node).requiredText("robot_description"))) {
   if (!skeleton_.suffix().empty()) {
     throw ParameterError("robot_description's frames carry the suffix '" + skeleton_.suffix() +
@@ -39,10 +44,16 @@ PeopleFollower::PeopleFollower(ros::NodeHandle node, const CrowdPublisherSetting
       crowd_settings);
   frame_ = settings_.world_frame;
   output_ = std::make_unique<CrowdOutput>(node, settings_.skeleton_tf, settings_.frame_prefix);
-  subscriber_ = node.subscribe<topic_tools::ShapeShifter>(topic_, 10, &PeopleFollower::receive, this);
+  subscribe();
   ROS_INFO("crowd_publisher: the people of %s (%s) walking at %.1f Hz on %s; %s on /tf", topic_.c_str(),
            supportedPeopleTypes().c_str(), settings_.rate, output_->topic().c_str(),
            settings_.skeleton_tf ? "whole skeletons" : "root frames body_<id>");
+}
+
+void PeopleFollower::subscribe() {
+  subscriber_.shutdown();  // first: a second subscriber would join the subscription of the old type
+  subscriber_ = node_.subscribe<topic_tools::ShapeShifter>(topic_, 10, &PeopleFollower::receive, this);
+  subscribed_ = ros::WallTime::now();
 }
 
 void PeopleFollower::run() {
@@ -69,9 +80,11 @@ void PeopleFollower::receive(const topic_tools::ShapeShifter::ConstPtr& message)
   } catch (const PeopleMessageError& error) {
     if (error.what() != type_error_) ROS_ERROR("crowd_publisher: %s", error.what());
     type_error_ = error.what();
+    if (!peopleLayoutOf(message->getMD5Sum())) unknown_type_ = true;
     return;
   }
   type_error_.clear();
+  unknown_type_ = false;
   if (people.frame_id.empty()) {
     ROS_WARN_THROTTLE(10.0, "crowd_publisher: %s: a message without header.frame_id: its people taken to be in %s",
                       topic_.c_str(), frame_.c_str());
@@ -95,12 +108,19 @@ void PeopleFollower::receive(const topic_tools::ShapeShifter::ConstPtr& message)
     if (!person.position.allFinite()) sighting.observation.position.x() = NAN;  // z too: named as not finite
     sightings.push_back(sighting);
   }
+  // Not ROS_WARN_THROTTLE: that keeps one time per line of code, so the first warning of a
+  // message would silence the others (a duplicate id after a NaN, the time going back).
+  const ros::WallTime wall = ros::WallTime::now();
+  for (auto it = warned_.begin(); it != warned_.end();) {
+    it = (wall - it->second).toSec() >= kWarningPeriod ? warned_.erase(it) : std::next(it);
+  }
   for (const std::string& warning : crowd_->observe(time, sightings)) {
-    ROS_WARN_THROTTLE(2.0, "crowd_publisher: %s: %s", topic_.c_str(), warning.c_str());
+    if (warned_.emplace(warning, wall).second) ROS_WARN("crowd_publisher: %s: %s", topic_.c_str(), warning.c_str());
   }
 }
 
 void PeopleFollower::tick() {
+  if (unknown_type_ && (ros::WallTime::now() - subscribed_).toSec() >= kResubscribePeriod) subscribe();
   const ros::Time now = ros::Time::now();
   double dt = 0.0;
   const TickClock::Tick tick = clock_.advance(now, dt);

@@ -37,6 +37,11 @@ class PeopleFollower {
   // far from this node's clock (a bag played without /use_sim_time), said once.
   double sightingTime(const ros::Time& stamp);
 
+  // Subscribes to the topic (again: roscpp keeps the md5sum of the first type a ShapeShifter
+  // subscription took, and refuses every other type from then on).
+  void subscribe();
+
+  ros::NodeHandle node_;
   CrowdPublisherSettings settings_;
   std::string topic_;
   Skeleton skeleton_;  // the robot description's, plain
@@ -47,6 +52,9 @@ class PeopleFollower {
   std::vector<CrowdOutput::Human> output_humans_;
   std::string frame_;  // of the newest message
   std::string type_error_;  // the last unknown type reported
+  bool unknown_type_ = false;  // a message of an unknown type came, none of a people type since
+  ros::WallTime subscribed_;
+  std::map<std::string, ros::WallTime> warned_;  // each bad sighting's warning, when last said
   bool receipt_times_ = false;
   ros::Subscriber subscriber_;
   TickClock clock_{"crowd_publisher", "every person's human starts again"};
