@@ -10,8 +10,10 @@
 namespace dressed_human {
 namespace {
 
-// Stamps further than this from the node's clock are not this clock's (bag time vs wall time).
-constexpr double kStampTrust = 5.0;
+// Stamps further than this from the node's clock are said to be another clock's.
+constexpr double kStampTrust = 0.5;
+// s: a lag growing by more than this at once is a new clock (a source restarted), not a late message.
+constexpr double kLagJump = 1.0;
 // s: each warning about a message's people is said at most this often (each bad track its own).
 constexpr double kWarningPeriod = 2.0;
 // s: while the topic has a type no people message has, the subscription is made again this often
@@ -62,15 +64,33 @@ void PeopleFollower::run() {
 
 double PeopleFollower::sightingTime(const ros::Time& stamp) {
   const ros::Time now = ros::Time::now();
-  const bool trusted = !stamp.isZero() && std::abs((now - stamp).toSec()) <= kStampTrust;
-  if (!trusted && !receipt_times_) {
-    ROS_WARN("crowd_publisher: %s: message stamps %s; the people are placed at the times their messages come "
-             "instead (is /use_sim_time set for a bag?)",
-             topic_.c_str(),
-             stamp.isZero() ? "are zero" : ("are " + std::to_string((now - stamp).toSec()) + " s from now").c_str());
+  if (stamp.isZero()) {
+    if (!zero_stamps_) {
+      ROS_WARN("crowd_publisher: %s: message stamps are zero: the people are placed at the times their messages "
+               "come", topic_.c_str());
+    }
+    zero_stamps_ = true;
+    clock_offset_ = 0.0;
+    return now.toSec();
   }
-  receipt_times_ = !trusted;
-  return (trusted ? stamp : now).toSec();
+  zero_stamps_ = false;
+  // The people walk on the stamps' clock (when each sample was measured, stamps going back start
+  // every human over); this node's clock maps onto it by the smallest lag seen, the transport's,
+  // so that a source whose clock differs (a bag played without /use_sim_time, a tracker stamping
+  // late) still places its people instead of leaving them silent behind the render time.
+  const double lag = (now - stamp).toSec();
+  const bool went_back = last_stamp_ && stamp < *last_stamp_;
+  if (!clock_offset_ || went_back || lag < *clock_offset_ || lag > *clock_offset_ + kLagJump) {
+    const bool report = (!clock_offset_ || went_back || lag > *clock_offset_ + kLagJump) && std::abs(lag) > kStampTrust;
+    clock_offset_ = lag;
+    if (report) {
+      ROS_WARN("crowd_publisher: %s: message stamps are %.1f s %s this node's clock (a bag without /use_sim_time, "
+               "or the source's own clock): the people walk on the stamps' clock, shown that much later",
+               topic_.c_str(), std::abs(lag), lag > 0.0 ? "behind" : "ahead of");
+    }
+  }
+  last_stamp_ = stamp;
+  return stamp.toSec();
 }
 
 void PeopleFollower::receive(const topic_tools::ShapeShifter::ConstPtr& message) {
@@ -125,7 +145,7 @@ void PeopleFollower::tick() {
   double dt = 0.0;
   const TickClock::Tick tick = clock_.advance(now, dt);
   if (tick == TickClock::Tick::kNoTime) return;
-  crowd_->advance(now.toSec(), dt);
+  crowd_->advance(now.toSec() - clock_offset_.value_or(0.0), dt);
   output_humans_.clear();
   for (const auto& [id, human] : crowd_->humans()) {
     if (!human.posed) continue;

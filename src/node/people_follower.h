@@ -33,8 +33,8 @@ class PeopleFollower {
  private:
   void receive(const topic_tools::ShapeShifter::ConstPtr& message);
   void tick();
-  // The time a message's people were seen at: its stamp, or when it came if the stamp is unset or
-  // far from this node's clock (a bag played without /use_sim_time), said once.
+  // The time a message's people were seen at: its stamp (and this node's clock mapped onto the
+  // stamps' by the smallest lag seen, said when large), or when it came if the stamp is zero.
   double sightingTime(const ros::Time& stamp);
 
   // Subscribes to the topic (again: roscpp keeps the md5sum of the first type a ShapeShifter
@@ -55,7 +55,9 @@ class PeopleFollower {
   bool unknown_type_ = false;  // a message of an unknown type came, none of a people type since
   ros::WallTime subscribed_;
   std::map<std::string, ros::WallTime> warned_;  // each bad sighting's warning, when last said
-  bool receipt_times_ = false;
+  std::optional<double> clock_offset_;  // s: this node's clock less the stamps'
+  std::optional<ros::Time> last_stamp_;
+  bool zero_stamps_ = false;
   ros::Subscriber subscriber_;
   TickClock clock_{"crowd_publisher", "every person's human starts again"};
 };
