@@ -14,37 +14,17 @@ tracked_persons_tracker.yaml is filled the way spencer's tracker and mocks fill 
 Usage: /usr/bin/python3 scripts/make_people_message_fixtures.py   (genmsg and genpy: Debian's
 python3-genmsg, python3-genpy)
 """
-import functools
 import io
 import math
 import os
 import sys
 
-import genmsg
-import genmsg.gentools
-import genmsg.msg_loader
-import genpy.dynamic
+from people_layouts import message_classes, name_id
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 OUTPUT = os.path.join(ROOT, "test", "data", "people_messages")
-SEARCH_PATH = {
-    "std_msgs": ["/usr/share/std_msgs/msg"],
-    "geometry_msgs": ["/usr/share/geometry_msgs/msg"],
-    "spencer_tracking_msgs": [os.path.join(ROOT, "msg_layouts", "spencer_tracking_msgs")],
-    "pedsim_msgs": [os.path.join(ROOT, "msg_layouts", "pedsim_msgs")],
-    "people_msgs": [os.path.join(ROOT, "msg_layouts", "people_msgs")],
-}
 UNKNOWN_VARIANCE = 99999.0  # spencer's mark of a value its tracker does not estimate
 STAMP = (1700000000, 123456789)
-
-
-@functools.lru_cache(maxsize=None)
-def message_classes(message_type):
-    """genpy's classes for message_type and every type it contains, by type name."""
-    context = genmsg.MsgContext.create_default()
-    spec = genmsg.msg_loader.load_msg_by_type(context, message_type, SEARCH_PATH)
-    genmsg.msg_loader.load_depends(context, spec, SEARCH_PATH)
-    return genpy.dynamic.generate_dynamic(message_type, genmsg.gentools.compute_full_text(context, spec))
 
 
 def yaw_quaternion(orientation, yaw, scale=1.0):
@@ -55,19 +35,6 @@ def yaw_quaternion(orientation, yaw, scale=1.0):
 def fill_header(header, frame_id):
     header.stamp.secs, header.stamp.nsecs = STAMP
     header.frame_id = frame_id
-
-
-def name_id(name):
-    """peopleNameId, written again here as the test's expectation: the letters and digits, and
-    where that changed the name (or it ends like a hash), 'x' and 32-bit FNV-1a of it in hex."""
-    kept = "".join(c for c in name if c.isascii() and c.isalnum())
-    looks_hashed = len(kept) >= 9 and kept[-9] == "x" and all(c in "0123456789abcdef" for c in kept[-8:])
-    if kept and kept == name and not looks_hashed:
-        return kept
-    value = 0x811C9DC5
-    for byte in name.encode("utf-8"):
-        value = ((value ^ byte) * 0x01000193) & 0xFFFFFFFF
-    return "%sx%08x" % (kept, value)
 
 
 # ---------------------------------------------------------------- TrackedPersons

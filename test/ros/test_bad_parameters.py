@@ -8,16 +8,10 @@ import roslib.packages
 import rosparam
 import rospkg
 import rostest
+from node_runs import run_node
 
 PACKAGE = rospkg.RosPack().get_path("dressed_human")
 BAD_MOTION = os.path.join(PACKAGE, "test", "data", "bad_motions", "coefficient_nan.yaml")
-
-
-def run_node(*arguments):
-    executable = roslib.packages.find_node("dressed_human", "skeleton_publisher")[0]
-    result = subprocess.run([executable] + list(arguments), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            timeout=30, universal_newlines=True)
-    return result.returncode, result.stdout
 
 
 class BadParametersTest(unittest.TestCase):
@@ -26,7 +20,7 @@ class BadParametersTest(unittest.TestCase):
         # parameter server, and must not leak into the next case.
         node_name = "publisher_" + self.id().split(".")[-1]
         expected = expected.replace("{node}", node_name)
-        code, output = run_node("__name:=" + node_name, *arguments)
+        code, output = run_node("skeleton_publisher", "__name:=" + node_name, *arguments)
         self.assertNotEqual(code, 0, "skeleton_publisher accepted %s:\n%s" % (arguments, output))
         self.assertIn("FATAL", output)
         self.assertIn(expected, output)

@@ -11,20 +11,13 @@ import time
 import unittest
 
 import rosbag
-import roslib.packages
 import rospy
 import rostest
 import tf2_ros
 from dressed_human.msg import Crowd
+from node_runs import run_node
 
 COUNT = 5
-
-
-def run_node(*arguments):
-    executable = roslib.packages.find_node("dressed_human", "crowd_publisher")[0]
-    result = subprocess.run([executable] + list(arguments), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            timeout=30, universal_newlines=True)
-    return result.returncode, result.stdout
 
 
 class CrowdPublisherTest(unittest.TestCase):
@@ -91,7 +84,7 @@ class CrowdPublisherTest(unittest.TestCase):
 
     def assertRejected(self, expected, *arguments):
         node_name = "crowd_" + self.id().split(".")[-1]
-        code, output = run_node("__name:=" + node_name, *arguments)
+        code, output = run_node("crowd_publisher", "__name:=" + node_name, *arguments)
         self.assertNotEqual(code, 0, "crowd_publisher accepted %s:\n%s" % (arguments, output))
         self.assertIn("FATAL", output)
         self.assertIn(expected.replace("{node}", node_name), output)

@@ -22,18 +22,13 @@ at 10 Hz for 7 s, and checks over TF (a tf2_ros buffer holding the whole run), e
   (std_msgs/String on the topic, then the right type again);
 - every node is alive at the end.
 """
-import functools
 import math
 import os
 import re
-import threading
+import sys
 import time
 import unittest
 
-import genmsg
-import genmsg.gentools
-import genmsg.msg_loader
-import genpy.dynamic
 import rosnode
 import rospkg
 import rospy
@@ -45,16 +40,8 @@ from rosgraph_msgs.msg import Log
 from std_msgs.msg import String
 
 PACKAGE = rospkg.RosPack().get_path("dressed_human")
-LAYOUTS = os.path.join(PACKAGE, "msg_layouts")
-# pedsim_msgs/TrackedPersons.msg and TrackedPerson.msg are spencer's byte for byte
-# (msg_layouts/README.md): found for pedsim_msgs in spencer's directory.
-SEARCH_PATH = {
-    "std_msgs": ["/usr/share/std_msgs/msg"],
-    "geometry_msgs": ["/usr/share/geometry_msgs/msg"],
-    "spencer_tracking_msgs": [os.path.join(LAYOUTS, "spencer_tracking_msgs")],
-    "pedsim_msgs": [os.path.join(LAYOUTS, "pedsim_msgs"), os.path.join(LAYOUTS, "spencer_tracking_msgs")],
-    "people_msgs": [os.path.join(LAYOUTS, "people_msgs")],
-}
+sys.path.insert(0, os.path.join(PACKAGE, "scripts"))
+from people_layouts import message_classes, name_id  # noqa: E402
 MD5 = {  # msg_layouts/README.md
     "spencer_tracking_msgs/TrackedPersons": "21c0b1a57c4933e68f39aa3802861828",
     "pedsim_msgs/TrackedPersons": "21c0b1a57c4933e68f39aa3802861828",
@@ -77,29 +64,6 @@ SETTLE = 1.0          # s after a track starts before its human must be on it
 LEAVE_LIMIT = 1.5     # s after the last sample of a person
 WALKED_TO_END_SLACK = 0.25  # s: a human leaves once walked to its last sample (the render delay; silent:
                             # 0.5 s later)
-
-
-@functools.lru_cache(maxsize=None)
-def message_classes(message_type):
-    """genpy's classes for message_type and every type it holds, by name (as
-    scripts/make_people_message_fixtures.py makes them)."""
-    context = genmsg.MsgContext.create_default()
-    spec = genmsg.msg_loader.load_msg_by_type(context, message_type, SEARCH_PATH)
-    genmsg.msg_loader.load_depends(context, spec, SEARCH_PATH)
-    return genpy.dynamic.generate_dynamic(message_type, genmsg.gentools.compute_full_text(context, spec))
-
-
-def name_id(name):
-    """peopleNameId (src/node/people_messages.cpp) written again: the letters and digits, and where
-    that changed the name (or it ends like a hash), 'x' and its 32-bit FNV-1a in hex."""
-    kept = "".join(c for c in name if c.isascii() and c.isalnum())
-    looks_hashed = len(kept) >= 9 and kept[-9] == "x" and all(c in "0123456789abcdef" for c in kept[-8:])
-    if kept and kept == name and not looks_hashed:
-        return kept
-    value = 0x811C9DC5
-    for byte in name.encode("utf-8"):
-        value = ((value ^ byte) * 0x01000193) & 0xFFFFFFFF
-    return "%sx%08x" % (kept, value)
 
 
 class Walk:

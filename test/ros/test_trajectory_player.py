@@ -18,6 +18,7 @@ import roslib.packages
 import rospkg
 import rospy
 import rostest
+from node_runs import run_node
 
 TYPE = "spencer_tracking_msgs/TrackedPersons"
 MD5 = "21c0b1a57c4933e68f39aa3802861828"
@@ -83,13 +84,6 @@ def collect(topic, seconds=None, count=None):
             time.sleep(0.05)
     subscriber.unregister()
     return list(messages)
-
-
-def run_node(*arguments):
-    executable = roslib.packages.find_node("dressed_human", "trajectory_player")[0]
-    result = subprocess.run([executable] + list(arguments), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            timeout=30, universal_newlines=True)
-    return result.returncode, result.stdout
 
 
 class TrajectoryPlayerTest(unittest.TestCase):
@@ -168,7 +162,7 @@ class TrajectoryPlayerTest(unittest.TestCase):
 
     def assertRejected(self, expected, *arguments):
         node_name = "player_" + self.id().split(".")[-1]
-        code, output = run_node("__name:=" + node_name, *arguments)
+        code, output = run_node("trajectory_player", "__name:=" + node_name, *arguments)
         self.assertNotEqual(code, 0, "trajectory_player accepted %s:\n%s" % (arguments, output))
         self.assertIn("FATAL", output)
         self.assertIn(expected.replace("{node}", node_name), output)
