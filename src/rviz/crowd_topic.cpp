@@ -149,13 +149,20 @@ void CrowdTopic::take(const Crowd& message, rviz::FrameManager& frames, std::vec
     if (!human.track->empty() && sample.time < human.track->newest().time - kTimeJumpSeconds) human.track->clear();
     human.track->add(sample);
   }
+  // A crowd message holds the whole crowd: whoever it leaves out has left (CrowdTopic::takeLeft).
+  for (auto& [id, human] : humans_) human.absent = seen.count(id) == 0;
 }
 
 std::vector<std::string> CrowdTopic::takeLeft() {
   std::vector<std::string> left;
   const ros::WallTime now = ros::WallTime::now();
   for (auto human = humans_.begin(); human != humans_.end();) {
-    if ((now - human->second.last_seen).toSec() > kTimeoutSeconds) {
+    // Left out of the newest message: gone once its last pose has been drawn (the render delay
+    // after it), not frozen for the timeout. Silent (no messages at all): after the timeout.
+    const PoseTrack& track = *human->second.track;
+    const bool walked_out = human->second.absent &&
+                            (track.empty() || ros::Time::now().toSec() - track.renderDelay() >= track.newest().time);
+    if (walked_out || (now - human->second.last_seen).toSec() > kTimeoutSeconds) {
       left.push_back(human->first);
       human = humans_.erase(human);
     } else {

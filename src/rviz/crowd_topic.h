@@ -25,7 +25,8 @@ class DisplayStatus;
 
 class CrowdTopic {
  public:
-  // A human absent from the messages this long leaves the display.
+  // A human left out of a message leaves once its last pose is drawn; one whose messages stop
+  // altogether (the topic silent) leaves after this long.
   static constexpr double kTimeoutSeconds = 1.0;
 
   // Subscribes to `topic` ("": none) on `node` (the display's update queue: messages arrive in
@@ -42,7 +43,8 @@ class CrowdTopic {
   // The messages received since the last call into the tracks (roots into the fixed frame),
   // reporting what is refused; the humans seen for the first time.
   std::vector<NewHuman> takeMessages(rviz::FrameManager& frames, DisplayStatus& status);
-  // The humans absent from the messages for kTimeoutSeconds, forgotten here.
+  // The humans that left (left out of the newest message and drawn to their last pose, or
+  // absent for kTimeoutSeconds), forgotten here.
   std::vector<std::string> takeLeft();
   std::shared_ptr<const PoseTrack> track(const std::string& id) const;
   std::size_t humanCount() const { return humans_.size(); }
@@ -57,6 +59,7 @@ class CrowdTopic {
   struct Human {
     std::shared_ptr<PoseTrack> track;
     ros::WallTime last_seen;
+    bool absent = false;  // left out of the newest message
   };
   std::map<std::string, Human> humans_;
   std::deque<Crowd::ConstPtr> inbox_;

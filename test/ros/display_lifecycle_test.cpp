@@ -504,8 +504,9 @@ TEST_F(DisplayLifecycleTest, CrowdHumansComeAndGoWithoutGrowth) {
   display_->subProp("Humans")->setValue("Robot Description");
 }
 
-// "Humans: From Topic": humans come with the crowd message, leave a second after they are no
-// longer in it, and a bad human or message is refused and named while the others stay drawn.
+// "Humans: From Topic": humans come with the crowd message, leave once drawn to their last pose
+// when a message leaves them out (a second after the topic falls silent), and a bad human or
+// message is refused and named while the others stay drawn.
 TEST_F(DisplayLifecycleTest, CrowdTopicHumansComeGoAndBadMessagesAreNamed) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
   ros::NodeHandle node;
@@ -553,9 +554,10 @@ TEST_F(DisplayLifecycleTest, CrowdTopicHumansComeGoAndBadMessagesAreNamed) {
   const ros::WallTime dropped = last_sent;  // the last message with human 4
   ASSERT_TRUE(runUntil(one, 5.0, [&] { return says("Humans", "1 from") && says("Surfaces", "1 humans"); }))
       << "human 4 left the messages but stayed:\n" << allStatuses();
+  // Left out of the crowd message: gone once its last pose is drawn (the render delay, at most
+  // 0.5 s), not frozen for the silent topic's timeout.
   const double left_after = (ros::WallTime::now() - dropped).toSec();
-  EXPECT_GE(left_after, 0.9) << "human 4 left before its second was up";
-  EXPECT_LE(left_after, 1.5) << "human 4 stayed more than a second after its last message";
+  EXPECT_LE(left_after, 0.5 + 0.2) << "human 4 stayed, frozen, after the message left it out";
   EXPECT_EQ(status("Model body_4"), nullptr);
 
   // Each bad message: the status names the human and what is wrong; human 3 stays drawn.
@@ -583,6 +585,14 @@ TEST_F(DisplayLifecycleTest, CrowdTopicHumansComeGoAndBadMessagesAreNamed) {
   ASSERT_TRUE(runUntil(one, 5.0, [&] { return status("Crowd Message") == nullptr; }))
       << "a clean message did not clear the error:\n" << allStatuses();
   EXPECT_TRUE(says("Surfaces", "1 humans")) << allStatuses();
+  // The topic falls silent: its humans stay for the timeout (a late message is no departure),
+  // then leave.
+  const ros::WallTime silent = last_sent;
+  const ros::WallTime deadline = silent + ros::WallDuration(3.0);
+  while (!says("Humans", "0 from") && ros::WallTime::now() < deadline) frame();
+  const double silent_for = (ros::WallTime::now() - silent).toSec();
+  EXPECT_GE(silent_for, 0.9) << "human 3 left before the silent topic's second was up";
+  EXPECT_LE(silent_for, 1.5) << "human 3 stayed more than a second after the topic fell silent:\n" << allStatuses();
   display_->subProp("Humans")->setValue("Robot Description");
   frames(5);
   EXPECT_EQ(status("Topic"), nullptr) << "the topic's status outlived From Topic";
