@@ -66,7 +66,8 @@ TEST_P(StraightWalk, FeetStayPlantedAndTheTravelComesFromThem) {
   EXPECT_NEAR(travelled / 10.0, speed, 0.1 * speed);
   (void)walked;
 }
-INSTANTIATE_TEST_SUITE_P(Speeds, StraightWalk, ::testing::Values(0.6, 1.2, 1.8));
+// 0.2 and 0.35: below the slowest gait (0.5 m/s), slower steps; 2.4: above the fastest, quicker ones.
+INSTANTIATE_TEST_SUITE_P(Speeds, StraightWalk, ::testing::Values(0.2, 0.35, 0.6, 1.2, 1.8, 2.4));
 
 // A 90 degree corner of an open route: planted through the turn, the heading turns at most at
 // the bounded rate, the corner is passed within 0.3 m and the walk ends standing at the end.
