@@ -1,8 +1,9 @@
 #!/bin/sh
 # Builds the libFuzzer targets of the file parsers (motion capture BVH and .mot, OpenSim models,
-# motion YAML, body YAML) with clang (outside the CMake build) and runs each for the given number of seconds.
+# motion YAML, body YAML, pedestrian trajectories) with clang (outside the CMake build) and runs each for the given number of seconds.
 #   fuzz/run_fuzzers.sh [seconds=60] [build-dir=build_fuzz]
-# Seeds: data/motion/*.bvh|mot, fuzz/seeds/*.osim (a leg of gait2392), config/motions/*.yaml, config/bodies/*.yaml and fuzz/seeds/;
+# Seeds: data/motion/*.bvh|mot, fuzz/seeds/*.osim (a leg of gait2392), config/motions/*.yaml, config/bodies/*.yaml and fuzz/seeds/
+# (*.trajectories: an options byte, then a Jülich or obsmat file);
 # inputs are capped at 16 KB (large ones only slow the mutations down; the shipped walk is 13 KB).
 # Crashes land in <build-dir>/<target>/crash-*; the script exits non-zero when a target fails.
 # Needs clang++ (apt-get install clang).
@@ -36,6 +37,7 @@ skeleton="skeleton/body_description.cpp skeleton/skeleton.cpp skeleton/forward_k
   build_target fuzz_body_yaml $skeleton \
     surfaces/skin.cpp surfaces/bezier_patch.cpp surfaces/tessellation.cpp surfaces/tessellation_error.cpp \
     io/text_file.cpp -lyaml-cpp -lurdfdom_model -ltinyxml2
+  build_target fuzz_pedestrian_trajectories io/pedestrian_trajectories.cpp model/recorded_crowd.cpp io/text_file.cpp
 ) & second=$!
 built=0
 wait $first || built=1
@@ -55,7 +57,7 @@ run_target() {  # name, seed files...
   return $status
 }
 failed=0
-for target in fuzz_bvh_parser fuzz_mot_parser fuzz_opensim_model fuzz_motion_yaml fuzz_body_yaml; do mkdir -p "$build/$target"; done
+for target in fuzz_bvh_parser fuzz_mot_parser fuzz_opensim_model fuzz_motion_yaml fuzz_body_yaml fuzz_pedestrian_trajectories; do mkdir -p "$build/$target"; done
 (
   status=0
   run_target fuzz_bvh_parser "$here"/data/motion/*.bvh "$here"/fuzz/seeds/*.bvh || status=1
@@ -67,6 +69,7 @@ for target in fuzz_bvh_parser fuzz_mot_parser fuzz_opensim_model fuzz_motion_yam
   status=0
   run_target fuzz_motion_yaml "$here"/config/motions/*.yaml || status=1
   run_target fuzz_body_yaml "$here"/config/bodies/*.yaml || status=1
+  run_target fuzz_pedestrian_trajectories "$here"/fuzz/seeds/*.trajectories || status=1
   exit $status
 ) & second=$!
 wait $first || failed=1
