@@ -178,6 +178,17 @@ TEST(TrackedCrowd, TracksComeAndGoAndBadSightingsAreNamed) {
   }
   EXPECT_NEAR(crowd.delay(), PersonTrackSettings().smoothing, 1e-9);
   EXPECT_EQ(crowd.humans().count("2"), 0u);
+  // Missed in one message and back in the next, before its human left: the same walker goes on.
+  const Walker* walker = crowd.humans().at("1").walker.get();
+  crowd.observe(t, {});
+  crowd.advance(t, 0.1);
+  t += 0.1;
+  crowd.observe(t, {{"1", at(t, 0.0, 0.0)}});
+  crowd.advance(t, 0.1);
+  t += 0.1;
+  ASSERT_EQ(crowd.humans().count("1"), 1u);
+  EXPECT_EQ(crowd.humans().at("1").walker.get(), walker) << "a track missed once started a new walker";
+  EXPECT_FALSE(crowd.humans().at("1").ended);
   // Bad sightings are named and left out; the track they belong to keeps walking.
   TrackObservation broken = at(t, NAN, 0.0);
   const std::vector<std::string> warnings =

@@ -42,11 +42,14 @@ std::vector<std::string> TrackedCrowd::observe(double time, const std::vector<Pe
       continue;
     }
     auto found = humans_.find(person.id);
-    const bool known = found != humans_.end() && !found->second.ended;
-    if (!known && person.observation.occluded) continue;
-    if (!known) {
-      // A track that ended and comes back is a new walker (its human may have left already).
-      if (found != humans_.end()) humans_.erase(found);
+    if (found != humans_.end() && found->second.ended) {
+      // Back before its human has left (a tracker that missed it in a message or two): it walks
+      // on; only a prediction (occluded) does not bring it back.
+      if (person.observation.occluded) continue;
+      found->second.ended = false;
+    }
+    if (found == humans_.end()) {
+      if (person.observation.occluded) continue;
       Human human{PersonTrack(settings_.track), make_walker_(person.id, walkerSettings()), {}, {}};
       found = humans_.emplace(person.id, std::move(human)).first;
     }
