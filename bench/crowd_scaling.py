@@ -11,7 +11,7 @@ Scene points (bench/rviz_display_scaling.cpp does the rviz side): the humans wal
 the camera --points' distance from the middle of the nearest row (pitched 0.25 rad for one row,
 0.7 rad for more, as bench/rviz_scaling.py's views), every other row farther off. Each point saves
 a screenshot when its measurement starts and one when it ends and fails unless every one of its
-N figures is drawn in both: at least MIN_BOX_SHARE of the box its place projects to (0.6 m wide
+N figures is drawn in both (rviz_scaling.drawn): at least MIN_BOX_SHARE of the box its place projects to (0.6 m wide
 across the row, where neighbours stand 1 m apart; rows far enough apart that no box overlaps the
 next row's on screen) covered by figure pixels. rviz CPU per human
 per frame = (rviz CPU per frame - rviz drawing only its grid while the same publisher runs) / N,
@@ -37,22 +37,17 @@ import tempfile
 import time
 
 import numpy
-from PIL import Image
 
 import rviz_scaling as rs
 from ros_processes import report, ros_environment, start, stop
 
 sys.path.insert(0, os.path.join(rs.ROOT, "test", "ros"))
-from on_screen import OrbitView, figure_mask  # noqa: E402
+from on_screen import OrbitView  # noqa: E402
 
 OURS = ("DressedHuman from one crowd message", "dressed_human/DressedHuman",
         ["--set", "Robot Description=robot_description", "--set", "Humans=From Topic", "--set", "Topic=/crowd"])
 PEER = rs.PEER
 PUBLISH_HZ = 30.0
-# Of a 1 m x 0.6 m x 1.95 m box a figure covers a quarter (ours) or a tenth (the peer's), less of
-# it coloured enough for the figure mask in dark clothes (a black jacket at 30 m: 4.3 %); a box
-# whose human is missing holds none (checked by leaving a human out of the crowd).
-MIN_BOX_SHARE = 0.03
 ROW_SPACING = 3.5  # m: the boxes of one row and the next do not overlap on screen, even from 30 m at 0.7 rad
 DEFAULT_POINTS = ["10@12", "20@12", "30@12", "40@12", "10@30", "20@30", "40@30", "100@30"]
 
@@ -86,30 +81,6 @@ def crowd_file(places, directory):
     return path
 
 
-def drawn(path, places, orbit):
-    """How many of the humans at `places` show in the screenshot at `path`, each judged in a box
-    0.6 m across its row (neighbours stand 1 m apart: 0.4 m between boxes) against the box's
-    projected area."""
-    image = numpy.asarray(Image.open(path).convert("RGB")).astype(numpy.float64)
-    mask = figure_mask(image)
-    height, width = mask.shape
-    count = 0
-    for x, y in places:
-        corners = numpy.array([[cx, cy, cz] for cx in (x - 0.5, x + 0.5) for cy in (y - 0.3, y + 0.3)
-                               for cz in (-0.05, 1.9)])
-        columns, rows, depth, _ = orbit.project(corners, numpy.zeros(3), width, height)
-        if (depth <= orbit.near).any():
-            continue
-        left, right = int(max(columns.min(), 0)), int(min(columns.max(), width))
-        top, bottom = int(max(rows.min(), 0)), int(min(rows.max(), height))
-        box_area = (columns.max() - columns.min()) * (rows.max() - rows.min())
-        if right <= left or bottom <= top:
-            continue
-        if mask[top:bottom, left:right].sum() >= max(15.0, MIN_BOX_SHARE * box_area):
-            count += 1
-    return count
-
-
 def cpu_seconds(pid):
     with open("/proc/%d/stat" % pid) as f:
         fields = f.read().rsplit(")", 1)[1].split()
@@ -127,7 +98,7 @@ def measure(subject, count, distance, args, shots, env, env_script=None):
                        env_script)
     orbit = OrbitView(distance, rs.YAW, rs.pitch(count), (front, 0.0, rs.FOCAL_Z))
     places = positions(count)
-    point["drawn"] = min(drawn(screenshot[:-4] + "_start.png", places, orbit), drawn(screenshot, places, orbit))
+    point["drawn"] = min(rs.drawn(screenshot[:-4] + "_start.png", places, orbit), rs.drawn(screenshot, places, orbit))
     point["screenshot"] = os.path.relpath(screenshot, rs.ROOT)
     print(label, count, distance, point, file=sys.stderr)
     return point
