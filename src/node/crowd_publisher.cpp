@@ -31,6 +31,25 @@ std::string framePrefixParameter(const Parameters& parameters) {
   return prefix;
 }
 
+Motion crowdMotion(const std::string& motion_file) {
+  Motion motion = loadMotionFile(motion_file);
+  if (motion.body_shape) {
+    throw ParameterError("motion file " + motion_file + " was fitted to one person's body; a crowd walks the "
+                         "robot description's body at each human's stature: give a motion without body_shape");
+  }
+  return motion;
+}
+
+Skeleton crowdSkeleton(const std::string& urdf) {
+  Skeleton plain = Skeleton::fromUrdf(urdf);
+  if (!plain.suffix().empty()) {
+    throw ParameterError("robot_description's frames carry the suffix '" + plain.suffix() +
+                         "'; a crowd names its humans itself (by their ids): give the plain skeleton "
+                         "(urdf/human.urdf)");
+  }
+  return plain;
+}
+
 CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHandle& private_node) {
   const Parameters parameters(private_node);
   CrowdPublisherSettings s;
@@ -57,20 +76,12 @@ CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHan
 CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_node)
     : settings_(CrowdPublisherSettings::fromParameters(private_node)) {
   const std::string urdf = Parameters(node).requiredText("robot_description");
-  const Motion motion = loadMotionFile(settings_.motion_file);
-  if (motion.body_shape) {
-    throw ParameterError("motion file " + settings_.motion_file + " was fitted to one person's body; a crowd walks the "
-                         "robot description's body at each human's stature: give a motion without body_shape");
-  }
+  const Motion motion = crowdMotion(settings_.motion_file);
   const NormativeGait gait = loadNormativeGaitFile(settings_.gait_file);
   const std::vector<CrowdWalk> walks = settings_.crowd_file.empty()
                                            ? defaultCrowdWalks(static_cast<std::size_t>(settings_.count))
                                            : loadCrowdWalks(settings_.crowd_file);
-  const Skeleton plain = Skeleton::fromUrdf(urdf);
-  if (!plain.suffix().empty()) {
-    throw ParameterError("robot_description's frames carry the suffix '" + plain.suffix() +
-                         "'; a crowd names its humans itself: give the plain skeleton (urdf/human.urdf)");
-  }
+  const Skeleton plain = crowdSkeleton(urdf);
   members_.reserve(walks.size());
   for (const CrowdWalk& walk : walks) addMember(walk, plain, urdf, motion, gait);
 

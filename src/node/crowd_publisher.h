@@ -35,6 +35,12 @@ class Parameters;
 // ~frame_prefix, checked: TF frame name characters only.
 std::string framePrefixParameter(const Parameters& parameters);
 
+// What every crowd walks, whichever way its humans come: the motion (one fitted to a person's
+// body is refused: each human walks the robot description's body) and the plain skeleton (a
+// suffixed one is refused: the crowd names its humans by id). Throw naming what is wrong.
+Motion crowdMotion(const std::string& motion_file);
+Skeleton crowdSkeleton(const std::string& urdf);
+
 class CrowdPublisher {
  public:
   // Throws (ParameterError, SkeletonError, MotionError, LocomotionError, CrowdFileError) with a

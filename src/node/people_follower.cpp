@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "dressed_human/core/locomotion/normative_gait.h"
-#include "dressed_human/core/motion/motion_file.h"
 #include "parameters.h"
 #include "people_messages.h"
 
@@ -25,16 +24,8 @@ constexpr double kResubscribePeriod = 1.0;
 PeopleFollower::PeopleFollower(ros::NodeHandle node, const CrowdPublisherSettings& settings, const std::string& topic,
                                double smoothing)
     : node_(node), settings_(settings), topic_(node.resolveName(topic)),
-      skeleton_(Skeleton::fromUrdf(Parameters(node).requiredText("robot_description"))) {
-  if (!skeleton_.suffix().empty()) {
-    throw ParameterError("robot_description's frames carry the suffix '" + skeleton_.suffix() +
-                         "'; the people are named by their track ids: give the plain skeleton (urdf/human.urdf)");
-  }
-  const Motion motion = loadMotionFile(settings_.motion_file);
-  if (motion.body_shape) {
-    throw ParameterError("motion file " + settings_.motion_file +
-                         " was fitted to one person's body; give a motion without body_shape");
-  }
+      skeleton_(crowdSkeleton(Parameters(node).requiredText("robot_description"))) {
+  const Motion motion = crowdMotion(settings_.motion_file);
   gait_ = std::make_unique<SpeedGait>(motion, loadNormativeGaitFile(settings_.gait_file), skeleton_,
                                       skeleton_.bodyShape());
   TrackedCrowdSettings crowd_settings;

@@ -11,11 +11,14 @@ import time
 import unittest
 
 import rosbag
+import rospkg
 import rospy
 import rostest
 import tf2_ros
 from dressed_human.msg import Crowd
 from node_runs import run_node
+
+PACKAGE = rospkg.RosPack().get_path("dressed_human")
 
 COUNT = 5
 
@@ -106,6 +109,25 @@ class CrowdPublisherTest(unittest.TestCase):
         with open(path, "w") as f:
             f.write('humans:\n  "1": {speed: 9}\n')
         self.assertRejected("humans.1.speed", "_crowd_file:=" + path)
+
+    def test_bad_frame_prefix(self):
+        self.assertRejected("parameter /{node}/frame_prefix 'a-b' may hold only letters", "_frame_prefix:=a-b")
+
+    def test_bad_smoothing_of_people(self):
+        self.assertRejected("parameter /{node}/smoothing must be in [0, 1]", "_people_topic:=/people", "_smoothing:=2")
+
+    def test_a_motion_fitted_to_one_person_is_refused_in_both_modes(self):
+        fitted = os.path.join(PACKAGE, "config", "motions", "cmu_02_01_fitted.yaml")
+        for mode in ([], ["_people_topic:=/people"]):
+            self.assertRejected("was fitted to one person's body", "_motion_file:=" + fitted, *mode)
+
+    def test_a_suffixed_skeleton_is_refused_in_both_modes(self):
+        urdf = subprocess.run([os.path.join(PACKAGE, "scripts", "suffix_urdf.py"),
+                               os.path.join(PACKAGE, "urdf", "human.urdf"), "7"],
+                              check=True, stdout=subprocess.PIPE, universal_newlines=True).stdout
+        rospy.set_param("/suffixed/robot_description", urdf)
+        for mode in ([], ["_people_topic:=/people"]):
+            self.assertRejected("robot_description's frames carry the suffix '_7'", "__ns:=/suffixed", *mode)
 
 
 if __name__ == "__main__":
