@@ -57,6 +57,8 @@ CHANGE = 4.0          # s into the run: spencer drops person 3, pedsim sends emp
 BAD_FROM, BAD_TO = 1.5, 2.5  # s: person 52 at NaN, person 53 twice
 OLD_STAMP_AT = 3.0    # s: one message stamped 10 s before it is sent
 BACK_AT = 4.5         # s: stamps go back 3 s once (a recording played again)
+ZERO_STAMP_AT = 6.0   # s: one message with a zero stamp (taken as when it came)
+NO_FRAME_AT = 6.3     # s: one message without header.frame_id (taken as the last frame)
 RENDER_DELAY = None   # s: TrackedCrowd's at 10 Hz, max(1.5 x 0.1 s, ~smoothing) within [0.1, 0.5] (setUpClass)
 APPEAR_LIMIT = 0.5 + 0.3  # s after the first message: the largest render delay and slack
 TRACK_TOLERANCE = 0.3  # m
@@ -227,7 +229,8 @@ class PeopleInput(Input):
 class BadInput(Input):
     """TrackedPersons with bad sightings: from BAD_FROM to BAD_TO person 52 at NaN and person 53
     twice (the second 5 m off); at OLD_STAMP_AT a message stamped 10 s back (its people where they
-    are now: every human starts over there); at BACK_AT one message stamped 3 s back,
+    are now: every human starts over there); at ZERO_STAMP_AT a zero stamp and at NO_FRAME_AT no
+    frame (the people walk on); at BACK_AT one message stamped 3 s back,
     its people where they were then (a recording played again), then on as before."""
 
     def send(self, elapsed, now):
@@ -238,6 +241,8 @@ class BadInput(Input):
         elif step == round(BACK_AT * RATE):
             stamp = now - rospy.Duration(3.0)
             sample_time = stamp.to_sec()
+        elif step == round(ZERO_STAMP_AT * RATE):
+            stamp = rospy.Time(0)
         positions = {i: walk.at(sample_time) for i, walk in self.walks.items()}
         persons = [(i, positions[i], self.walks[i].velocity()) for i in sorted(self.walks)]
         if BAD_FROM <= elapsed < BAD_TO:
@@ -245,7 +250,11 @@ class BadInput(Input):
             x, y = positions["53"]
             persons.append(("53", (x + 5.0, y), self.walks["53"].velocity()))
             del positions["52"]
+        frame = self.frame
+        if step == round(NO_FRAME_AT * RATE):
+            self.frame = ""
         self.publish(stamp, persons)
+        self.frame = frame
         self.sent.append((sample_time, positions))
 
 
@@ -470,6 +479,12 @@ class PeopleInputsTest(unittest.TestCase):
             self.assertOnTrack(bad, human_id, skip=[(OLD_STAMP_AT, OLD_STAMP_AT + SETTLE + 0.2),
                                                     (BACK_AT, BACK_AT + SETTLE + 0.2)])
             self.assertGreater(float(self.frames["body_" + human_id]["most_recent_transform"]), bad.sent[-1][0])
+
+    def test_a_zero_stamp_and_a_missing_frame_are_named(self):
+        warnings = self.log_of(self.inputs["bad"].node(), Log.WARN)
+        for said in ("message stamps are zero", "a message without header.frame_id"):
+            self.assertTrue([w for w in warnings if "/bad_people" in w and said in w],
+                            "no warning naming /bad_people and '%s'; warnings: %s" % (said, warnings))
 
     def test_an_old_stamp_is_named(self):
         warnings = self.log_of(self.inputs["bad"].node(), Log.WARN)
