@@ -215,6 +215,10 @@ int main(int argc, char** argv) {
         if (status && display == displays.front() && status->getName() == "Surfaces") {
           std::fprintf(stderr, "surfaces %s\n", status->getValue().toString().toStdString().c_str());
         }
+        // Which vertex path "Automatic" took (bench/rviz_scaling.py sets it beside the measured ones).
+        if (status && display == displays.front() && status->getName() == "Vertex Evaluation") {
+          std::fprintf(stderr, "vertex_evaluation %s\n", status->getValue().toString().toStdString().c_str());
+        }
         if (status && status->getLevel() != rviz::StatusProperty::Ok) {
           std::fprintf(stderr, "status %s: %s\n", status->getName().toStdString().c_str(),
                        status->getValue().toString().toStdString().c_str());

@@ -15,7 +15,10 @@ frame: (rviz CPU per frame - the empty scene's) / N; also what the DressedHuman 
 of its own update(). With several --distances, the --distance-count humans are also measured at
 each distance (cost against distance).
 
-Usage: bench/rviz_scaling.py [--seconds 15] [--counts 1 5 10] [--distances 12]
+Each point is measured --repeats times (default 3), every repeat against its own empty-scene
+run; the tables give the median and the range (lowest, highest run).
+
+Usage: bench/rviz_scaling.py [--repeats 3] [--seconds 15] [--counts 1 5 10] [--distances 12]
        [--distance-count 10] [--markdown docs/rviz_scaling.md] [--csv out.csv]
        [--chart docs/rviz_scaling.png] [--screenshots docs/rviz_scaling] [--peer-workspace DIR]
 With --peer-workspace (built by ../shared/peers/spencer/build.sh), spencer's walking-man meshes (the
@@ -128,6 +131,8 @@ def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0
     point = dict(zip(("fps", "cpu_percent", "cpu_ms_per_frame", "display_ms"), (float(v) for v in match.groups())))
     extra = re.search(r"rss_mb=([-\d.]+) first_frame_s=([-\d.]+)", output)
     point["rss_mb"], point["first_frame_s"] = (float(v) for v in extra.groups()) if extra else (-1.0, -1.0)
+    vertex_status = re.search(r"^vertex_evaluation (.*)$", output, re.MULTILINE)
+    point["vertex_evaluation"] = vertex_status.group(1) if vertex_status else ""
     for line in output.splitlines():
         if line.startswith("status ") or line.startswith("surfaces "):
             print("  %s x %d: %s" % (display_class, count, line), file=sys.stderr)
@@ -147,7 +152,10 @@ def chart(results, counts, distances, distance_count, path):
             continue
         points = [results[(label, n, near)] for n in shown]
         axes[0].plot(shown, [p["fps"] for p in points], "o-", label=label)
-        axes[1].plot(shown, [p["per_human_ms"] for p in points], "o-", label=label)
+        medians = [p["per_human_ms"] for p in points]
+        spread = [[m - p["per_human_range"][0] for m, p in zip(medians, points)],
+                  [p["per_human_range"][1] - m for m, p in zip(medians, points)]]
+        axes[1].errorbar(shown, medians, yerr=spread, fmt="o-", capsize=3, label=label)
         if panels == 3 and all((label, distance_count, d) in results for d in distances):
             axes[2].plot(distances, [results[(label, distance_count, d)]["per_human_ms"] for d in distances], "o-",
                          label=label)
@@ -240,9 +248,36 @@ def measure(results, count, distance, args, baseline, shots, env):
         print(label, count, distance, point, file=sys.stderr)
 
 
+def automatic_vertex_choice(env, shots):
+    """What "Vertex Evaluation: Automatic", the default, picks here: its status names the CPU
+    when it chose the CPU ("CPU (Automatic): ..."); without one it chose the vertex shader."""
+    point = harness("dressed_human/DressedHuman", 1, 2, [], os.path.join(shots, "automatic_choice.png"), env)
+    return ("CPU" if "(Automatic)" in point["vertex_evaluation"] else "GPU"), point["vertex_evaluation"]
+
+
+def over_runs(runs):
+    """One point per key from the same key's point in every run: medians, the lowest and highest
+    fps and per-human cost, and the fewest humans drawn (a human missing in any run fails it)."""
+    combined = {}
+    for key in runs[0]:
+        points = [run[key] for run in runs]
+        point = dict(points[-1])  # its screenshot: the last run's
+        for field in ("fps", "cpu_percent", "cpu_ms_per_frame", "per_human_ms", "display_ms", "rss_mb", "first_frame_s"):
+            if field in point:
+                point[field] = float(numpy.median([p[field] for p in points]))
+        if "per_human_ms" in point:
+            point["per_human_range"] = (min(p["per_human_ms"] for p in points), max(p["per_human_ms"] for p in points))
+        point["fps_range"] = (min(p["fps"] for p in points), max(p["fps"] for p in points))
+        if "drawn" in point:
+            point["drawn"] = min(p["drawn"] for p in points)
+        combined[key] = point
+    return combined
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--seconds", type=float, default=15.0)
+    parser.add_argument("--repeats", type=int, default=3, help="runs per point, each against its own empty scene")
     parser.add_argument("--counts", type=int, nargs="+", default=[1, 5, 10])
     parser.add_argument("--distances", type=float, nargs="+", default=[12.0])
     parser.add_argument("--distance-count", type=int, default=10)
@@ -266,45 +301,58 @@ def main():
     if len(args.distances) > 1:
         points += [(args.distance_count, d) for d in args.distances[1:]]
     processes = [start(["roscore", "-p", "11911"], env)]
-    results = {}
+    runs = []
+    automatic = None
     try:
         time.sleep(4)
         import rosgraph  # after ROS_MASTER_URI is known to this process
         master = rosgraph.Master("/rviz_scaling", master_uri=env["ROS_MASTER_URI"])
-        baseline = harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "empty.png"), env)
-        for count in sorted(set(n for n, _ in points)):
-            # Restarted per count, so that display i always finds human i at its place.
-            nodes = start_humans(count, node, motion, urdf, master, env)
-            try:
-                for distance in [d for n, d in points if n == count]:
-                    measure(results, count, distance, args, baseline, shots, env)
-            finally:
-                for process in nodes:
-                    stop(process)
+        for _ in range(args.repeats):
+            run = {}
+            baseline = harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "empty.png"), env)
+            for count in sorted(set(n for n, _ in points)):
+                # Restarted per count, so that display i always finds human i at its place.
+                nodes = start_humans(count, node, motion, urdf, master, env)
+                try:
+                    if automatic is None:
+                        automatic = automatic_vertex_choice(env, shots)
+                    for distance in [d for n, d in points if n == count]:
+                        measure(run, count, distance, args, baseline, shots, env)
+                finally:
+                    for process in nodes:
+                        stop(process)
+            runs.append((baseline, run))
     finally:
         for process in reversed(processes):
             stop(process)
+    results = over_runs([run for _, run in runs])
+    baseline = over_runs([{"empty": b} for b, _ in runs])["empty"]
 
     failed = [(label, n, d) for (label, n, d), p in results.items() if p["drawn"] < n]
-    lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per human per frame | display's own "
+    lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per human per frame (range) | display's own "
              "update per human per frame | rviz resident memory | all drawn after |",
              "|---|---|---|---|---|---|---|---|---|---|"]
-    rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,per_human_ms,display_ms,rss_mb,"
-            "first_frame_s,screenshot"]
+    rows = ["display,humans,distance_m,drawn,fps,fps_low,fps_high,cpu_percent,cpu_ms_per_frame,per_human_ms,"
+            "per_human_low,per_human_high,display_ms,rss_mb,first_frame_s,repeats,automatic_choice,screenshot"]
     for count, distance in points:
         for label, _, _ in subjects(args, count):
             p = results[(label, count, distance)]
             own = "%.3f ms" % p["display_ms"] if p["display_ms"] >= 0 else "—"
             drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")
             first = "%.2f s" % p["first_frame_s"] if p["first_frame_s"] >= 0 else "—"
-            lines.append("| %d | %g m | %s | %s | %.1f | %.0f %% | %.2f ms | %s | %.0f MB | %s |" % (
-                count, distance, label, drawn_text, p["fps"], p["cpu_percent"], p["per_human_ms"], own, p["rss_mb"],
-                first))
-            rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%.1f,%.2f,%s" % (
-                label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"],
-                p["per_human_ms"], p["display_ms"], p["rss_mb"], p["first_frame_s"], p["screenshot"]))
+            fps_text = "%.1f" % p["fps"] + ("" if p["fps_range"][1] - p["fps_range"][0] < 0.5
+                                            else " (%.1f–%.1f)" % p["fps_range"])
+            lines.append("| %d | %g m | %s | %s | %s | %.0f %% | %.2f ms (%.2f–%.2f) | %s | %.0f MB | %s |" % (
+                count, distance, label, drawn_text, fps_text, p["cpu_percent"], p["per_human_ms"],
+                p["per_human_range"][0], p["per_human_range"][1], own, p["rss_mb"], first))
+            rows.append("%s,%d,%g,%d,%.2f,%.2f,%.2f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%.1f,%.2f,%d,%s,%s" % (
+                label, count, distance, p["drawn"], p["fps"], p["fps_range"][0], p["fps_range"][1], p["cpu_percent"],
+                p["cpu_ms_per_frame"], p["per_human_ms"], p["per_human_range"][0], p["per_human_range"][1],
+                p["display_ms"], p["rss_mb"], p["first_frame_s"], args.repeats, automatic[0], p["screenshot"]))
     lines.append("")
-    lines.append("Empty scene: %.1f fps, %.0f %% CPU, %.2f ms per frame. Humans walking in place, up to %d in a row 1 m "
+    lines.append("Medians of %d runs per point, each against its own empty-scene run (the range: lowest and highest "
+                 "run). " % args.repeats +
+                 "Empty scene: %.1f fps, %.0f %% CPU, %.2f ms per frame. Humans walking in place, up to %d in a row 1 m "
                  "apart (camera pitched 0.25 rad), more in rows %g m apart (camera pitched 0.7 rad); %g s per point "
                  "after 5 s of warm-up; rviz CPU in %% of one core, Mesa llvmpipe (software rendering) on %d cores; "
                  "\"drawn\": humans visible in both the screenshot at the start and at the end of the point (`%s/`); "
@@ -313,6 +361,9 @@ def main():
                  "`bench/rviz_scaling.py`."
                  % (baseline["fps"], baseline["cpu_percent"], baseline["cpu_ms_per_frame"], ROW_LENGTH, ROW_SPACING,
                     args.seconds, os.cpu_count(), os.path.relpath(shots, ROOT)))
+    lines.append("")
+    lines.append("`Vertex Evaluation: Automatic`, the default, chose the %s here (%s)." % (
+        automatic[0], automatic[1] or "no status: the vertex shader"))
     if args.csv:
         with open(args.csv, "w") as f:
             f.write("\n".join(rows) + "\n")

@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-DOCS = os.path.join(ROOT, "docs")
+DOCS = os.environ.get("DRESSED_HUMAN_DOCS", os.path.join(ROOT, "docs"))  # evaluate.sh: its run's folder
 
 
 def sweep(tool, capture, name, extra):

@@ -34,7 +34,8 @@ def load(args):
             text = f.read()
     else:
         text = subprocess.run([args.tool, ROOT], check=True, capture_output=True, text=True).stdout
-        with open(os.path.join(ROOT, "docs", "tessellation_accuracy.csv"), "w") as f:
+        docs = os.environ.get("DRESSED_HUMAN_DOCS", os.path.join(ROOT, "docs"))  # evaluate.sh: its run's folder
+        with open(os.path.join(docs, "tessellation_accuracy.csv"), "w") as f:
             f.write(text)
     rows = list(csv.DictReader(io.StringIO(text)))
     if not rows:

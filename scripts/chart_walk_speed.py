@@ -25,7 +25,7 @@ def main():
     with tempfile.TemporaryDirectory() as out:
         subprocess.run([tool, source, out], check=True)
         trend, slide = rows(os.path.join(out, "walk_speed_trend.csv")), rows(os.path.join(out, "walk_slide.csv"))
-    docs = os.path.join(source, "docs")
+    docs = os.environ.get("DRESSED_HUMAN_DOCS", os.path.join(source, "docs"))  # evaluate.sh: its run's folder
     figure, (stride_axis, cadence_axis, slide_axis) = plt.subplots(1, 3, figsize=(15, 4.2))
     speeds = [r["speed_m_s"] for r in trend]
     stride_axis.plot(speeds, [r["normative_stride_m"] for r in trend], "o--", color="grey", label="normative (Schwartz 2008, scaled)")

@@ -1,16 +1,18 @@
 #!/usr/bin/python3
-"""docs/EVALUATION.md and its charts, from what scripts/evaluate.sh measured (issue 8).
+"""docs/EVALUATION.md, its charts and the README's Speed section, from one run of
+scripts/evaluate.sh (issues 8, 37).
 
-Usage: scripts/make_evaluation.py RESULTS_DIR   (scripts/evaluate.sh passes build/evaluation)
+Usage: scripts/make_evaluation.py RUN_DIR   (scripts/evaluate.sh passes build/evaluation/<run>)
 
-Reads from RESULTS_DIR: bench_*.json (Google Benchmark, repetitions with aggregates),
-scene_budget.csv (src/tools/scene_budget.cpp), relief_modes.csv (bench/relief_modes.py),
-rviz_scaling.csv (bench/rviz_scaling.py), machine.txt; from docs/:
-fourier_order_sweep_cmu_02_01.csv, tessellation_accuracy.csv, node_cpu.md, rviz_scaling.md,
-relief_modes.md, relief_flicker.md, skin_distance.md, rviz_memory.md, crowd_scaling.md, track_following.md, stability.md. Writes docs/scene_budget.png, docs/relief_modes.png,
-docs/skin_map_speed.png, docs/EVALUATION.md, and the README's "Speed" section (between its
-generated-section markers). A missing input is an error: the report is all measured or not
-written.
+RUN_DIR is one run's own folder: run.txt (command, commit, start, host and the line "finished:"
+the run writes only when every step passed), bench_*.json (Google Benchmark, repetitions with
+aggregates), scene_budget.csv, relief_modes.csv, rviz_scaling.csv, crowd_scaling.csv, and docs/,
+everything the run wrote for docs/ (tables, CSVs, charts, screenshots). Only docs/stability.md, a
+hand-written explanation, is read from the source tree. This script adds scene_budget.png,
+relief_modes.png, skin_map_speed.png and EVALUATION.md to RUN_DIR/docs, then, and only if every
+input was there, copies RUN_DIR/docs over docs/ (the screenshot folders replaced whole) and writes
+the README's Speed section between its markers. A run that did not finish, an input missing
+from the folder, or a commit the source tree does not contain is an error: nothing is written.
 """
 import csv
 import json
@@ -23,14 +25,54 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import shutil
+import subprocess
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DOCS = os.path.join(ROOT, "docs")
+SOURCE_DOCS = os.path.join(ROOT, "docs")
+DOCS = None  # the run's docs/ folder, set by main(): every measured input is read from it
+# Folders a run writes whole (screenshots): published by replacing docs/' copy, so that no
+# screenshot of an older run stays beside this run's.
+RUN_FOLDERS = ("rviz_scaling", "crowd_scaling", "relief_modes", "relief_switch")
 
 
 def need(path):
     if not os.path.exists(path):
         sys.exit("make_evaluation.py: missing input %s (run scripts/evaluate.sh)" % path)
     return path
+
+
+def run_record(results):
+    """run.txt as a dict; refuses a run that did not finish or whose commit is not in this tree."""
+    record = {}
+    for line in read_text(os.path.join(results, "run.txt")).splitlines():
+        key, _, value = line.partition(": ")
+        record[key] = value
+    for key in ("command", "commit", "started", "host"):
+        if key not in record:
+            sys.exit("make_evaluation.py: %s/run.txt has no '%s:' line: not a run of scripts/evaluate.sh"
+                     % (results, key))
+    if "finished" not in record:
+        sys.exit("make_evaluation.py: the run in %s did not finish (no 'finished:' line in run.txt: a step failed "
+                 "or it was stopped); its figures are partial and are not published" % results)
+    known = subprocess.run(["git", "-C", ROOT, "merge-base", "--is-ancestor", record["commit"], "HEAD"])
+    if known.returncode != 0:
+        sys.exit("make_evaluation.py: the run measured commit %s, which is not in this tree's history"
+                 % record["commit"][:7])
+    seconds = int(record["finished"].split(", ")[1].split()[0])
+    record["duration"] = "%d min %02d s" % divmod(seconds, 60)
+    record["machine"] = "%s, commit %s, started %s; the run took %s (`%s`)." % (
+        record["host"], record["commit"][:7], record["started"].replace("T", " ").rstrip("Z") + " UTC",
+        record["duration"], record["command"])
+    return record
+
+
+def publish(run_docs):
+    """Copies the run's docs/ over the source tree's docs/."""
+    for folder in RUN_FOLDERS:
+        if os.path.isdir(os.path.join(run_docs, folder)):
+            shutil.rmtree(os.path.join(SOURCE_DOCS, folder), ignore_errors=True)
+    shutil.copytree(run_docs, SOURCE_DOCS, dirs_exist_ok=True)
 
 
 def read_text(path):
@@ -54,6 +96,15 @@ def benchmark_medians(path):
         elif b.get("run_type") == "iteration" and b["name"] not in medians and "repetitions" not in b.get("run_name", "x"):
             medians.setdefault(b["name"], (b["real_time"], b["time_unit"]))
     return medians
+
+
+def benchmark_counter(path, name, counter):
+    """A user counter of one benchmark (the first entry that has it)."""
+    with open(need(path)) as f:
+        for b in json.load(f)["benchmarks"]:
+            if b.get("run_name", b["name"]) == name and counter in b:
+                return b[counter]
+    sys.exit("make_evaluation.py: %s has no counter %s on %s" % (path, counter, name))
 
 
 def in_ms(value):
@@ -80,10 +131,27 @@ def fourier_section():
         r = by_order[m]
         lines.append("| %d | %.2f | %.2f | %.0f |" % (m, float(r["mean_rms_deg"]), float(r["joint_error_samples_mean_cm"]),
                                                  float(r["evaluate_ns"])))
-    low, mid = by_order[min(by_order)], by_order[6] if 6 in by_order else by_order[max(by_order)]
-    ratio = float(mid["evaluate_ns"]) / float(low["evaluate_ns"])
-    gain = float(low["joint_error_samples_mean_cm"]) / float(mid["joint_error_samples_mean_cm"])
-    return lines, ratio, gain
+    walk_order = walk_max_order()
+    if walk_order not in by_order or max(by_order) <= walk_order:
+        sys.exit("make_evaluation.py: the Fourier sweep must reach past walk.yaml's order %d" % walk_order)
+    low, mid, top = by_order[min(by_order)], by_order[walk_order], by_order[max(by_order)]
+    error = lambda r: float(r["joint_error_samples_mean_cm"])  # noqa: E731
+    sentence = ("Going from m = %d to m = %d (the order `config/motions/walk.yaml` is fitted to) costs %.1f× the "
+                "evaluation time and cuts the fit's joint-position error %.1f×; the orders above it, up to m = %d, cut "
+                "it by a further %.1f %% at %.1f× the time of m = %d." % (
+                    min(by_order), walk_order, float(mid["evaluate_ns"]) / float(low["evaluate_ns"]),
+                    error(low) / error(mid), max(by_order), 100.0 * (1.0 - error(top) / error(mid)),
+                    float(top["evaluate_ns"]) / float(mid["evaluate_ns"]), walk_order))
+    return lines, sentence
+
+
+def walk_max_order():
+    """The --max-order config/motions/walk.yaml was fitted with (its header names the command)."""
+    with open(os.path.join(ROOT, "config", "motions", "walk.yaml")) as f:
+        match = re.search(r"--max-order (\d+)", f.read(2000))
+    if not match:
+        sys.exit("make_evaluation.py: config/motions/walk.yaml's header names no --max-order")
+    return int(match.group(1))
 
 
 def skeleton_section(results):
@@ -148,16 +216,29 @@ def scene_budget_section(results):
                                                                      r["triangles"], r["median_update_ms"],
                                                                      r["max_error_mm"], r["max_error_px"]))
     savings = []
-    for humans, distance in ((1, 1.0), (1, 5.0), (1, 20.0), (5, 5.0), (10, 5.0)):
-        auto = next(r for r in rows if r["humans"] == humans and r["distance_m"] == distance and r["label"] == "automatic")
-        gpu = next(r for r in rows if r["humans"] == humans and r["distance_m"] == distance and r["vertices"] == "gpu")
-        fixed = next(r for r in rows if r["humans"] == humans and r["distance_m"] == distance and r["level"] == "8")
+    for humans, distance in sorted({(r["humans"], r["distance_m"]) for r in rows}):
+        here = [r for r in rows if r["humans"] == humans and r["distance_m"] == distance]
+        auto = next((r for r in here if r["label"] == "automatic"), None)
+        gpu = next((r for r in here if r["vertices"] == "gpu"), None)
+        fixed = next((r for r in here if r["level"] == "8" and r["lod"] != "automatic"), None)
+        if auto is None or gpu is None or fixed is None:
+            sys.exit("make_evaluation.py: scene_budget.csv lacks the automatic, GPU or level-8 row for %d at %g m"
+                     % (humans, distance))
         savings.append("%d human%s at %g m: %.2f× the triangles and %.2f× the time of level 8, max %.2f px error "
                        "(level 8: %.2f px); with GPU vertices the update takes %.3f ms instead of %.3f ms"
                        % (humans, "s" if humans > 1 else "", distance, auto["triangles"] / fixed["triangles"],
                           auto["median_update_ms"] / fixed["median_update_ms"], auto["max_error_px"],
                           fixed["max_error_px"], gpu["median_update_ms"], auto["median_update_ms"]))
-    return lines, savings
+    alone = sorted({r["distance_m"] for r in rows if r["humans"] == 1})
+    groups = sorted({(r["humans"], r["distance_m"]) for r in rows if r["humans"] > 1})
+    scene = "alone at %s m from the camera and as rows of %s" % (
+        words(["%g" % d for d in alone]), words(["%d humans 1 m apart seen from %g m" % g for g in groups]))
+    return lines, savings, scene
+
+
+def words(items):
+    """'a', 'a and b', 'a, b and c'."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 def relief_modes_section(results):
@@ -230,59 +311,87 @@ def skin_map_section(results):
     return lines, verdict
 
 
+def smooth_fold_sentence(results):
+    rows = read_csv(os.path.join(results, "smooth_fold_error.csv"))
+    default = int(rows[0]["default_harmonics_per_cell"])
+    at_default = [r for r in rows if int(r["harmonics_per_cell"]) == default]
+    if not at_default:
+        sys.exit("make_evaluation.py: smooth_fold_error.csv has no row at the default %d harmonics" % default)
+    worst = max(float(r["rms_error"]) / float(r["h1"]) for r in at_default)
+    return ("The displayed folds are the exact tile blurred through its own Fourier series; the default, %d "
+            "harmonics per cell, keeps %s at alpha %s within %.1f %% RMS of h1 (the worst of them)." % (
+                default, words(sorted({r["pattern"] for r in at_default})),
+                words(sorted({r["alpha"] for r in at_default})), 100.0 * worst))
+
+
 def rviz_scaling_verdict(results):
-    """What the in-view rviz run (rviz_scaling.csv) says: DressedHuman against RobotModel, the crowd
-    goals (10 humans at 12 m: >= 29 fps, >= 1.5x RobotModel, <= 3 ms rviz CPU per human), and
-    against the crowd peer where it was measured."""
+    """What the in-view rviz run (rviz_scaling.csv, several runs per point) says: DressedHuman
+    against RobotModel, the vertex paths against each other beyond their spread (which one
+    "Automatic" should pick here), and the goals of 10 humans at the nearest distance."""
     rows = read_csv(os.path.join(results, "rviz_scaling.csv"))
     by = {(r["display"], int(r["humans"]), float(r["distance_m"])): r for r in rows}
-    near = min(float(r["distance_m"]) for r in rows)
-    counts = sorted({int(r["humans"]) for r in rows if float(r["distance_m"]) == near})
     not_drawn = ["%s x %d at %s m" % (r["display"], int(r["humans"]), r["distance_m"]) for r in rows
                  if int(r["drawn"]) < int(r["humans"])]
     if not_drawn:
         sys.exit("make_evaluation.py: rviz_scaling.csv has points that did not draw every human: " + ", ".join(not_drawn))
     names = ("DressedHuman (GPU vertices)", "DressedHuman (CPU vertices)", "RobotModel")
-    sentences = []
-    for count in counts:
-        gpu, cpu, robot = (by[(name, count, near)] for name in names)
-        sentences.append(
-            "%d human%s at %g m: DressedHuman %.1f fps with CPU vertices (the default's choice here), %.1f with GPU "
-            "vertices; RobotModel %.1f fps, so %.2f× its fps; rviz CPU per human per frame %.2f ms (GPU vertices "
-            "%.2f ms) against RobotModel's %.2f ms" % (
-                count, "s" if count > 1 else "", near, float(cpu["fps"]), float(gpu["fps"]), float(robot["fps"]),
-                float(cpu["fps"]) / float(robot["fps"]), float(cpu["per_human_ms"]), float(gpu["per_human_ms"]),
-                float(robot["per_human_ms"])))
-    far = sorted({(int(r["humans"]), float(r["distance_m"])) for r in rows if float(r["distance_m"]) != near})
-    for count, distance in far:
+    automatic = rows[0]["automatic_choice"]
+    default = names[0] if automatic == "GPU" else names[1]
+    cost = lambda r: "%.2f ms (%.2f–%.2f)" % (float(r["per_human_ms"]), float(r["per_human_low"]),  # noqa: E731
+                                            float(r["per_human_high"]))
+    fps = lambda r: "%.1f" % float(r["fps"]) + ("" if float(r["fps_high"]) - float(r["fps_low"]) < 0.5  # noqa: E731
+                                                else " (%.1f–%.1f)" % (float(r["fps_low"]), float(r["fps_high"])))
+    points = sorted({(int(r["humans"]), float(r["distance_m"])) for r in rows},
+                    key=lambda p: (p[1] != min(float(r["distance_m"]) for r in rows), p[1], p[0]))
+    sentences, cheaper = [], {"GPU": [], "CPU": [], "neither": []}
+    for count, distance in points:
         gpu, cpu, robot = (by[(name, count, distance)] for name in names)
-        sentences.append("%d humans at %g m: DressedHuman %.1f fps, %.2f ms rviz CPU per human with CPU vertices "
-                         "(%.1f fps, %.2f ms with GPU vertices); RobotModel %.1f fps, %.2f ms" % (
-                             count, distance, float(cpu["fps"]), float(cpu["per_human_ms"]), float(gpu["fps"]),
-                             float(gpu["per_human_ms"]), float(robot["fps"]), float(robot["per_human_ms"])))
-    if (names[1], 10, near) in by:
-        # Mesa llvmpipe renders here: "Vertex Evaluation: Automatic", the default, picks the CPU.
-        human, robot = by[(names[1], 10, near)], by[(names[2], 10, near)]
-        fps, ratio, cost = float(human["fps"]), float(human["fps"]) / float(robot["fps"]), float(human["per_human_ms"])
-        sentences.append("Goals for 10 humans at %g m (issue 19), DressedHuman as configured by default here (CPU "
-                         "vertices, Automatic's choice on llvmpipe): ≥ 29 fps: %.1f (%s); ≥ 1.5× RobotModel's fps: "
-                         "%.2f× (%s); ≤ 3 ms rviz CPU per human: %.2f ms (%s)" % (
-                             near, fps, "met" if fps >= 29 else "not met", ratio, "met" if ratio >= 1.5 else "not met",
-                             cost, "met" if cost <= 3 else "not met"))
-    # The crowd peer, where the run measured it (evaluate.sh with PEER_MIRROR).
-    peer = "spencer walking-man mesh (peer)"
-    for count, distance in sorted({(n, d) for (name, n, d) in by if name == peer}):
-        mesh, human = by[(peer, count, distance)], by.get((names[1], count, distance))
-        if human is None:
-            continue
-        sentences.append("Crowd peer, %d at %g m in the same run: spencer's walking-man mesh %.1f fps, %.2f ms rviz "
-                         "CPU per human; DressedHuman %.1f fps, %.2f ms (CPU vertices)" % (
-                             count, distance, float(mesh["fps"]), float(mesh["per_human_ms"]), float(human["fps"]),
-                             float(human["per_human_ms"])))
+        sentences.append(
+            "%d human%s at %g m: DressedHuman %s fps, rviz CPU per human per frame %s with CPU vertices; %s fps, %s "
+            "with GPU vertices; RobotModel %s fps, %s" % (
+                count, "s" if count > 1 else "", distance, fps(cpu), cost(cpu), fps(gpu), cost(gpu), fps(robot),
+                cost(robot)))
+        # Beyond the spread: one path's costliest run below the other's cheapest.
+        if float(gpu["per_human_high"]) < float(cpu["per_human_low"]):
+            cheaper["GPU"].append("%d at %g m" % (count, distance))
+        elif float(cpu["per_human_high"]) < float(gpu["per_human_low"]):
+            cheaper["CPU"].append("%d at %g m" % (count, distance))
+        else:
+            cheaper["neither"].append("%d at %g m" % (count, distance))
+    runs = int(rows[0]["repeats"])
+    verdict = "Vertex paths over %d runs per point: " % runs + "; ".join(
+        "%s cheaper beyond the spread at %s" % (path, words(where)) for path, where in cheaper.items()
+        if where and path != "neither")
+    if cheaper["neither"]:
+        verdict += ("; " if len(verdict) > 40 else "") + "ranges overlapping at " + words(cheaper["neither"])
+    other = "CPU" if automatic == "GPU" else "GPU"
+    agrees = len(cheaper[other]) <= len(cheaper[automatic])
+    verdict += (". `Vertex Evaluation: Automatic` chose the %s on this renderer, which this run %s" % (
+        automatic, "supports" if agrees else "does **not** support: the %s was cheaper at more points" % other))
+    sentences.append(verdict)
+    near = points[0][1]
+    if (default, 10, near) in by:
+        human, robot = by[(default, 10, near)], by[(names[2], 10, near)]
+        frame_rate, ratio, per_human = float(human["fps"]), float(human["fps"]) / float(robot["fps"]), float(
+            human["per_human_ms"])
+        sentences.append("Goals for 10 humans at %g m (issue 19), DressedHuman as configured by default here (%s "
+                         "vertices, Automatic's choice): ≥ 29 fps: %.1f (%s); ≥ 1.5× RobotModel's fps: %.2f× (%s); "
+                         "≤ 3 ms rviz CPU per human: %.2f ms (%s)" % (
+                             near, automatic, frame_rate, "met" if frame_rate >= 29 else "not met", ratio,
+                             "met" if ratio >= 1.5 else "not met", per_human, "met" if per_human <= 3 else "not met"))
     if any(float(r["per_human_ms"]) < 0 for r in rows):
         sentences.append("A negative CPU per human is noise: the empty scene, measured in its own run, cost more "
                          "than that point with its few humans; the host's load varies by more than one human costs")
     return "\n".join("- " + s + "." for s in sentences)
+
+
+def run_spread_sentence(results):
+    """How much the same point differed between runs, from rviz_scaling.csv's ranges."""
+    rows = [r for r in read_csv(os.path.join(results, "rviz_scaling.csv")) if float(r["per_human_ms"]) > 0.05]
+    spread = max((float(r["per_human_high"]) - float(r["per_human_low"])) / float(r["per_human_ms"]) for r in rows)
+    return ("The machine is a virtual one on a shared host: in this run the same point's rviz CPU per human "
+            "differed by up to %.0f %% of its median between its %s runs (`bench/rviz_scaling.py`), so the ratios "
+            "against peers measured in the same run are the figures to compare." % (100.0 * spread, rows[0]["repeats"]))
 
 
 def node_cpu_verdict():
@@ -298,15 +407,30 @@ def node_cpu_verdict():
     return "Target ≤ 0.5× robot_state_publisher's CPU: " + "; ".join(verdicts) + "."
 
 
+def rviz_scaling_scene(results):
+    """'1, 10 and 30 humans ... 12 m away' as the run measured them."""
+    rows = read_csv(os.path.join(results, "rviz_scaling.csv"))
+    near = min(float(r["distance_m"]) for r in rows)
+    counts = sorted({int(r["humans"]) for r in rows if float(r["distance_m"]) == near})
+    far = sorted({(int(r["humans"]), float(r["distance_m"])) for r in rows if float(r["distance_m"]) != near})
+    text = "%s humans walking in place, all in view %g m away" % (words([str(n) for n in counts]), near)
+    if far:
+        text += ", and %s" % words(["%d at %g m" % f for f in far])
+    return text
+
+
 def readme_speed_section(results, machine, skeleton_lines, rviz_verdict):
     """The README's "Speed" figures, from this run only."""
-    skin = benchmark_medians(os.path.join(results, "bench_skin.json"))
+    skin_json = os.path.join(results, "bench_skin.json")
+    skin = benchmark_medians(skin_json)
     default = skin.get("BM_SkinPoseAndTessellate/4")
     fine = skin.get("BM_SkinPoseAndTessellate/8")
     if default is None or fine is None:
         sys.exit("make_evaluation.py: bench_skin.json has no BM_SkinPoseAndTessellate/4 and /8 runs")
     return README_SPEED.format(
         machine=machine, skeleton_table="\n".join(skeleton_lines), skin_default=in_us(default), skin_fine=in_us(fine),
+        skin_patches=int(benchmark_counter(skin_json, "BM_SkinPose", "patches")),
+        rviz_scene=rviz_scaling_scene(results),
         node_cpu=read_text(os.path.join(DOCS, "node_cpu.md")), node_verdict=node_cpu_verdict(),
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")), rviz_verdict=rviz_verdict,
         rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
@@ -330,30 +454,36 @@ def write_readme_section(text):
 
 
 def main():
+    global DOCS
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     results = sys.argv[1]
-    machine = read_text(os.path.join(results, "machine.txt"))
-    fourier_lines, fourier_ratio, fourier_gain = fourier_section()
+    record = run_record(results)
+    DOCS = need(os.path.join(results, "docs"))
+    machine = record["machine"]
+    fourier_lines, fourier_sentence = fourier_section()
     skeleton_lines = skeleton_section(results)
     tessellation_lines = tessellation_section()
-    budget_lines, savings = scene_budget_section(results)
+    budget_lines, savings, budget_scene = scene_budget_section(results)
     relief_table = relief_modes_section(results)
     skin_lines, skin_verdict = skin_map_section(results)
-    stability = read_text(os.path.join(DOCS, "stability.md"))
+    stability = read_text(os.path.join(SOURCE_DOCS, "stability.md"))
     if stability.startswith("# "):
         stability = stability.split("\n", 1)[1].strip()
     stability = stability.replace("\n## ", "\n### ")  # its sections sit under this report's
     rviz_verdict = rviz_scaling_verdict(results)
     text = TEMPLATE.format(
-        machine=machine,
-        fourier_table="\n".join(fourier_lines), fourier_ratio=fourier_ratio, fourier_gain=fourier_gain,
+        machine=machine, duration=record["duration"], spread=run_spread_sentence(results),
+        fourier_table="\n".join(fourier_lines), fourier_sentence=fourier_sentence,
         skeleton_table="\n".join(skeleton_lines),
         node_cpu=read_text(os.path.join(DOCS, "node_cpu.md")),
         tessellation_table="\n".join(tessellation_lines),
         budget_table="\n".join(budget_lines), budget_savings="\n".join("- " + s for s in savings),
+        budget_scene=budget_scene,
         relief_table=relief_table,
         skin_table="\n".join(skin_lines), skin_verdict=skin_verdict,
+        smooth_folds=smooth_fold_sentence(results),
+        rviz_scene=rviz_scaling_scene(results),
         rviz_verdict=rviz_verdict,
         rviz_scaling=read_text(os.path.join(DOCS, "rviz_scaling.md")),
         rviz_memory=read_text(os.path.join(DOCS, "rviz_memory.md")),
@@ -363,23 +493,25 @@ def main():
         relief_flicker=read_text(os.path.join(DOCS, "relief_flicker.md")),
         skin_distance=read_text(os.path.join(DOCS, "skin_distance.md")),
         stability=stability)
+    readme = readme_speed_section(results, machine, skeleton_lines, rviz_verdict)
     with open(os.path.join(DOCS, "EVALUATION.md"), "w") as f:
         f.write(text)
-    write_readme_section(readme_speed_section(results, machine, skeleton_lines, rviz_verdict))
-    print("wrote docs/EVALUATION.md and the README's Speed section")
+    # Everything was read and written inside the run's folder: only now does docs/ change.
+    publish(DOCS)
+    write_readme_section(readme)
+    print("published %s to docs/ and wrote the README's Speed section" % results)
 
 
 TEMPLATE = """# Speed against accuracy
 
 "Both speed and accuracy count: chart one against the other, test stability where methods fail,
-and model no more than a scene needs." Everything below is regenerated by one command,
-`scripts/evaluate.sh` (about 15 minutes on the machine below), from the project's own tools and
+and model no more than a scene needs." Everything below was written from one run of one command,
+`scripts/evaluate.sh` ({duration} on the machine below), from the project's own tools and
 benchmarks; medians of repeated runs throughout, with ratios against a peer (robot_state_publisher,
-rviz's RobotModel, brute force, uniform tessellation) measured in the same run.
+rviz's RobotModel, spencer's walking-man meshes, brute force, uniform tessellation) measured in
+the same run.
 
-Machine and run: {machine} The machine is a virtual one on a shared host: the same code's
-absolute times vary by about 15 % from run to run, so the ratios, against peers measured in the
-same run, are the figures to compare.
+Machine and run: {machine} {spread}
 
 ## Motion: Fourier order m
 
@@ -390,9 +522,7 @@ measures the fit against the capture; `scripts/chart_fourier_order.py` draws it.
 
 {fourier_table}
 
-Going from m = 1 to m = 6 costs {fourier_ratio:.1f}× the evaluation time and cuts the fit's
-joint-position error {fourier_gain:.1f}×; above m = 6 the error stays put (the capture's own noise
-and the skeleton's proportions dominate), which is why `config/motions/walk.yaml` stops at 6.
+{fourier_sentence}
 
 Skeleton update per tick (`bench_skeleton_update`, Google Benchmark, median of 5 repetitions):
 
@@ -418,7 +548,7 @@ point on the patch, not the bound) against triangles and time. The real skin in 
 
 `scene_budget` (src/tools/scene_budget.cpp): the dressed human (jacket + skirt) over 60 walk poses
 (one gait cycle, played twice, the second timed),
-alone at 1, 5 and 20 m from the camera and as rows of 5 and 10 humans 1 m apart seen from 5 m;
+{budget_scene};
 automatic level of detail (1 px screen-space error bound, rviz's default 0.8 rad field of view on
 a 1000 px viewport; the display's default) against the fixed levels 4 (the core's default,
 Skin::kDefaultLevel) and 8. Error columns are the
@@ -467,8 +597,8 @@ difference (×8): `docs/relief_switch/`.
 `bench_relief` (Google Benchmark, median of 5 repetitions, one core), with the brute-force
 nearest-seed renderer as the reference the tests compare against. The fast renderer rasterises
 each cell sector by sector; it differs from the reference only in which cell owns a few pixels
-along furrows — at most 0.1 % of pixels at 256² (0.009–0.085 % measured, none with straight
-walls), `SkinRelief.FastRenderMatchesReferenceWithinTolerance`:
+along furrows — at most 0.1 % of pixels at 256², the tolerance
+`SkinRelief.FastRenderMatchesReferenceWithinTolerance` asserts:
 
 {skin_table}
 
@@ -485,8 +615,7 @@ piecewise-planar fold, per number of Gaussians; each term costs one exp() per pi
 
 ![Smooth folds](relief/smooth_fold_rms_vs_harmonics.png)
 
-The displayed folds are the exact tile blurred through its own Fourier series; 20 harmonics per
-cell keep I, Y and X within 5 % RMS of h1 at alpha 0.6 and 0.8.
+{smooth_folds}
 
 ![Fold strength against the bend](relief/fold_strength_vs_flexion.png)
 
@@ -528,12 +657,10 @@ is the nearest distance, cropped to the skin: relief (left), flat (right).
 
 ![rviz scaling](rviz_scaling.png)
 
-`bench/rviz_scaling.py`: 1 to 30 humans walking in place (rows of 10, 1 m apart; rows 3 m behind
-one another, seen from higher up, beyond 10), all in view of a camera 12 m away, and 10 humans at
-several distances; DressedHuman displays (jacket + skirt, automatic level of detail; vertices evaluated by
-the vertex shader and by the CPU, which `Vertex Evaluation: Automatic`, the default, picks on this
-software renderer) against the same number of RobotModel displays of
-the URDF, in one run. Each point saves a screenshot as its measurement starts and as it ends
+`bench/rviz_scaling.py`: {rviz_scene} (rows of 10, 1 m apart; rows 3 m behind
+one another, seen from higher up, beyond 10); DressedHuman displays (jacket + skirt, automatic
+level of detail; vertices evaluated by the vertex shader and by the CPU) against the same number
+of RobotModel displays of the URDF, in one run. Each point saves a screenshot as its measurement starts and as it ends
 (`docs/rviz_scaling/`) and counts only if every human is drawn in both.
 
 {rviz_scaling}
@@ -588,7 +715,7 @@ all frames), `bench_skeleton_update`, median of 5 repetitions:
 
 {skeleton_table}
 
-Skin, `bench_skin`: pose + tessellate the whole skin (188 patches) at the default level 4 in
+Skin, `bench_skin`: pose + tessellate the whole skin ({skin_patches} patches) at the default level 4 in
 {skin_default:.0f} µs, at level 8 in {skin_fine:.0f} µs (median, one core).
 
 Node CPU against robot_state_publisher, same URDF, same rate (`bench/node_cpu.py`; each TF
@@ -598,8 +725,8 @@ stream has one subscriber; RSP is fed by a JointState stream at the same rate):
 
 {node_verdict}
 
-rviz with 1, 5 and 10 humans walking in place, all in view 12 m away (a screenshot at the start
-and end of each point proves every human drawn), DressedHuman displays (jacket + skirt, automatic
+rviz with {rviz_scene} (a screenshot at the start and end of each
+point proves every human drawn), DressedHuman displays (jacket + skirt, automatic
 level of detail) against the same number of RobotModel displays of the same URDF
 (`bench/rviz_scaling.py`):
 

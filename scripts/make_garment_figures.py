@@ -54,7 +54,7 @@ def main():
                 ax.set_title("%s\n(%s)" % (title, pose_name), fontsize=9)
     fig.suptitle("Garments as C1 bicubic Bezier patch sets following the skeleton (cf. seed Fig. 9(a))", fontsize=10)
     fig.tight_layout()
-    out = os.path.join(ROOT, "docs", "garments_fig9.png")
+    out = os.path.join(os.environ.get("DRESSED_HUMAN_DOCS", os.path.join(ROOT, "docs")), "garments_fig9.png")  # evaluate.sh: its run's folder
     fig.savefig(out, dpi=90)
     print("wrote", out)
 

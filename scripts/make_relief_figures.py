@@ -36,7 +36,7 @@ import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build_relief")
-OUT = os.path.join(ROOT, "docs", "relief")
+OUT = os.path.join(os.environ.get("DRESSED_HUMAN_DOCS", os.path.join(ROOT, "docs")), "relief")  # evaluate.sh: its run's folder
 # Raw tool output (uncompressed PNGs, ~13 MB) stays in the build tree; only panels go to docs/.
 RAW = os.path.join(BUILD, "relief_raw")
 
@@ -96,7 +96,8 @@ def main():
     grid(names, titles, "fig8_wrinkles_vs_compression.png", len(alphas),
          "Buckling wrinkles growing with compression (Lambert, Eq. 12)", cell=2.2)
     grid(["wrinkle_growth_exact", "wrinkle_growth_gauss8", "wrinkle_growth_smooth"],
-         ["exact folds", "8 Gaussians", "smooth (20 harmonics per cell)"], "wrinkle_growth.png", 3,
+         ["exact folds", "8 Gaussians",
+          "smooth (%s harmonics per cell)" % read_csv("smooth_fold_error.csv")[0]["default_harmonics_per_cell"]], "wrinkle_growth.png", 3,
          "alpha per row: 1.0, 0.97, 0.92, 0.85, 0.75, 0.6 (top to bottom)", cell=4.0)
 
     errors = read_csv("gaussian_error.csv")
@@ -171,7 +172,8 @@ def smooth_fold_figure():
         axis.set_yscale("log")
         axis.set_ylabel("RMS height error / h1")
         axis.grid(True, which="both", alpha=0.3)
-    by_harmonics.axvline(20, color="gray", lw=0.8, ls=":", label="default: 20")
+    default = int(errors[0]["default_harmonics_per_cell"])
+    by_harmonics.axvline(default, color="gray", lw=0.8, ls=":", label="default: %d" % default)
     by_harmonics.set_xlabel("harmonics kept per cell (across and along); blur 0.59 / that, in cells")
     by_harmonics.legend(fontsize=7)
     by_time.set_xlabel("ms to make a 256 x 256 map (exact tile + low pass), this machine")
@@ -316,6 +318,7 @@ def fold_closeups_figure():
 
 
 if __name__ == "__main__":
+    os.makedirs(OUT, exist_ok=True)
     if len(sys.argv) > 2 and sys.argv[2] == "wrinkle_placement":
         wrinkle_placement_figure()
     elif len(sys.argv) > 2 and sys.argv[2] == "fold_closeups":
