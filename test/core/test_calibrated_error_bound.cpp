@@ -1,17 +1,25 @@
-// CalibratedErrorBound (tessellation.h): calibrated at rest, the bound stays above the error the
-// triangulation really has in every pose of a walk, and within 2x of it, for the skin and every
-// garment of the default outfits -- where the a-priori bound is up to 10x the error. Level of
-// detail chosen from it therefore draws about the triangles the screen error asks for.
+// CalibratedErrorBound (tessellation.h), checked against what the display draws: the mesh
+// HumanModel hands the renderer (the tessellator's output with its stitched, crack-free edges
+// between patches of different levels, at the levels automatic level of detail picks), measured
+// densely against the exact Bezier surface -- not with measuredTessellationError, the ideal-grid
+// measurement the bound is calibrated with, which would only check the calibration against itself.
+// What README states and this asserts, over the skin and every garment of the three outfits, in
+// four poses of a walk, at automatic levels from three distances and two screen heights and at
+// fixed levels 1..8: never below any patch's drawn error, and each part's largest bound within 2x
+// of its largest drawn error. Single patches' ratios are printed, not asserted
+// against 2x: measured up to 4.3x (a level of detail is bounded by a part's worst patches).
 #include "dressed_human/core/surfaces/tessellation.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "dressed_human/core/garments/garment.h"
+#include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/surfaces/skin.h"
 #include "garment_test_support.h"
 
@@ -20,79 +28,148 @@ namespace {
 
 using namespace garment_test;
 
-struct Ratios {
-  double lowest = 1e300;   // calibrated / measured, over patches with a measurable error
-  double highest = 0.0;
-  double apriori_highest = 0.0;  // the a-priori bound / measured, for the record
-  double part_worst_ratio = 0.0;  // the part's largest calibrated bound / its largest measured error
-  std::size_t patches = 0;
-  std::size_t within_two = 0;
+// One patch as drawn: the largest distance between its drawn triangles and the exact patch, and
+// the level those triangles realize.
+struct DrawnPatch {
+  double error = 0.0;
+  // floor(1 / the widest u or v span of its triangles): what the bound's level means (triangles
+  // spanning at most 1/n). Not Tessellator::levels(): a level-1 patch promoted to 2 for its
+  // stitched edges keeps whole-edge triangles along its unstitched edges.
+  int level = Tessellator::kMaxLevel;
 };
 
-// Calibrated on `rest`, checked on each of `posed` at `level`.
-Ratios compare(const std::vector<BezierPatch>& rest, const std::vector<std::vector<BezierPatch>>& posed, int level) {
-  const CalibratedErrorBound calibrated(rest);
-  Ratios ratios;
-  for (const std::vector<BezierPatch>& patches : posed) {
-    double worst_measured = 0.0, worst_bound = 0.0;
-    for (std::size_t p = 0; p < patches.size(); ++p) {
-      const double measured = measuredTessellationError(patches[p], level);
-      const double bound = calibrated.bound(p, patches[p], level);
-      worst_measured = std::max(worst_measured, measured);
-      worst_bound = std::max(worst_bound, bound);
-      if (measured < 1e-5) {  // under 0.01 mm: no meaningful ratio, but the bound must not be below it
-        EXPECT_GE(bound + 1e-9, measured);
-        continue;
+// Every patch of a drawn part, from what the renderer is handed: the part's mesh, with each
+// triangle corner's (u, v) in the triangle's own patch (PatchCornerSplit), so ring triangles
+// stitched to a neighbour's finer edge and fans at welded poles are measured where they lie.
+// The distance is to the exact patch at the same (u, v), not to the closest surface point: the
+// bound bounds that distance (the interpolation error of the patch over a triangle of its
+// parameter domain), the relief and normals are mapped by that (u, v), and it is at least the
+// closest-point distance, so a bound that holds for it holds for what the eye sees.
+// Every triangle is sampled at barycentric steps of 1 / samples_per_side (the calibration's
+// measurement takes 4 steps per cell side on the ideal grid): the error in a triangle is a bump
+// that vanishes at its corners, and at 12 steps every bound / error ratio of the test below is
+// within 1 % of what 24 steps give (measured: the printed ratios change by at most 0.01).
+std::vector<DrawnPatch> measureDrawnPatches(const SurfacePart& part, int samples_per_side) {
+  const std::vector<BezierPatch>& patches = *part.patches;
+  const TriangleMesh& mesh = *part.mesh;
+  const PatchCornerSplit& corners = *part.corners;
+  std::vector<DrawnPatch> drawn(patches.size());
+  std::vector<double> widest_span(patches.size(), 0.0);
+  const double step = 1.0 / samples_per_side;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const std::uint32_t k = mesh.triangle_patch[t];
+    std::array<Eigen::Vector3d, 3> position;
+    std::array<Eigen::Vector2d, 3> uv;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::uint32_t split = corners.indices[3 * t + c];
+      position[c] = mesh.positions[corners.source[split]].cast<double>();
+      uv[c] = corners.uv[split].cast<double>();
+    }
+    const Eigen::Vector2d span = uv[0].cwiseMax(uv[1]).cwiseMax(uv[2]) - uv[0].cwiseMin(uv[1]).cwiseMin(uv[2]);
+    widest_span[k] = std::max(widest_span[k], span.maxCoeff());
+    for (int i = 0; i <= samples_per_side; ++i) {
+      for (int j = 0; i + j <= samples_per_side; ++j) {
+        const double a = i * step, b = j * step, c = 1.0 - a - b;
+        const Eigen::Vector2d at = a * uv[0] + b * uv[1] + c * uv[2];
+        const Eigen::Vector3d on_triangle = a * position[0] + b * position[1] + c * position[2];
+        drawn[k].error = std::max(drawn[k].error, (patches[k].position(at.x(), at.y()) - on_triangle).norm());
       }
-      const double ratio = bound / measured;
-      ratios.lowest = std::min(ratios.lowest, ratio);
-      ratios.highest = std::max(ratios.highest, ratio);
-      ratios.apriori_highest = std::max(ratios.apriori_highest, geometricErrorBound(patches[p], level) / measured);
-      ++ratios.patches;
-      if (ratio <= 2.0) ++ratios.within_two;
     }
-    ratios.part_worst_ratio = std::max(ratios.part_worst_ratio, worst_bound / worst_measured);
   }
-  return ratios;
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    // The corners' (u, v) are floats: 1/3 reads 0.33333334.
+    if (widest_span[k] > 0.0) drawn[k].level = static_cast<int>(std::floor(1.0 / widest_span[k] + 1e-3));
+  }
+  return drawn;
 }
 
-void expectTight(const std::string& name, const std::vector<BezierPatch>& rest,
-                 const std::vector<std::vector<BezierPatch>>& posed) {
+constexpr int kSamplesPerSide = 12;
+
+HumanModelSettings settingsFor(Outfit outfit) {
+  HumanModelSettings settings;
+  settings.outfit = outfit;
+  settings.garment_directory = sourcePath("config/garments");
+  return settings;
+}
+
+// Levels of detail as the display sets them: automatic, from a camera at a few distances and
+// screen heights (mixed levels up to the default max_level 16, so stitched edges), and fixed levels.
+std::vector<std::pair<std::string, LevelOfDetail>> levelsOfDetail() {
+  std::vector<std::pair<std::string, LevelOfDetail>> lods;
+  for (const double distance : {1.5, 4.0, 12.0}) {
+    for (const double screen_height : {600.0, 1440.0}) {
+      LevelOfDetail automatic;
+      automatic.automatic = true;
+      automatic.camera = CameraView{Eigen::Vector3d(distance, 0.5 * distance, 1.4), 0.8, screen_height};
+      char name[64];
+      std::snprintf(name, sizeof name, "auto %.1f m %.0f px", distance, screen_height);
+      lods.emplace_back(name, automatic);
+    }
+  }
   for (const int level : {1, 2, 3, 4, 6, 8}) {
-    const Ratios r = compare(rest, posed, level);
-    std::printf("%-8s level %d: calibrated/measured %.2f..%.2f (%zu of %zu within 2x), part max %.2f; a-priori up to %.1fx\n",
-                name.c_str(), level, r.lowest, r.highest, r.within_two, r.patches, r.part_worst_ratio, r.apriori_highest);
-    EXPECT_GE(r.lowest, 1.0) << name << " level " << level << ": the calibrated bound is below the measured error";
-    // The figure a level of detail lives by: the part's largest bound against its largest error.
-    EXPECT_LE(r.part_worst_ratio, 2.0) << name << " level " << level;
-    EXPECT_GE(r.within_two, r.patches * 8 / 10) << name << " level " << level << ": most patches within 2x";
+    LevelOfDetail fixed;
+    fixed.level = level;
+    lods.emplace_back("level " + std::to_string(level), fixed);
   }
+  return lods;
 }
 
-std::vector<SkeletonPose> poses() { return walkPoses(16, body().shape); }
+// Under a micrometre the drawn error is float rounding of the vertices, not tessellation.
+constexpr double kMeasurableError = 1e-6;
 
-TEST(CalibratedErrorBound, SkinBoundHoldsAndIsTightOverAWalk) {
-  Skin skin(skeleton(), body());
-  const std::vector<BezierPatch> rest = skin.patches();
-  std::vector<std::vector<BezierPatch>> posed;
-  for (const SkeletonPose& pose : poses()) {
-    skin.pose(pose);
-    posed.push_back(skin.patches());
+struct PartRatios {
+  double lowest = 1e300;  // bound / drawn error, over patches with a measurable error
+  double highest = 0.0;
+  std::size_t patches = 0;
+  std::size_t within_two = 0;
+  double part_worst_ratio = 0.0;  // in the worst pose: the part's largest bound / its largest drawn error
+};
+
+// Adds one pose of one part to `ratios`; every patch's bound must hold.
+void compareWithDrawn(const HumanModel& model, std::size_t p, const std::string& lod_name, PartRatios& ratios) {
+  const SurfacePart& part = model.parts()[p];
+  const std::vector<DrawnPatch> drawn = measureDrawnPatches(part, kSamplesPerSide);
+  double worst_drawn = 0.0, worst_bound = 0.0;
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    const double bound = model.partErrorBound(p).bound(k, (*part.patches)[k], drawn[k].level);
+    EXPECT_GE(bound + kMeasurableError, drawn[k].error)
+        << part.name << " patch " << k << " level " << drawn[k].level << ", " << lod_name << ": bound below the drawn error";
+    worst_drawn = std::max(worst_drawn, drawn[k].error);
+    worst_bound = std::max(worst_bound, bound);
+    if (drawn[k].error < kMeasurableError) continue;
+    const double ratio = bound / drawn[k].error;
+    ratios.lowest = std::min(ratios.lowest, ratio);
+    ratios.highest = std::max(ratios.highest, ratio);
+    ++ratios.patches;
+    if (ratio <= 2.0) ++ratios.within_two;
   }
-  expectTight("skin", rest, posed);
+  if (worst_drawn > kMeasurableError) ratios.part_worst_ratio = std::max(ratios.part_worst_ratio, worst_bound / worst_drawn);
 }
 
-TEST(CalibratedErrorBound, GarmentBoundsHoldAndAreTightOverAWalk) {
-  for (const std::string name : {"jacket", "skirt", "pants", "one_piece"}) {
-    Garment garment(garmentFile(name), skeleton(), body().shape);
-    const std::vector<BezierPatch> rest = garment.patches();
-    std::vector<std::vector<BezierPatch>> posed;
-    for (const SkeletonPose& pose : poses()) {
-      garment.pose(pose);
-      posed.push_back(garment.patches());
+// README: the bound "never below the drawn error; each part's largest within 2x of its largest".
+TEST(CalibratedErrorBound, HoldsForTheDrawnMeshAndIsWithinTwiceItsErrorOverAWalk) {
+  const std::vector<SkeletonPose> poses = walkPoses(4, body().shape);
+  std::size_t checked = 0;
+  for (const Outfit outfit : {Outfit::kJacketSkirt, Outfit::kJacketPants, Outfit::kOnePiece}) {
+    HumanModel model(skeleton(), body(), settingsFor(outfit));
+    for (const auto& [lod_name, lod] : levelsOfDetail()) {
+      std::vector<PartRatios> ratios(model.parts().size());
+      for (const SkeletonPose& pose : poses) {
+        model.update(pose.root, pose.bone_in_world, lod);
+        for (std::size_t p = 0; p < model.parts().size(); ++p) compareWithDrawn(model, p, lod_name, ratios[p]);
+      }
+      for (std::size_t p = 0; p < ratios.size(); ++p) {
+        const PartRatios& r = ratios[p];
+        const std::string& name = model.parts()[p].name;
+        std::printf("%-9s %-19s bound/drawn %.2f..%.2f (%zu of %zu within 2x), part's largest %.2f\n", name.c_str(),
+                    lod_name.c_str(), r.lowest, r.highest, r.within_two, r.patches, r.part_worst_ratio);
+        // The figure a level of detail lives by: the part's largest bound against its largest error.
+        EXPECT_LE(r.part_worst_ratio, 2.0) << name << ", " << lod_name;
+        checked += r.patches;
+      }
     }
-    expectTight(name, rest, posed);
   }
+  EXPECT_GT(checked, 20000u);  // patch-poses with a measurable error
 }
 
 TEST(CalibratedErrorBound, BadQueriesThrowAndEqualBodiesShareOneCalibration) {
