@@ -43,7 +43,10 @@ class GlitchingOrigin:
 class DisplayAbsurdTfTest(unittest.TestCase):
     def test_rviz_survives_and_the_human_comes_back(self):
         rospy.init_node("test_display_absurd_tf")
-        directory = tempfile.mkdtemp()
+        # Kept under ctest's screenshot folder (build/test_screenshots/display_absurd_tf) to be looked at.
+        directory = os.path.join(os.environ.get("DRESSED_HUMAN_SCREENSHOTS", tempfile.mkdtemp()),
+                                 "display_absurd_tf")
+        os.makedirs(directory, exist_ok=True)
         origin = GlitchingOrigin()
         # The camera stays on the world's origin: a view that followed the human to 1e308 m
         # would be rviz's own problem, not the display's.
