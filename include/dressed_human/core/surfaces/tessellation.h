@@ -132,7 +132,7 @@ class CalibratedErrorBound {
   CalibratedErrorBound() = default;  // no patches: callers fall back to the a-priori bound
   explicit CalibratedErrorBound(const std::vector<BezierPatch>& reference);
   // The calibration of `reference`, built once for as long as someone holds it: every human of
-  // the same body and outfit shares one (building it measures ~1.1 million surface points for the skin, ~40 ms).
+  // the same body and outfit shares one (building it measures ~1.1 million surface points for the skin, ~30 ms).
   static std::shared_ptr<const CalibratedErrorBound> shared(const std::vector<BezierPatch>& reference);
 
   std::size_t patchCount() const { return scale_.size(); }
