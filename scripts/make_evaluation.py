@@ -552,7 +552,7 @@ point on the patch, not the bound) against triangles and time. The real skin in 
 automatic level of detail (1 px screen-space error bound, rviz's default 0.8 rad field of view on
 a 1000 px viewport; the display's default) against the fixed levels 4 (the core's default,
 Skin::kDefaultLevel) and 8. Error columns are the
-error bound the level of detail uses per patch (CalibratedErrorBound: calibrated on the measured error, within 2× of it), in mm and projected to pixels at the patch's nearest point. The
+error bound the level of detail uses per patch (CalibratedErrorBound: never below a patch's error as drawn, each part's largest bound within 2× of its largest drawn error, test_calibrated_error_bound), in mm and projected to pixels at the patch's nearest point. The
 "GPU vertices" rows are what rviz's thread pays when the vertex shader evaluates the patches
 (the display's choice on a graphics card): posing the control points and choosing levels, plus a new mesh layout
 when the levels change; their levels sit on a coarse ladder that only drops after 2 s, hence
