@@ -73,11 +73,28 @@ def publish(run_docs):
         if os.path.isdir(os.path.join(run_docs, folder)):
             shutil.rmtree(os.path.join(SOURCE_DOCS, folder), ignore_errors=True)
     shutil.copytree(run_docs, SOURCE_DOCS, dirs_exist_ok=True)
+    for folder, _, files in os.walk(SOURCE_DOCS):
+        for name in files:
+            if name.endswith((".md", ".csv")):
+                path = os.path.join(folder, name)
+                with open(path) as f:
+                    text = f.read()
+                if as_published(text) != text:
+                    with open(path, "w") as f:
+                        f.write(as_published(text))
 
 
 def read_text(path):
     with open(need(path)) as f:
-        return f.read().strip()
+        return as_published(f.read().strip())
+
+
+def as_published(text):
+    """The run's own paths (benchmarks name their screenshot folders) as they read once published:
+    build/evaluation/<run>/docs/... becomes docs/..."""
+    if DOCS is None:
+        return text
+    return text.replace(os.path.relpath(DOCS, ROOT) + "/", "docs/")
 
 
 def read_csv(path):

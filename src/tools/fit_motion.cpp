@@ -395,6 +395,36 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
   return text.str();
 }
 
+// Where the fit is poorest, so that a user can look there: the worst frame and joint of each
+// measure, with the joint's fitted and sampled angles there (the middle one, x, is the y-x-z
+// split's: near +-90 degrees its other two are ill-defined); and every mean angle a body would
+// not hold (over 90 degrees from rest about a twist or side axis).
+void reportWorst(const dh::MotionFit& fit, const dh::FitAccuracy& accuracy, std::ostream& out) {
+  const auto where = [&](const char* what, const dh::PositionError& e) {
+    if (e.samples == 0 || e.worst_joint < 0 || e.worst_frame >= fit.times.size()) return;
+    const auto first = static_cast<std::size_t>(e.worst_joint) * dh::kDofsPerJoint;
+    out << "  worst " << what << ": " << dh::humanJointNames()[static_cast<std::size_t>(e.worst_joint)] << " at frame "
+        << fit.skipped_frames + e.worst_frame << " (" << format(fit.times[e.worst_frame], 3) << " s), "
+        << format(e.max_cm, 2) << " cm; its y, x, z there: sampled";
+    for (std::size_t d = 0; d < dh::kDofsPerJoint; ++d) out << ' ' << format(fit.samples[first + d][e.worst_frame] * kRadiansToDegrees, 1);
+    out << " deg, fitted";
+    for (std::size_t d = 0; d < dh::kDofsPerJoint; ++d) {
+      out << ' ' << format(fit.motion.series(first + d).valueBySummation(fit.times[e.worst_frame]) * kRadiansToDegrees, 1);
+    }
+    out << " deg\n";
+  };
+  where("against the capture", accuracy.against_capture);
+  where("against the unsmoothed angles", accuracy.against_samples);
+  for (std::size_t i = 0; i < dh::kDofCount; ++i) {
+    const dh::SeriesFitReport& r = fit.reports[i];
+    const double mean = fit.motion.series(i).a0 / 2.0;
+    if (r.driven && r.is_angle && std::abs(mean) > 0.5 * M_PI) {
+      out << "  suspect: " << fit.motion.seriesName(i) << " has a mean of " << format(mean * kRadiansToDegrees, 1)
+          << " deg, more than 90 from rest\n";
+    }
+  }
+}
+
 void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::MotionFit& fit,
             const dh::FitAccuracy& accuracy, const std::optional<dh::FitAccuracy>& default_body) {
   std::ostream& out = std::cerr;
@@ -430,6 +460,7 @@ void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::M
   out << "  joint positions vs our skeleton on the unsmoothed angles: mean " << format(accuracy.against_samples.mean_cm, 3)
       << " cm, max " << format(accuracy.against_samples.max_cm, 3) << " cm; root translation: mean "
       << format(accuracy.root_translation.mean_cm, 3) << " cm\n";
+  if (args.verbose) reportWorst(fit, accuracy, out);
 }
 
 }  // namespace

@@ -3,13 +3,17 @@
 // to a walk; joint maps name what is missing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <functional>
 #include <random>
 #include <sstream>
 #include <string>
 
 #include "dressed_human/core/motion/bvh_file.h"
+#include "dressed_human/core/motion/fit_accuracy.h"
+#include "dressed_human/core/motion/motion_fit.h"
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 #include "dressed_human/core/motion/mocap_joint_map.h"
 #include "dressed_human/core/motion/mocap_retarget.h"
@@ -117,12 +121,70 @@ TEST(MocapJointMap, YamlMapForOtherNames) {
   EXPECT_TRUE(coordinates.coordinates.root_translation[2].empty());
 }
 
+// An arm raised through the y-x-z split's singularity (the shoulder's x crosses 90 degrees twice a
+// cycle, as a reaching or strutting arm does): the retarget gives back the angles that made it,
+// continuous, and the Fourier order that made them fits them to the capture within a millimetre.
+// decomposeYxz's principal branch turned y and z by half a turn and mirrored x while x > 90
+// degrees, and the smooth series then cut the corner (issue 39).
+TEST(MocapRetarget, AnArmThroughTheGimbalKeepsItsAngles) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
+  const auto& names = humanJointNames();
+  const auto shoulder = static_cast<std::size_t>(
+      std::find_if(names.begin(), names.end(), [](const char* name) { return std::string(name) == "l_shoulder"; }) -
+      names.begin());
+  ASSERT_LT(shoulder, kJointCount);
+  std::vector<std::pair<RigidTransform, JointAngles>> poses;
+  int beyond_the_singularity = 0;
+  for (int f = 0; f < 200; ++f) {  // two cycles of 1 s at the BVH's 0.01 s per frame
+    const double phase = 2.0 * kPi * 0.01 * f;
+    RigidTransform root;
+    root.translation = Eigen::Vector3d(0.0, 0.0, 0.95);
+    JointAngles angles{};
+    angles[shoulder * kDofsPerJoint] = 0.3 * std::sin(phase);
+    angles[shoulder * kDofsPerJoint + 1] = 1.25 + 0.55 * std::sin(phase);
+    angles[shoulder * kDofsPerJoint + 2] = 0.4 * std::cos(phase);
+    beyond_the_singularity += angles[shoulder * kDofsPerJoint + 1] > 0.5 * kPi ? 1 : 0;
+    poses.emplace_back(root, angles);
+  }
+  ASSERT_GT(beyond_the_singularity, 40);
+  const BvhClip clip = parseBvh(bvhOfOurSkeleton(skeleton, poses), "arm.bvh");
+  const SampledMotion motion = retargetBvh(clip, chooseBvhJointMap(clip, "arm.bvh"), skeleton, "arm.bvh");
+  ASSERT_EQ(motion.angles.size(), poses.size());
+  for (std::size_t f = 0; f < poses.size(); ++f) {
+    for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
+      const std::size_t i = shoulder * kDofsPerJoint + d;
+      ASSERT_NEAR(motion.angles[f][i], poses[f].second[i], 1e-6) << "frame " << f << " " << Motion().seriesName(i);
+    }
+  }
+  MotionFitOptions options;
+  options.fixed_order = 1;
+  options.period = 1.0;
+  const MotionFit fit = fitMotion(motion, options);
+  const FitAccuracy accuracy = measureFitAccuracy(skeleton, motion, fit, fit.motion);
+  std::cout << "[ figure   ] arm through x = 90 degrees, order 1: joints against the retarget mean "
+            << accuracy.against_samples.mean_cm << " cm, max " << accuracy.against_samples.max_cm << " cm\n";
+  ASSERT_GT(accuracy.against_samples.samples, 0u);
+  EXPECT_LT(accuracy.against_samples.max_cm, 0.1);
+}
+
 TEST(MocapRetarget, EulerSplitsInverseTheirCompositions) {
   const Eigen::Vector3d yxz(0.3, -0.4, 2.9);
   const Eigen::Matrix3d r = (Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
                              Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) *
                              Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ())).toRotationMatrix();
   EXPECT_LT((decomposeYxz(r) - yxz).norm(), 1e-12);
+  // Beyond x = 90 degrees, and at it: the branch nearest the angles a frame before.
+  const auto compose = [](const Eigen::Vector3d& a) {
+    return (Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitX()) *
+            Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ())).toRotationMatrix();
+  };
+  const Eigen::Vector3d beyond(0.3, 2.0, -0.5);
+  EXPECT_GT((decomposeYxz(compose(beyond)) - beyond).norm(), 1.0);  // the principal branch's other angles
+  EXPECT_LT((decomposeYxzNear(compose(beyond), beyond + Eigen::Vector3d::Constant(0.05)) - beyond).norm(), 1e-12);
+  EXPECT_LT((decomposeYxzNear(compose(yxz), yxz + Eigen::Vector3d(0.1, -0.1, 2.0 * kPi)) -
+             (yxz + Eigen::Vector3d(0.0, 0.0, 2.0 * kPi))).norm(), 1e-12);  // whole turns kept
+  const Eigen::Vector3d gimbal(0.7, 0.5 * kPi, 0.2);
+  EXPECT_LT((decomposeYxzNear(compose(gimbal), Eigen::Vector3d(0.65, 1.5, 0.2)) - gimbal).norm(), 1e-7);
   const Eigen::Vector3d rpy(-0.2, 0.5, -3.0);
   const Eigen::Matrix3d q = (Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) *
                              Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *

@@ -12,11 +12,15 @@ namespace {
 
 class ErrorAccumulator {
  public:
-  void add(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  void add(const Eigen::Vector3d& a, const Eigen::Vector3d& b, std::size_t frame = 0, int joint = -1) {
     const double cm = 100.0 * (a - b).norm();
     sum_ += cm;
     sum_squares_ += cm * cm;
-    result_.max_cm = std::max(result_.max_cm, cm);
+    if (result_.samples == 0 || cm > result_.max_cm) {
+      result_.max_cm = cm;
+      result_.worst_frame = frame;
+      result_.worst_joint = joint;
+    }
     ++result_.samples;
   }
   PositionError result() const {
@@ -105,12 +109,13 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
       if (!sampled.driven[j]) continue;
       const auto bone = static_cast<std::size_t>(skeleton.joint(j).bone);
       const Eigen::Vector3d& ours = fitted_pose.bone_in_world[bone].translation;
-      samples.add(ours, sampled_pose.bone_in_world[bone].translation);
+      const int joint = static_cast<int>(j);
+      samples.add(ours, sampled_pose.bone_in_world[bone].translation, f, joint);
       if (has_capture) {
         const Eigen::Vector3d reference = to_walk * sampled.reference_joint_positions[first + f][j];
-        capture.add(ours, reference);
-        joint_capture[j].add(ours, reference);
-        unsmoothed_capture.add(sampled_pose.bone_in_world[bone].translation, reference);
+        capture.add(ours, reference, f, joint);
+        joint_capture[j].add(ours, reference, f, joint);
+        unsmoothed_capture.add(sampled_pose.bone_in_world[bone].translation, reference, f, joint);
       }
     }
   }

@@ -72,8 +72,9 @@ Eigen::Vector3d firstDistinctDescendant(const BvhClip& clip, const BvhPose& rest
 
 // Our joint angles from target world orientations (nullptr: held at rest), walking the bones
 // parents first so that every local rotation is taken relative to our own parent bone.
+// Each joint's angles on the branch nearest `near` (the frame before; the rest pose, zeros, first).
 JointAngles solveJointAngles(const Skeleton& skeleton, const Eigen::Matrix3d& body,
-                             const std::array<const Eigen::Matrix3d*, kJointCount>& target) {
+                             const std::array<const Eigen::Matrix3d*, kJointCount>& target, const JointAngles& near) {
   JointAngles angles{};
   std::array<Eigen::Matrix3d, kBoneCount> world;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
@@ -84,7 +85,8 @@ JointAngles solveJointAngles(const Skeleton& skeleton, const Eigen::Matrix3d& bo
     if (bone.joint < 0) continue;
     const auto j = static_cast<std::size_t>(bone.joint);
     if (!target[j]) continue;
-    const Eigen::Vector3d yxz = decomposeYxz(rest.transpose() * *target[j]);
+    const Eigen::Vector3d before(near[j * kDofsPerJoint], near[j * kDofsPerJoint + 1], near[j * kDofsPerJoint + 2]);
+    const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * *target[j], before);
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) angles[j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
     world[b] = rest * Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
                Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ());
@@ -265,6 +267,32 @@ Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& r) {
   return {std::atan2(r(0, 2), r(2, 2)), x, std::atan2(r(1, 0), r(1, 1))};
 }
 
+namespace {
+
+double nearestTurn(double angle, double reference) { return reference + std::remainder(angle - reference, 2.0 * M_PI); }
+
+Eigen::Vector3d nearestTurns(const Eigen::Vector3d& angles, const Eigen::Vector3d& reference) {
+  return {nearestTurn(angles[0], reference[0]), nearestTurn(angles[1], reference[1]),
+          nearestTurn(angles[2], reference[2])};
+}
+
+}  // namespace
+
+Eigen::Vector3d decomposeYxzNear(const Eigen::Matrix3d& r, const Eigen::Vector3d& near) {
+  const double cos_x = std::hypot(r(0, 2), r(2, 2));
+  const double x = std::atan2(-r(1, 2), cos_x);
+  if (cos_x < kGimbalCosine) {
+    // Ry(y) Rx(+90) Rz(z) = Ry(y - z) Rx(+90), Ry(y) Rx(-90) Rz(z) = Ry(y + z) Rx(-90).
+    const double defined = std::atan2(-r(2, 0), r(0, 0));
+    const double z = near[2];
+    return nearestTurns({x > 0.0 ? defined + z : defined - z, x, z}, near);
+  }
+  const Eigen::Vector3d principal(std::atan2(r(0, 2), r(2, 2)), x, std::atan2(r(1, 0), r(1, 1)));
+  const Eigen::Vector3d first = nearestTurns(principal, near);
+  const Eigen::Vector3d second = nearestTurns({principal[0] + M_PI, M_PI - x, principal[2] + M_PI}, near);
+  return (first - near).squaredNorm() <= (second - near).squaredNorm() ? first : second;
+}
+
 Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& r) {
   // R = Rz(yaw) Ry(pitch) Rx(roll): third row (-sp, cp sr, cp cr), first column (cy cp, sy cp, -sp).
   const double cos_pitch = std::hypot(r(2, 1), r(2, 2));
@@ -393,7 +421,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
       motion.reference_joint_positions[f][j] =
           motion.reference_scale * (to_ours * (pose.position[source_joint[j]] - pose.position[root]));
     }
-    motion.angles[f] = solveJointAngles(skeleton, body, target_pointer);
+    motion.angles[f] = solveJointAngles(skeleton, body, target_pointer, f > 0 ? motion.angles[f - 1] : JointAngles{});
     Eigen::Vector3d position = motion.root_scale * (to_ours * pose.position[root]);
     position.z() += height_shift;
     motion.root[f].translation = position;
@@ -443,7 +471,11 @@ SampledMotion retargetCoordinates(const OpenSimTable& table, const CoordinateJoi
       const Eigen::Matrix3d relative = to_ours * chainRotation(map.joints[j], joint_columns[j], row, angle_unit) *
                                        to_ours.transpose();
       const Eigen::Matrix3d& rest = our_rest.rotation[static_cast<std::size_t>(skeleton.joint(j).bone)];
-      const Eigen::Vector3d yxz = decomposeYxz(rest.transpose() * relative * rest);
+      const std::size_t first = j * kDofsPerJoint;
+      const Eigen::Vector3d before = f > 0 ? Eigen::Vector3d(motion.angles[f - 1][first], motion.angles[f - 1][first + 1],
+                                                             motion.angles[f - 1][first + 2])
+                                           : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * relative * rest, before);
       for (std::size_t d = 0; d < kDofsPerJoint; ++d) motion.angles[f][j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
     }
     const Eigen::Matrix3d body =

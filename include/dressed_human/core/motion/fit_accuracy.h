@@ -23,6 +23,9 @@ struct PositionError {
   double rms_cm = 0.0;
   double max_cm = 0.0;
   std::size_t samples = 0;
+  // Where max_cm was: the frame of the fitted window (fit.times' index) and our joint (-1: none).
+  std::size_t worst_frame = 0;
+  int worst_joint = -1;
 };
 
 struct FitAccuracy {

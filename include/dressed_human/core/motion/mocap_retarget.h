@@ -63,6 +63,12 @@ struct SampledMotion {
 // (cos x < 1e-8) z = 0 and y takes y - z (x = +90 degrees) or y + z (x = -90); the angles rebuild
 // R to ~3e-8 everywhere, but y and z jump where a motion passes through x = +-90 degrees.
 Eigen::Vector3d decomposeYxz(const Eigen::Matrix3d& rotation);
+// The same rotation's angles on the branch nearest `near` (a joint's angles a frame before, or
+// its rest pose): of (y, x, z) and (y + pi, pi - x, z + pi), each shifted by whole turns to lie
+// nearest, the one nearest `near`; at gimbal lock z stays at near's and y takes the rest. A
+// joint moving through x = +-90 degrees keeps continuous angles, which decomposeYxz's principal
+// branch breaks by half a turn in y and z (and a smooth Fourier series then cuts the corner).
+Eigen::Vector3d decomposeYxzNear(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& near);
 // R = Rz(yaw) Ry(pitch) Rx(roll) -> (roll, pitch, yaw); at pitch +-90 degrees roll = 0.
 Eigen::Vector3d decomposeRollPitchYaw(const Eigen::Matrix3d& rotation);
 
