@@ -66,7 +66,8 @@ const char* const kUsage =
     "  --sweep-csv FILE      also write accuracy and evaluation cost for m = 1..--sweep-max\n"
     "  --sweep-max M         highest order of the sweep (default 12)\n"
     "  --timing-calls N      MotionEvaluator::evaluate calls timed per order in the sweep (default 200000)\n"
-    "  -v, --verbose         also the joint-position error of every joint\n"
+    "  -v, --verbose         also the joint-position error of every joint, the worst joint and frame,\n"
+    "                        and mean angles more than 90 degrees from rest\n"
     "  -q, --quiet           no report on standard error\n"
     "  -h, --help            this text\n";
 

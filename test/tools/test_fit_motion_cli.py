@@ -120,6 +120,15 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
             self.assertEqual(code, 0, stderr)
             self.assertTrue(os.path.getsize(output) > 0)
 
+    def test_verbose_names_where_the_fit_is_poorest(self):
+        code, stderr = run("--max-order", "2", "--verbose")
+        self.assertEqual(code, 0, stderr)
+        worst = [line for line in stderr.splitlines() if line.strip().startswith("worst against the capture: ")]
+        self.assertEqual(len(worst), 1, stderr)
+        # A joint of ours, the frame and time, the error, and the joint's angles there.
+        self.assertRegex(worst[0], r"worst against the capture: [lr]?_?[a-z]+ at frame \d+ \([\d.]+ s\), [\d.]+ cm; "
+                                   r"its y, x, z there: sampled( -?[\d.]+){3} deg, fitted( -?[\d.]+){3} deg")
+
 
 if __name__ == "__main__":
     unittest.main(argv=[sys.argv[0]])
