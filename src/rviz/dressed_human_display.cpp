@@ -36,16 +36,20 @@ DressedHumanDisplay::DressedHumanDisplay()
       relief_properties_(new ReliefProperties(this)),
       lod_properties_(new LodProperties(this)),
       debug_properties_(new DebugProperties(this)) {
-  connect(body_properties_.get(), SIGNAL(descriptionChanged()), this, SLOT(loadRobotDescription()));
-  connect(body_properties_.get(), SIGNAL(shapeChanged()), this, SLOT(updateBodyShape()));
-  connect(body_properties_.get(), SIGNAL(skinColourChanged()), this, SLOT(rebuildHumans()));
-  connect(crowd_properties_.get(), SIGNAL(changed()), this, SLOT(loadCrowdFile()));
-  connect(crowd_properties_.get(), SIGNAL(topicChanged()), this, SLOT(updateSubscription()));
-  connect(garment_properties_.get(), SIGNAL(changed()), this, SLOT(rebuildHumans()));
-  connect(relief_properties_.get(), SIGNAL(appearanceChanged()), this, SLOT(updateAppearance()));
-  connect(relief_properties_.get(), SIGNAL(skinMapChanged()), this, SLOT(regenerateSkinRelief()));
-  connect(lod_properties_.get(), SIGNAL(vertexEvaluationChanged()), this, SLOT(updateVertexEvaluation()));
-  connect(debug_properties_.get(), SIGNAL(changed()), this, SLOT(updateAppearance()));
+  // Member-function pointers: a renamed signal or slot fails to compile, not silently at run time.
+  connect(body_properties_.get(), &BodyProperties::descriptionChanged,
+          this, &DressedHumanDisplay::loadRobotDescription);
+  connect(body_properties_.get(), &BodyProperties::shapeChanged, this, &DressedHumanDisplay::updateBodyShape);
+  connect(body_properties_.get(), &BodyProperties::skinColourChanged, this, &DressedHumanDisplay::rebuildHumans);
+  connect(crowd_properties_.get(), &CrowdProperties::changed, this, &DressedHumanDisplay::loadCrowdFile);
+  connect(crowd_properties_.get(), &CrowdProperties::topicChanged, this, &DressedHumanDisplay::updateSubscription);
+  connect(garment_properties_.get(), &GarmentProperties::changed, this, &DressedHumanDisplay::rebuildHumans);
+  connect(relief_properties_.get(), &ReliefProperties::appearanceChanged, this, &DressedHumanDisplay::updateAppearance);
+  connect(relief_properties_.get(), &ReliefProperties::skinMapChanged,
+          this, &DressedHumanDisplay::regenerateSkinRelief);
+  connect(lod_properties_.get(), &LodProperties::vertexEvaluationChanged,
+          this, &DressedHumanDisplay::updateVertexEvaluation);
+  connect(debug_properties_.get(), &DebugProperties::changed, this, &DressedHumanDisplay::updateAppearance);
 }
 
 DressedHumanDisplay::~DressedHumanDisplay() = default;
