@@ -70,6 +70,11 @@ Eigen::Vector3d firstDistinctDescendant(const BvhClip& clip, const BvhPose& rest
   return Eigen::Vector3d::Zero();
 }
 
+// Joint j's (y, x, z) of `angles`.
+Eigen::Vector3d yxzOf(const JointAngles& angles, std::size_t j) {
+  return {angles[j * kDofsPerJoint], angles[j * kDofsPerJoint + 1], angles[j * kDofsPerJoint + 2]};
+}
+
 // Our joint angles from target world orientations (nullptr: held at rest), walking the bones
 // parents first so that every local rotation is taken relative to our own parent bone.
 // Each joint's angles on the branch nearest `near` (the frame before; the rest pose, zeros, first).
@@ -85,8 +90,7 @@ JointAngles solveJointAngles(const Skeleton& skeleton, const Eigen::Matrix3d& bo
     if (bone.joint < 0) continue;
     const auto j = static_cast<std::size_t>(bone.joint);
     if (!target[j]) continue;
-    const Eigen::Vector3d before(near[j * kDofsPerJoint], near[j * kDofsPerJoint + 1], near[j * kDofsPerJoint + 2]);
-    const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * *target[j], before);
+    const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * *target[j], yxzOf(near, j));
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) angles[j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
     world[b] = rest * Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
                Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ());
@@ -279,15 +283,13 @@ Eigen::Vector3d nearestTurns(const Eigen::Vector3d& angles, const Eigen::Vector3
 }  // namespace
 
 Eigen::Vector3d decomposeYxzNear(const Eigen::Matrix3d& r, const Eigen::Vector3d& near) {
-  const double cos_x = std::hypot(r(0, 2), r(2, 2));
-  const double x = std::atan2(-r(1, 2), cos_x);
-  if (cos_x < kGimbalCosine) {
-    // Ry(y) Rx(+90) Rz(z) = Ry(y - z) Rx(+90), Ry(y) Rx(-90) Rz(z) = Ry(y + z) Rx(-90).
-    const double defined = std::atan2(-r(2, 0), r(0, 0));
+  const Eigen::Vector3d principal = decomposeYxz(r);
+  const double x = principal[1];
+  if (std::hypot(r(0, 2), r(2, 2)) < kGimbalCosine) {
+    // decomposeYxz put all of y - z (x = +90) or y + z (x = -90) into y: z keeps near's.
     const double z = near[2];
-    return nearestTurns({x > 0.0 ? defined + z : defined - z, x, z}, near);
+    return nearestTurns({x > 0.0 ? principal[0] + z : principal[0] - z, x, z}, near);
   }
-  const Eigen::Vector3d principal(std::atan2(r(0, 2), r(2, 2)), x, std::atan2(r(1, 0), r(1, 1)));
   const Eigen::Vector3d first = nearestTurns(principal, near);
   const Eigen::Vector3d second = nearestTurns({principal[0] + M_PI, M_PI - x, principal[2] + M_PI}, near);
   return (first - near).squaredNorm() <= (second - near).squaredNorm() ? first : second;
@@ -471,10 +473,7 @@ SampledMotion retargetCoordinates(const OpenSimTable& table, const CoordinateJoi
       const Eigen::Matrix3d relative = to_ours * chainRotation(map.joints[j], joint_columns[j], row, angle_unit) *
                                        to_ours.transpose();
       const Eigen::Matrix3d& rest = our_rest.rotation[static_cast<std::size_t>(skeleton.joint(j).bone)];
-      const std::size_t first = j * kDofsPerJoint;
-      const Eigen::Vector3d before = f > 0 ? Eigen::Vector3d(motion.angles[f - 1][first], motion.angles[f - 1][first + 1],
-                                                             motion.angles[f - 1][first + 2])
-                                           : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d before = f > 0 ? yxzOf(motion.angles[f - 1], j) : Eigen::Vector3d::Zero();
       const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * relative * rest, before);
       for (std::size_t d = 0; d < kDofsPerJoint; ++d) motion.angles[f][j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
     }
