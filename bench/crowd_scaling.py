@@ -61,7 +61,7 @@ def parse_points(texts):
 
 
 def positions(count):
-    """(x, y) of each human: rows of rs.ROW_LENGTH, 1 m apart, ROW_SPACING apart, centred on the view."""
+    """(x, y) of each human: rows of rs.row_length(count), 1 m apart, ROW_SPACING apart, centred on the view."""
     return [(x * ROW_SPACING / rs.ROW_SPACING, y) for x, y in rs.positions(count)]
 
 
@@ -69,6 +69,11 @@ def front_row_x(count):
     """The x of the row nearest the camera (the orbit's eye is on the +x side): the view's focal
     point is that row's middle, `distance` away, and every other row stands farther off."""
     return max(x for x, _ in positions(count))
+
+
+def view(count, distance):
+    """The orbit view of `count` humans from `distance`: focal point the front row's middle."""
+    return OrbitView(distance, rs.YAW, rs.pitch(count), (front_row_x(count), 0.0, rs.FOCAL_Z))
 
 
 def crowd_file(places, directory):
@@ -96,7 +101,7 @@ def measure(subject, count, distance, args, shots, env, env_script=None):
     view_arguments = ["--view", "Pitch=%g" % rs.pitch(count), "--focal", "%g;0;%g" % (front, rs.FOCAL_Z)]
     point = rs.harness(display_class, 1, args.seconds, extra + view_arguments, screenshot, env, distance, 0.0,
                        env_script)
-    orbit = OrbitView(distance, rs.YAW, rs.pitch(count), (front, 0.0, rs.FOCAL_Z))
+    orbit = view(count, distance)
     places = positions(count)
     point["drawn"] = min(rs.drawn(screenshot[:-4] + "_start.png", places, orbit), rs.drawn(screenshot, places, orbit))
     point["screenshot"] = os.path.relpath(screenshot, rs.ROOT)
@@ -344,13 +349,13 @@ def main():
     lines.append("")
     lines.append("Medians of %d runs per point, each run's per-human cost against its own grid run (the range: "
                  "lowest and highest run). " % args.repeats +
-                 "Humans on treadmills (1.2 m/s) in rows of %d, 1 m apart, rows %g m apart, the distance from the camera to "
+                 "Humans on treadmills (1.2 m/s) in rows of %d (at most %d rows: longer rows beyond %d humans), 1 m apart, rows %g m apart, the distance from the camera to "
                  "the middle of the nearest row (the others farther off); one message for all at "
                  "%g Hz (ours: crowd_publisher's dressed_human/Crowd, with each root frame on /tf; the peer: "
                  "TrackedPersons from bench/peer_rows.py); %g s per point after 5 s of warm-up; rviz CPU in %% of one "
                  "core, Mesa llvmpipe on %d cores, rviz's default anti-aliasing; \"drawn\": figures in both the screenshot at the "
                  "start and at the end of the point (`%s/`). `bench/crowd_scaling.py`."
-                 % (rs.ROW_LENGTH, ROW_SPACING, PUBLISH_HZ, args.seconds, os.cpu_count(),
+                 % (rs.ROW_LENGTH, rs.MAX_ROWS, rs.ROW_LENGTH * rs.MAX_ROWS, ROW_SPACING, PUBLISH_HZ, args.seconds, os.cpu_count(),
                     os.path.relpath(shots, rs.ROOT)))
     if memory:
         samples, verdicts = memory

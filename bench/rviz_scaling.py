@@ -9,8 +9,8 @@ forward_speed 0). Up to 10 humans stand in one row 1 m apart, the camera 12 m (-
 front of the row's middle, pitched down 0.25 rad; more stand in rows of 10, each row 3 m behind
 the previous and shifted 0.5 m sideways, seen from 0.7 rad above so that the rows do not hide
 one another. Each point saves a screenshot when its measurement starts and one when it ends, and
-fails unless every one of its N humans is drawn in both (figure pixels inside the box its
-position projects to). Reports fps (rviz's cap is 30), rviz CPU, and rviz CPU per human per
+fails unless every one of its N humans is drawn in both (drawn_places: figure pixels nearest
+its place, inside the box its position projects to). Reports fps (rviz's cap is 30), rviz CPU, and rviz CPU per human per
 frame: (rviz CPU per frame - the empty scene's) / N; also what the DressedHuman display measures
 of its own update(). With several --distances, the --distance-count humans are also measured at
 each distance (cost against distance).
@@ -40,7 +40,7 @@ from ros_processes import report, ros_environment, start, stop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "test", "ros"))
-from on_screen import OrbitView, figure_mask  # noqa: E402
+from on_screen import OrbitView, figure_mask, pixel_owners  # noqa: E402
 
 DEVEL = os.path.join(ROOT, "build", "devel")
 # (label, display class, extra harness arguments)
@@ -52,20 +52,28 @@ PEER = ("spencer walking-man mesh (peer)", "spencer_tracking_rviz_plugin/Tracked
         ["--set", "Topic=/tracked_persons", "--set", "Style=Person meshes", "--set", "Tracking frame=world"])
 PEER_DIR = os.path.join(os.path.dirname(ROOT), "shared", "peers", "spencer")
 YAW, FOCAL_Z = 0.0, 0.9
-ROW_LENGTH, ROW_SPACING, ROW_SHIFT = 10, 3.0, 0.5
+ROW_LENGTH, ROW_SPACING, ROW_SHIFT, MAX_ROWS = 10, 3.0, 0.5, 4
 # Of a 1 m x 0.6 m x 1.95 m box a figure covers a quarter (ours) or a tenth (the peer's), less of
 # it coloured enough for the figure mask in dark clothes (a black jacket at 30 m: 4.3 %); a box
 # whose human is missing holds none.
 MIN_BOX_SHARE = 0.03
 
 
+def row_length(count):
+    """Humans per row: ROW_LENGTH, or more for crowds of over MAX_ROWS rows. Seen from 0.7 rad
+    above, a fifth row and beyond stand so far off that each row's heads cover the next row's
+    feet on screen (100 in rows of 10 from 30 m): a missing human there could not be told."""
+    return max(ROW_LENGTH, -(-count // MAX_ROWS))
+
+
 def positions(count):
-    """(x, y) of each human: rows of ROW_LENGTH, 1 m apart, centred on the view."""
-    rows = (count + ROW_LENGTH - 1) // ROW_LENGTH
+    """(x, y) of each human: rows of row_length(count), 1 m apart, centred on the view."""
+    length = row_length(count)
+    rows = (count + length - 1) // length
     result = []
     for i in range(count):
-        row, column = divmod(i, ROW_LENGTH)
-        in_row = min(ROW_LENGTH, count - row * ROW_LENGTH)
+        row, column = divmod(i, length)
+        in_row = min(length, count - row * length)
         x = -ROW_SPACING * (row - (rows - 1) / 2.0)
         y = column - (in_row - 1) / 2.0 + (ROW_SHIFT if row % 2 else 0.0)
         result.append((x, y))
@@ -86,30 +94,41 @@ def peer_positions(count):
     return [(0.0, float(i)) for i in range(count)]
 
 
-def drawn(path, places, orbit):
-    """How many of the humans at `places` show in the screenshot at `path`: figure pixels over at
-    least MIN_BOX_SHARE of the screen area of a box 0.6 m across the row (neighbours stand 1 m
-    apart: 0.4 m between boxes), 1 m deep, 1.95 m tall, at its place. (60 figure pixels in boxes
-    0.9 m across counted an empty place beside a row as drawn: up to 1,486 of its neighbours'
-    pixels fell in it; tools.drawn_judgement checks both ways on the committed screenshots.)"""
+def drawn_places(path, places, orbit):
+    """Which of the humans at `places` show in the screenshot at `path`. Each figure pixel counts
+    for one place only: the one whose body axis (a vertical line from the floor to 1.8 m at the
+    place) projects nearest to it, among the places whose box holds it (a box 1 m deep, 0.6 m
+    across the row, 1.95 m tall); a place is drawn with its pixels over at least MIN_BOX_SHARE of
+    its box's screen area. Off the view's axis, seen from above, neighbouring boxes overlap on
+    screen (by up to a third of a box in the 30-human point at 12 m): counted by box alone, a
+    neighbour's figure stood in for a missing human. tools.drawn_judgement checks empty and erased
+    places on the committed screenshots."""
     image = numpy.asarray(Image.open(path).convert("RGB")).astype(numpy.float64)
     mask = figure_mask(image)
     height, width = mask.shape
-    count = 0
+    regions, axes, areas = [], [], []
     for x, y in places:
         corners = numpy.array([[cx, cy, cz] for cx in (x - 0.5, x + 0.5) for cy in (y - 0.3, y + 0.3)
                                for cz in (-0.05, 1.9)])
         columns, rows, depth, _ = orbit.project(corners, numpy.zeros(3), width, height)
-        if (depth <= orbit.near).any():
-            continue
+        axis = numpy.array([[x, y, z] for z in numpy.linspace(0.0, 1.8, 19)])
+        axis_columns, axis_rows, _, _ = orbit.project(axis, numpy.zeros(3), width, height)
         left, right = int(max(columns.min(), 0)), int(min(columns.max(), width))
         top, bottom = int(max(rows.min(), 0)), int(min(rows.max(), height))
-        box_area = (columns.max() - columns.min()) * (rows.max() - rows.min())
-        if right <= left or bottom <= top:
-            continue
-        if mask[top:bottom, left:right].sum() >= max(15.0, MIN_BOX_SHARE * box_area):
-            count += 1
-    return count
+        if (depth <= orbit.near).any() or right <= left or bottom <= top:
+            regions.append((slice(0, 0), slice(0, 0)))  # behind the camera or off screen: not drawn
+        else:
+            regions.append((slice(top, bottom), slice(left, right)))
+        axes.append(numpy.stack([axis_columns, axis_rows], axis=1))
+        areas.append((columns.max() - columns.min()) * (rows.max() - rows.min()))
+    owners = pixel_owners(mask, regions, axes)
+    owned = numpy.bincount(owners[owners >= 0], minlength=len(places))
+    return [bool(owned[i] >= max(15.0, MIN_BOX_SHARE * areas[i])) for i in range(len(places))]
+
+
+def drawn(path, places, orbit):
+    """How many of the humans at `places` show in the screenshot at `path` (drawn_places)."""
+    return sum(drawn_places(path, places, orbit))
 
 
 def harness(display_class, count, seconds, extra, screenshot, env, distance=12.0, focal_y=0.0, env_script=None,
