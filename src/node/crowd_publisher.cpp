@@ -83,7 +83,7 @@ CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_nod
                                            : loadCrowdWalks(settings_.crowd_file);
   const Skeleton plain = crowdSkeleton(urdf);
   members_.reserve(walks.size());
-  for (const CrowdWalk& walk : walks) addMember(walk, plain, urdf, motion, gait);
+  for (const CrowdWalk& walk : walks) addMember(walk, plain, motion, gait);
 
   output_ = std::make_unique<CrowdOutput>(node, settings_.skeleton_tf, settings_.frame_prefix);
   for (const Member& member : members_) {
@@ -95,10 +95,10 @@ CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_nod
            settings_.skeleton_tf ? "whole skeletons" : "root frames body_<id>");
 }
 
-void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, const std::string& urdf,
-                               const Motion& motion, const NormativeGait& gait) {
+void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion,
+                               const NormativeGait& gait) {
   const double stature = drawnStature(plain, walk.stature);
-  const Skeleton scaled = skeletonAtStature(plain, urdf, walk.stature);
+  const Skeleton scaled = skeletonAtStature(plain, walk.stature);
   auto walker = std::make_unique<Walker>(scaled, scaled.bodyShape(), SpeedGait(motion, gait, scaled, scaled.bodyShape()));
   walker->setCruiseSpeed(walk.speed);
   members_.push_back(Member{walk, stature, scaled.withSuffix("_" + walk.id), std::move(walker), {}, {}});

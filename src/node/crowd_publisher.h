@@ -59,7 +59,7 @@ class CrowdPublisher {
     JointAngles angles{};
     SkeletonPose pose;
   };
-  void addMember(const CrowdWalk& walk, const Skeleton& plain, const std::string& urdf, const Motion& motion,
+  void addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion,
                  const NormativeGait& gait);
   void place();
   void tick();

@@ -79,8 +79,8 @@ void DrawnHuman::resetReliefVisibility(double skin_cell_size) {
   const double skin = model_.reliefTileSize(ReliefKind::kSkin) * skin_cell_size;
   const double cloth =
       model_.reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around * kFoldTilesPerPatch);
-  relief_visibility_[0] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
-  relief_visibility_[1] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
+  relief_visibility_[ReliefKind::kSkin] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
+  relief_visibility_[ReliefKind::kCloth] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
   visual_.setReliefShown(ReliefKind::kSkin, true);
   visual_.setReliefShown(ReliefKind::kCloth, true);
 }
@@ -110,7 +110,7 @@ bool DrawnHuman::updateDetailVisibility(const Ogre::Camera* camera, bool judge_r
   const bool small = placed && !cover_gap_visibility_.update(pixels_per_metre);
   const bool judged = judge_relief && placed;
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
-    std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind == ReliefKind::kSkin ? 0 : 1];
+    std::unique_ptr<ReliefVisibility>& visibility = relief_visibility_[kind];
     if (!visibility) continue;
     const bool shown = judged ? visibility->update(pixels_per_metre) : true;
     visual_.setReliefShown(kind, shown);

@@ -92,7 +92,7 @@ class DrawnHuman {
   std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
   std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
   bool in_view_ = true;           // at the last update()
-  std::array<std::unique_ptr<ReliefVisibility>, 2> relief_visibility_;  // by ReliefKind; null: no such parts
+  PerReliefKind<std::unique_ptr<ReliefVisibility>> relief_visibility_;  // null: no such parts
   ReliefVisibility cover_gap_visibility_{HumanModel::kCoverGap};
   ros::WallTime last_seen_;
 };

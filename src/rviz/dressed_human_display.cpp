@@ -10,6 +10,7 @@
 #include <rviz/view_manager.h>
 
 #include "dressed_human/core/skeleton/body_shape_groups.h"
+#include "dressed_human/core/skeleton/crowd_human_body.h"
 #include "crowd_message_source.h"
 #include "drawn_human.h"
 #include "properties/body_properties.h"
@@ -18,6 +19,8 @@
 #include "properties/garment_properties.h"
 #include "properties/lod_properties.h"
 #include "properties/relief_properties.h"
+#include "gl_renderer.h"
+#include "relief_material.h"
 #include "tf_bone_source.h"
 #include "tf_human_roster.h"
 
@@ -26,6 +29,9 @@ namespace {
 
 // A crowd display looks for new humans in TF this often.
 constexpr float kRosterSeconds = 1.0f;
+// Like RobotModelDisplay: a description not there yet (rviz opened before the launch file) is
+// looked for again this often, until it is.
+constexpr float kDescriptionRetrySeconds = 1.0f;
 
 }  // namespace
 
@@ -64,7 +70,7 @@ void DressedHumanDisplay::onInitialize() {
   try {
     status_.clear("Material");
     ReliefMaterial::bezierEvaluationAvailable(&gpu_vertices_problem_);
-    software_renderer_ = ReliefMaterial::softwareRenderer();
+    software_renderer_ = softwareRendererName();
   } catch (const std::exception& error) {
     status_.error("Material", error.what());
   }
@@ -98,8 +104,15 @@ void DressedHumanDisplay::updateSubscription() {
 void DressedHumanDisplay::reset() {
   for (auto& human : humans_) human.second->clearStatuses(status_);
   std::string urdf;
+  if (!readRobotDescription(urdf) || urdf != urdf_) loadRobotDescription();
+}
+
+// The parameter as rviz's own displays find it: searched up from rviz's namespace.
+bool DressedHumanDisplay::readRobotDescription(std::string& urdf) const {
   const std::string parameter = body_properties_->descriptionParameter();
-  if (parameter.empty() || !update_nh_.getParam(parameter, urdf) || urdf != urdf_) loadRobotDescription();
+  std::string found;
+  if (parameter.empty() || !update_nh_.searchParam(parameter, found)) return false;
+  return update_nh_.getParam(found, urdf);
 }
 
 void DressedHumanDisplay::fixedFrameChanged() { context_->queueRender(); }
@@ -108,16 +121,18 @@ void DressedHumanDisplay::loadRobotDescription() {
   body_.reset();
   skeleton_.reset();
   urdf_.clear();
+  seconds_without_description_ = 0.0f;
   const std::string parameter = body_properties_->descriptionParameter();
   std::string urdf;
-  if (parameter.empty() || !update_nh_.getParam(parameter, urdf)) {
-    status_.error("URDF", "parameter '" + parameter + "' is not set");
+  description_missing_ = !readRobotDescription(urdf);
+  if (description_missing_) {
+    status_.error("URDF", "parameter '" + parameter + "' is not set (looked for again every second)");
     return rebuildHumans();
   }
   try {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
     urdf_ = urdf;
-    setStatusStd(rviz::StatusProperty::Ok, "URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones" +
+    status_.ok("URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones" +
                      (skeleton_->bodyShape().isIdentity() ? "" : ", a fitted person's proportions"));
   } catch (const std::exception& error) {
     status_.error("URDF", "parameter '" + parameter + "': " + error.what());
@@ -126,10 +141,7 @@ void DressedHumanDisplay::loadRobotDescription() {
   try {
     body_ = std::make_unique<BodyDescription>(loadBodyDescriptionFile(body_properties_->bodyFile(), *skeleton_));
     // A fitted person's URDF carries its proportions: the body file's shape applies on top of them.
-    for (std::size_t b = 0; b < kBoneCount; ++b) {
-      body_->shape.scale[b] = body_->shape.scale[b].cwiseProduct(skeleton_->bodyShape().scale[b]);
-      body_->shape.offset[b] += skeleton_->bodyShape().offset[b];
-    }
+    body_->shape = body_->shape.appliedOn(skeleton_->bodyShape());
     shape_ = body_->shape;
     status_.clear("Body Description");
   } catch (const std::exception& error) {
@@ -203,7 +215,7 @@ void DressedHumanDisplay::addHuman(const std::string& suffix, double stature) {
   const std::string model_status = crowd ? "Model " + label : "Model";
   try {
     if (std::isnan(stature)) stature = statureInTf(*context_->getFrameManager()->getTF2BufferPtr(), *skeleton_, suffix);
-    const CrowdHumanBody body = crowdHumanBody(*skeleton_, urdf_, *body_, shape_, suffix, stature);
+    const CrowdHumanBody body = crowdHumanBody(*skeleton_, *body_, shape_, suffix, stature);
     std::unique_ptr<HumanPoseSource> poses;
     if (crowd_properties_->fromTopic()) {
       poses = std::make_unique<CrowdMessageSource>(crowd_topic_.track(suffix.substr(1)), body.skeleton);
@@ -279,19 +291,17 @@ void DressedHumanDisplay::updateVertexEvaluation() {
 }
 
 void DressedHumanDisplay::applyVertexEvaluation(DrawnHuman& human, bool report) {
-  const LodProperties::VertexChoice choice =
-      lod_properties_->chooseVertexEvaluation(human.model(), gpu_vertices_problem_, software_renderer_);
+  const VertexEvaluationChoice choice = chooseVertexEvaluation(lod_properties_->vertexSource(), human.model(),
+                                                              gpu_vertices_problem_, software_renderer_,
+                                                              ReliefMaterial::kMaxPatches);
   human.model().setVertexEvaluation(choice.evaluation);
   if (!report) return;  // every human makes the same choice: one status says it
   if (choice.status.empty()) {
-    deleteStatus("Vertex Evaluation");
+    status_.clear("Vertex Evaluation");
+  } else if (choice.warn) {
+    status_.warn("Vertex Evaluation", choice.status, true);
   } else {
-    setStatusStd(choice.warn ? rviz::StatusProperty::Warn : rviz::StatusProperty::Ok, "Vertex Evaluation",
-                 choice.status);
-    if (choice.warn) {
-      ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': Vertex Evaluation: %s",
-                     getName().toStdString().c_str(), choice.status.c_str());
-    }
+    status_.ok("Vertex Evaluation", choice.status);
   }
 }
 
@@ -327,7 +337,7 @@ void DressedHumanDisplay::pollReliefMaps() {
   for (const FinishedReliefMap& done : relief_jobs_.poll()) {
     const std::string status = done.kind == ReliefKind::kSkin ? "Skin relief" : "Wrinkle relief";
     if (done.map) {
-      normal_maps_[done.kind == ReliefKind::kSkin ? 0 : 1] = done;
+      normal_maps_[done.kind] = done;
       try {
         for (auto& human : humans_) human.second->visual().setNormalMap(done);
         status_.clear(status);
@@ -345,11 +355,16 @@ void DressedHumanDisplay::update(float wall_dt, float) {
   update_cost_.start();
   updateSurfaces(wall_dt);
   const std::string cost = update_cost_.stop();
-  if (!cost.empty()) setStatusStd(rviz::StatusProperty::Ok, "Update", cost);
+  if (!cost.empty()) status_.ok("Update", cost);
 }
 
 void DressedHumanDisplay::updateSurfaces(float wall_dt) {
   pollReliefMaps();
+  if (description_missing_ && (seconds_without_description_ += wall_dt) >= kDescriptionRetrySeconds) {
+    seconds_without_description_ = 0.0f;
+    std::string urdf;
+    if (readRobotDescription(urdf)) loadRobotDescription();
+  }
   if (crowd_properties_->everyHumanInTf() && (seconds_since_roster_ += wall_dt) >= kRosterSeconds) {
     dropLostHumans();
     lookForHumans();
@@ -385,8 +400,7 @@ void DressedHumanDisplay::reportSurfaces(std::size_t humans, std::size_t parts, 
   const std::array<std::size_t, 3> surfaces{humans, parts, triangles};
   if (surfaces == surfaces_reported_ || parts == 0) return;
   const std::string drawn = crowd_properties_->crowd() ? std::to_string(humans) + " humans, " : "";
-  setStatusStd(rviz::StatusProperty::Ok, "Surfaces",
-               drawn + std::to_string(parts) + " parts, " + std::to_string(triangles) + " triangles");
+  status_.ok("Surfaces", drawn + std::to_string(parts) + " parts, " + std::to_string(triangles) + " triangles");
   surfaces_reported_ = surfaces;
 }
 

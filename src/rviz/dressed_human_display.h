@@ -61,6 +61,8 @@ class DressedHumanDisplay : public rviz::Display {
   // `stature`: its size against the skeleton's (a crowd message's); NaN: read from its TF.
   void addHuman(const std::string& suffix, double stature = 1.0);
   HumanModelSettings settingsFor(const std::string& suffix) const;
+  // The robot description parameter's text; false if it is not set.
+  bool readRobotDescription(std::string& urdf) const;
   // Crowd: adds each human TF carries that the display lacks, and drops each one whose TF stopped.
   void lookForHumans();
   void dropLostHumans();
@@ -92,6 +94,8 @@ class DressedHumanDisplay : public rviz::Display {
 
   std::unique_ptr<Skeleton> skeleton_;     // the robot description's; each human's carries its suffix
   std::string urdf_;                        // the robot description it was read from
+  bool description_missing_ = false;        // its parameter was not set: looked for again
+  float seconds_without_description_ = 0.0f;
   std::unique_ptr<BodyDescription> body_;  // as the body file says
   BodyShape shape_;                        // the file's shape times the Body Shape properties
   std::map<std::string, HumanAppearance> crowd_file_;  // by human id
@@ -101,7 +105,7 @@ class DressedHumanDisplay : public rviz::Display {
   // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode. The
   // newest normal map of each kind goes to every human, those added later too.
   ReliefMapJobs relief_jobs_;
-  std::array<FinishedReliefMap, 2> normal_maps_;  // by ReliefKind
+  PerReliefKind<FinishedReliefMap> normal_maps_;
   // (humans, parts, triangles) the "Surfaces" status says: rebuilt only when they change.
   std::array<std::size_t, 3> surfaces_reported_{};
   UpdateCostMeter update_cost_;

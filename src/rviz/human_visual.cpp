@@ -55,7 +55,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     }
     // Split shared vertices only where a relief texture is drawn: they cost vertices (+27 % at
     // level 8, +118 % at level 2), and a relief too small to see is not drawn.
-    const PatchCornerSplit* corners = relief_shown_[slot(source.relief)] ? source.corners : nullptr;
+    const PatchCornerSplit* corners = relief_shown_[source.relief] ? source.corners : nullptr;
     if (source.evaluated) {
       part.mesh->update(*source.mesh, corners, source.relief_weight, source.fold_axis, source.hidden_patches,
                         source.bounds);
@@ -63,7 +63,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     }
     part.material->setPatches(*source.patches);
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
-    const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[slot(ReliefKind::kCloth)];
+    const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[ReliefKind::kCloth];
     part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
     part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.hidden_patches,
                             source.layout_id, source.bounds);
@@ -99,14 +99,14 @@ void HumanVisual::updateSkeleton(const ForwardKinematics& kinematics,
 }
 
 void HumanVisual::setReliefStrength(ReliefKind kind, float strength) {
-  (kind == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_) = strength;
+  relief_strength_[kind] = strength;
   for (Part& part : parts_) {
     if (part.relief == kind) part.material->setReliefStrength(reliefStrength(kind));
   }
 }
 
 void HumanVisual::setReliefFade(ReliefKind kind, float fade) {
-  float& current = relief_fade_[slot(kind)];
+  float& current = relief_fade_[kind];
   // Every frame otherwise, per part: a constant lookup by name. Steps of 1/200 do not show.
   if (std::abs(fade - current) < 0.005f && (fade > 0.0f) == (current > 0.0f) && (fade < 1.0f) == (current < 1.0f)) return;
   current = fade;
@@ -116,12 +116,11 @@ void HumanVisual::setReliefFade(ReliefKind kind, float fade) {
 }
 
 float HumanVisual::reliefStrength(ReliefKind kind) const {
-  return (kind == ReliefKind::kSkin ? skin_relief_strength_ : cloth_relief_strength_) *
-         relief_fade_[slot(kind)];
+  return relief_strength_[kind] * relief_fade_[kind];
 }
 
 void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
-  relief_shown_[slot(kind)] = shown;
+  relief_shown_[kind] = shown;
   for (Part& part : parts_) {
     if (part.relief == kind) part.material->setReliefShown(shown);
   }
@@ -130,16 +129,16 @@ void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
 void HumanVisual::setNormalMap(const FinishedReliefMap& finished) {
   if (!finished.map) return;  // a failed build: the display reports its error
   const ReliefKind kind = finished.kind;
-  (kind == ReliefKind::kSkin ? skin_map_ : cloth_map_) = finished.normal_map;
+  maps_[kind] = finished.normal_map;
   for (Part& part : parts_) {
     if (part.relief == kind) applyMaps(part);
   }
 }
 
 void HumanVisual::applyMaps(Part& part) const {
-  const std::shared_ptr<const EncodedNormalMap>& map = part.relief == ReliefKind::kSkin ? skin_map_ : cloth_map_;
+  const std::shared_ptr<const EncodedNormalMap>& map = maps_[part.relief];
   part.material->setReliefStrength(reliefStrength(part.relief));
-  part.material->setReliefShown(relief_shown_[slot(part.relief)]);
+  part.material->setReliefShown(relief_shown_[part.relief]);
   if (map) part.material->setNormalMap(map);
 }
 

@@ -32,7 +32,7 @@ class HumanVisual {
   void setReliefStrength(ReliefKind kind, float strength);
   // false: parts of `kind` drawn with the plain material (ReliefMaterial::setReliefShown).
   void setReliefShown(ReliefKind kind, bool shown);
-  bool reliefShown(ReliefKind kind) const { return relief_shown_[slot(kind)]; }
+  bool reliefShown(ReliefKind kind) const { return relief_shown_[kind]; }
   // Scales the relief strength of parts of `kind` (ReliefVisibility::fade: 0 to 1 with distance).
   void setReliefFade(ReliefKind kind, float fade);
   // true: parts whose relief is not shown are lit per vertex (ReliefMaterial::setVertexLit).
@@ -65,13 +65,11 @@ class HumanVisual {
   Ogre::SceneNode* node_;
   std::string name_prefix_;
   std::vector<Part> parts_;
-  float skin_relief_strength_ = 1.0f;
-  float cloth_relief_strength_ = 1.0f;
-  std::array<bool, 2> relief_shown_{{true, true}};  // by ReliefKind
-  std::array<float, 2> relief_fade_{{1.0f, 1.0f}};  // by ReliefKind
+  PerReliefKind<float> relief_strength_{1.0f, 1.0f};  // the user's
+  PerReliefKind<bool> relief_shown_{true, true};
+  PerReliefKind<float> relief_fade_{1.0f, 1.0f};
   float reliefStrength(ReliefKind kind) const;  // the user's times the fade
-  static std::size_t slot(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }  // in the arrays above
-  std::shared_ptr<const EncodedNormalMap> skin_map_, cloth_map_;  // null until built
+  PerReliefKind<std::shared_ptr<const EncodedNormalMap>> maps_;  // null until built
   bool visible_ = true;
   bool vertex_lit_ = false;
   bool insides_hidden_ = false;

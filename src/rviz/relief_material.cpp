@@ -1,22 +1,17 @@
 #include "relief_material.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <map>
 #include <stdexcept>
 
-#include <GL/gl.h>
 #include <OgreGpuProgramManager.h>
-#include <OgreHardwarePixelBuffer.h>
 #include <OgreMaterialManager.h>
 #include <OgrePass.h>
-#include <OgreRenderSystem.h>
-#include <OgreRenderSystemCapabilities.h>
 #include <OgreResourceGroupManager.h>
-#include <OgreRoot.h>
 #include <OgreTechnique.h>
-#include <OgreTextureManager.h>
 #include <ros/package.h>
+
+#include "gl_renderer.h"
+#include "normal_map_texture.h"
 
 namespace dressed_human {
 namespace {
@@ -63,71 +58,6 @@ std::string programProblem(const std::string& material_name) {
 
 }  // namespace
 
-// One Ogre texture per normal map of the process, alive while a material uses it.
-struct ReliefMaterial::SharedTexture {
-  std::shared_ptr<const EncodedNormalMap> map;  // the key; kept so its address stays unique
-  Ogre::TexturePtr texture;
-  ~SharedTexture() {
-    if (texture) Ogre::TextureManager::getSingleton().remove(texture);
-  }
-};
-
-namespace {
-
-std::map<const void*, std::weak_ptr<ReliefMaterial::SharedTexture>> shared_textures;  // rviz's thread only
-
-// Which mip levels the normal-map textures get: the maps' own (EncodedNormalMap's, the default),
-// none (DRESSED_HUMAN_RELIEF_MIPMAPS=0), or the GPU's, averaged from level 0 (=gpu): the last
-// two for bench/relief_flicker.py, which measures what the chain is worth.
-enum class MipSource { kOwn, kNone, kGpu };
-MipSource normalMapMipmaps() {
-  const char* setting = std::getenv("DRESSED_HUMAN_RELIEF_MIPMAPS");
-  if (setting == nullptr || std::string(setting) == "1") return MipSource::kOwn;
-  if (std::string(setting) == "0") return MipSource::kNone;
-  if (std::string(setting) == "gpu") return MipSource::kGpu;
-  throw std::invalid_argument("DRESSED_HUMAN_RELIEF_MIPMAPS='" + std::string(setting) +
-                              "' must be 1 (the default: the maps' own chain), 0 (no mipmaps) or gpu (the GPU's chain)");
-}
-
-// The map's levels, each checked against the size it must have.
-Ogre::TexturePtr uploadNormalMap(const EncodedNormalMap& map, const std::string& name) {
-  if (map.channels != 3 && map.channels != 4) {
-    throw std::invalid_argument("normal map " + name + ": " + std::to_string(map.channels) + " channels (3 or 4)");
-  }
-  if (map.width <= 0 || map.height <= 0 || map.levels.empty()) {
-    throw std::invalid_argument("normal map " + name + ": " + std::to_string(map.width) + " x " +
-                                std::to_string(map.height) + " pixels, " + std::to_string(map.levels.size()) + " levels");
-  }
-  const MipSource source = normalMapMipmaps();
-  const std::size_t levels = source == MipSource::kOwn ? map.levels.size() : 1;
-  const Ogre::PixelFormat format = map.channels == 4 ? Ogre::PF_BYTE_RGBA : Ogre::PF_BYTE_RGB;
-  for (std::size_t level = 0; level < levels; ++level) {
-    const std::size_t expected = static_cast<std::size_t>(std::max(1, map.width >> level)) *
-                                 static_cast<std::size_t>(std::max(1, map.height >> level)) *
-                                 static_cast<std::size_t>(map.channels);
-    if (map.levels[level].size() != expected) {
-      throw std::invalid_argument("normal map " + name + ": level " + std::to_string(level) + " has " +
-                                  std::to_string(map.levels[level].size()) + " bytes, not " + std::to_string(expected));
-    }
-  }
-  // No TU_AUTOMIPMAP by default: the GPU would average the encoded normals (EncodedNormalMap).
-  const bool gpu = source == MipSource::kGpu;
-  Ogre::TexturePtr texture = Ogre::TextureManager::getSingleton().createManual(
-      name, kGroup, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(map.width), static_cast<Ogre::uint>(map.height),
-      gpu ? static_cast<int>(Ogre::MIP_UNLIMITED) : static_cast<int>(levels) - 1, format,
-      gpu ? Ogre::TU_STATIC_WRITE_ONLY | Ogre::TU_AUTOMIPMAP : Ogre::TU_STATIC_WRITE_ONLY);
-  for (std::size_t level = 0; level < levels; ++level) {
-    const Ogre::PixelBox box(static_cast<Ogre::uint32>(std::max(1, map.width >> level)),
-                             static_cast<Ogre::uint32>(std::max(1, map.height >> level)), 1, format,
-                             const_cast<std::uint8_t*>(map.levels[level].data()));
-    texture->getBuffer(0, level)->blitFromMemory(box);
-  }
-  return texture;
-}
-std::size_t texture_count = 0;  // for unique Ogre names
-
-}  // namespace
-
 void ReliefMaterial::loadMediaOnce() {
   auto& groups = Ogre::ResourceGroupManager::getSingleton();
   if (groups.resourceGroupExists(kGroup) && groups.isResourceGroupInitialised(kGroup)) return;
@@ -153,29 +83,10 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   } catch (const Ogre::Exception& error) {
     problem = error.getFullDescription();
   }
-  // The shader's uniform array and its few other uniforms must fit the GL's vertex uniform
-  // space. Ogre 1.9 reports a fixed 2048 registers for GLSL, not what the GL can do: ask the GL
-  // (rviz's context is current on its thread); Ogre's figure only if that fails.
-  GLint components = 0;
-  glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &components);
-  const Ogre::RenderSystemCapabilities* capabilities = Ogre::Root::getSingleton().getRenderSystem()->getCapabilities();
-  const std::size_t registers = components > 0 ? static_cast<std::size_t>(components) / 4
-                                : capabilities                  ? capabilities->getVertexProgramConstantFloatCount()
-                                                                : 0;
-  std::size_t registers_offered = registers;
-  // To see this GPU behave like a smaller one (NVIDIA's typical 1024 vectors), or to keep the
-  // Bezier shader off a driver that misreports its limit.
-  if (const char* limit = std::getenv("DRESSED_HUMAN_MAX_VERTEX_UNIFORM_VECTORS")) {
-    char* end = nullptr;
-    const long value = std::strtol(limit, &end, 10);
-    if (end == limit || *end != '\0' || value <= 0) {
-      if (problem.empty()) {
-        problem = "DRESSED_HUMAN_MAX_VERTEX_UNIFORM_VECTORS='" + std::string(limit) + "' is not a positive integer";
-      }
-    } else {
-      registers_offered = std::min(registers, static_cast<std::size_t>(value));
-    }
-  }
+  // The shader's uniform array and its few other uniforms must fit the GL's vertex uniform space.
+  std::string setting_problem;
+  const std::size_t registers_offered = vertexUniformVectors(&setting_problem);
+  if (problem.empty()) problem = setting_problem;
   const std::size_t needed = 16 * kMaxPatches + 16;
   if (problem.empty() && registers_offered < needed) {
     problem = "the GPU offers " + std::to_string(registers_offered) + " vertex shader uniform vectors, the Bezier evaluation needs " +
@@ -183,15 +94,6 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   }
   if (why) *why = problem;
   return problem.empty();
-}
-
-std::string ReliefMaterial::softwareRenderer() {
-  const GLubyte* text = glGetString(GL_RENDERER);
-  const std::string renderer = text ? reinterpret_cast<const char*>(text) : "";
-  for (const char* software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer", "SwiftShader"}) {
-    if (renderer.find(software) != std::string::npos) return renderer;
-  }
-  return "";
 }
 
 ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_vertices, bool oriented_folds)
@@ -323,27 +225,8 @@ void ReliefMaterial::setNormalMap(const std::shared_ptr<const EncodedNormalMap>&
     throw std::invalid_argument("material " + name_ + " takes a normal map of " + std::to_string(normal_channels_) +
                                 " channels, given " + (map ? std::to_string(map->channels) : std::string("none")));
   }
-  std::shared_ptr<SharedTexture> shared = shared_textures[map.get()].lock();
-  if (!shared) {
-    const std::string texture_name = "dressed_human/normal_map_" + std::to_string(++texture_count);
-    shared = std::make_shared<SharedTexture>();
-    shared->map = map;
-    try {
-      shared->texture = uploadNormalMap(*map, texture_name);
-    } catch (...) {
-      if (Ogre::TextureManager::getSingleton().resourceExists(texture_name, kGroup)) {
-        Ogre::TextureManager::getSingleton().remove(texture_name, kGroup);
-      }
-      shared_textures.erase(map.get());
-      throw;
-    }
-    for (auto entry = shared_textures.begin(); entry != shared_textures.end();) {
-      entry = entry->second.expired() && entry->first != map.get() ? shared_textures.erase(entry) : std::next(entry);
-    }
-    shared_textures[map.get()] = shared;
-  }
-  texture_ = shared;
-  material_->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTexture(texture_->texture);
+  texture_ = NormalMapTexture::of(map, kGroup);
+  material_->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTexture(texture_->texture());
 }
 
 }  // namespace dressed_human

@@ -20,6 +20,8 @@
 
 namespace dressed_human {
 
+class NormalMapTexture;
+
 class ReliefMaterial {
  public:
   // Loads media/materials once per process (resource group "dressed_human"). Throws
@@ -31,9 +33,6 @@ class ReliefMaterial {
   // Whether this GL can run the Bezier vertex shader; if not, `why` says what is missing.
   // Loads the media first (may throw like loadMediaOnce).
   static bool bezierEvaluationAvailable(std::string* why);
-  // The GL renderer's name if it rasterizes on the CPU (Mesa llvmpipe, softpipe, swrast), else
-  // empty. rviz's GL context must be current (it is on rviz's thread).
-  static std::string softwareRenderer();
 
   // bezier_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
   // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout). oriented_folds: a garment's, whose
@@ -67,12 +66,10 @@ class ReliefMaterial {
   void setPatches(const std::vector<BezierPatch>& patches);
   void setWrinkleStrength(const WrinkleStrengthConstants* constants);
 
-  struct SharedTexture;  // one normal-map texture and its bytes (relief_material.cpp)
-
  private:
   std::string name_;
   Ogre::MaterialPtr material_;
-  std::shared_ptr<SharedTexture> texture_;
+  std::shared_ptr<NormalMapTexture> texture_;
   bool bezier_vertices_;
   const char* relief_fragment_;  // the fragment program showing the relief
   int normal_channels_;

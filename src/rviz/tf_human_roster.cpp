@@ -7,7 +7,6 @@
 #include <tf2_ros/buffer.h>
 
 #include "dressed_human/core/skeleton/skeleton.h"
-#include "dressed_human/core/skeleton/urdf_body_shape.h"
 #include "drawn_human.h"
 
 namespace dressed_human {
@@ -55,15 +54,6 @@ double statureInTf(const tf2_ros::Buffer& buffer, const Skeleton& skeleton, cons
   } catch (const tf2::TransformException&) {
     return 1.0;
   }
-}
-
-CrowdHumanBody crowdHumanBody(const Skeleton& skeleton, const std::string& urdf, const BodyDescription& body,
-                              const BodyShape& shape, const std::string& suffix, double stature) {
-  CrowdHumanBody human{skeletonAtStature(skeleton, urdf, stature).withSuffix(suffix), body};
-  human.description.shape = shape;
-  const double drawn = urdf.empty() ? 1.0 : drawnStature(skeleton, stature);
-  for (Eigen::Vector3d& scale : human.description.shape.scale) scale *= drawn;
-  return human;
 }
 
 }  // namespace dressed_human

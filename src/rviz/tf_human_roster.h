@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "dressed_human/core/skeleton/body_description.h"
 #include "dressed_human/core/skeleton/skeleton.h"
 
 namespace tf2_ros {
@@ -23,16 +22,5 @@ std::vector<std::string> freshHumansInTf(const tf2_ros::Buffer& buffer, const st
 // its TF: the knee's offset in the thigh over the skeleton's. 1 when TF does not say yet. Crowd
 // humans may each have their own proportions (crowd_member.launch's stature) in one TF tree.
 double statureInTf(const tf2_ros::Buffer& buffer, const Skeleton& skeleton, const std::string& suffix);
-
-// The skeleton and body a crowd human of `stature` is drawn with: the description's skeleton
-// (from `urdf`) scaled so that it puts the fixed bones where that human's TF does, and `body`
-// with `shape` (the display's) times the stature. A stature within 0.5 % of 1, or a description
-// that records proportions of its own, gives them unscaled.
-struct CrowdHumanBody {
-  Skeleton skeleton;
-  BodyDescription description;
-};
-CrowdHumanBody crowdHumanBody(const Skeleton& skeleton, const std::string& urdf, const BodyDescription& body,
-                              const BodyShape& shape, const std::string& suffix, double stature);
 
 }  // namespace dressed_human

@@ -26,6 +26,27 @@ TEST(BodyShapeGroups, GroupsMultiplyTheShapeOfTheirBonesInOrder) {
   EXPECT_EQ(scaleBodyShapeGroups(base, skeleton, {}).scale[boneIndex(skeleton, "l_knee")], Eigen::Vector3d(1.0, 1.0, 2.0));
 }
 
+// The body file's shape on a fitted person's (the display's composition): scales multiply bone
+// by bone, joint offsets add; on the identity it is itself.
+TEST(BodyShape, AppliedOnABaseMultipliesScalesAndAddsOffsets) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
+  const std::size_t shank = boneIndex(skeleton, "l_knee"), head = boneIndex(skeleton, "head");
+  BodyShape file, fitted;
+  file.scale[shank] = {1.1, 1.0, 0.5};
+  file.offset[head] = {0.0, 0.01, 0.0};
+  fitted.scale[shank] = {1.0, 2.0, 1.2};
+  fitted.offset[head] = {0.02, 0.0, -0.01};
+  const BodyShape combined = file.appliedOn(fitted);
+  EXPECT_TRUE(combined.scale[shank].isApprox(Eigen::Vector3d(1.1, 2.0, 0.6)));
+  EXPECT_TRUE(combined.offset[head].isApprox(Eigen::Vector3d(0.02, 0.01, -0.01)));
+  EXPECT_EQ(combined.scale[head], Eigen::Vector3d::Ones());
+  const BodyShape alone = file.appliedOn(BodyShape());
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    EXPECT_EQ(alone.scale[b], file.scale[b]);
+    EXPECT_EQ(alone.offset[b], file.offset[b]);
+  }
+}
+
 TEST(BodyShapeGroups, AFactorOutOfRangeNamesItsEntryAndAxis) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   try {

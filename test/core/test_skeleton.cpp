@@ -6,6 +6,7 @@
 #include <regex>
 #include <sstream>
 
+#include "dressed_human/core/skeleton/crowd_human_body.h"
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 #include "dressed_human/core/skeleton/urdf_body_shape.h"
 
@@ -259,17 +260,48 @@ TEST(CrowdStature, ScalesTheBonesUnlessNegligibleOrAlreadyAPersons) {
   };
   EXPECT_DOUBLE_EQ(drawnStature(plain, 1.003), 1.0);
   EXPECT_DOUBLE_EQ(drawnStature(plain, 1.1), 1.1);
-  EXPECT_NEAR(thigh(skeletonAtStature(plain, urdf, 1.1)), 1.1 * thigh(plain), 1e-9);
-  EXPECT_NEAR(thigh(skeletonAtStature(plain, urdf, 1.003)), thigh(plain), 1e-12);
+  EXPECT_NEAR(thigh(skeletonAtStature(plain, 1.1)), 1.1 * thigh(plain), 1e-9);
+  EXPECT_NEAR(thigh(skeletonAtStature(plain, 1.003)), thigh(plain), 1e-12);
+  // Without a parse, the same skeleton as the URDF shaped by that stature gives: every bone's
+  // shaped offset, length and radius.
+  BodyShape tall;
+  for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(1.1);
+  const Skeleton parsed = Skeleton::fromUrdf(shapedUrdf(urdf, tall));
+  const Skeleton scaled = skeletonAtStature(plain, 1.1);
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    EXPECT_LT((shapedRestTranslation(scaled, scaled.bodyShape(), b) - shapedRestTranslation(parsed, parsed.bodyShape(), b)).norm(), 1e-9) << b;
+    EXPECT_NEAR(scaled.bone(b).length, parsed.bone(b).length, 1e-9) << b;
+    EXPECT_NEAR(scaled.bone(b).radius, parsed.bone(b).radius, 1e-9) << b;
+    EXPECT_EQ(scaled.bodyShape().scale[b], parsed.bodyShape().scale[b]) << b;
+  }
   BodyShape person;
   for (Eigen::Vector3d& scale : person.scale) scale.setConstant(0.9);
   const std::string fitted = shapedUrdf(urdf, person);
   const Skeleton fitted_skeleton = Skeleton::fromUrdf(fitted);
   EXPECT_DOUBLE_EQ(drawnStature(fitted_skeleton, 1.1), 1.0);
-  EXPECT_NEAR(thigh(skeletonAtStature(fitted_skeleton, fitted, 1.1)), thigh(fitted_skeleton), 1e-12);
+  EXPECT_NEAR(thigh(skeletonAtStature(fitted_skeleton, 1.1)), thigh(fitted_skeleton), 1e-12);
   EXPECT_TRUE(isHumanId("a7"));
   EXPECT_FALSE(isHumanId(""));
   EXPECT_FALSE(isHumanId("a b"));
+}
+
+// A crowd human's drawn body: its skeleton at the stature with the human's suffix, and the
+// display's shape times the stature; unscaled within 0.5 % of 1.
+TEST(CrowdStature, ACrowdHumansBodyIsTheDisplaysShapeTimesItsStature) {
+  const Skeleton plain = Skeleton::fromUrdfFile(kUrdfPath);
+  const BodyDescription body =
+      loadBodyDescriptionFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/bodies/default.yaml", plain);
+  BodyShape shape;
+  const std::size_t shank = static_cast<std::size_t>(plain.findBone("l_knee"));
+  shape.scale[shank] = {1.0, 1.2, 1.0};
+  const CrowdHumanBody tall = crowdHumanBody(plain, body, shape, "_7", 1.1);
+  EXPECT_EQ(tall.skeleton.rootFrame(), "body_7");
+  EXPECT_TRUE(tall.description.shape.scale[shank].isApprox(Eigen::Vector3d(1.1, 1.32, 1.1)));
+  EXPECT_NEAR(tall.skeleton.bodyShape().scale[shank].z(), 1.1, 1e-12);
+  EXPECT_EQ(tall.description.segments.size(), body.segments.size());
+  const CrowdHumanBody same = crowdHumanBody(plain, body, shape, "_8", 1.003);
+  EXPECT_EQ(same.description.shape.scale[shank], shape.scale[shank]);
+  EXPECT_TRUE(same.skeleton.bodyShape().isIdentity());
 }
 
 }  // namespace

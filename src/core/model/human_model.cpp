@@ -123,12 +123,12 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
   corner_splits_.resize(parts_.size());
-  relief_tile_size_[0] = typicalPatchSize(skin_.patches());
+  relief_tile_size_[ReliefKind::kSkin] = typicalPatchSize(skin_.patches());
   std::vector<BezierPatch> cloth;
   for (const DressedGarment& dressed : garments_) {
     cloth.insert(cloth.end(), dressed.rest_patches.begin(), dressed.rest_patches.end());
   }
-  if (!cloth.empty()) relief_tile_size_[1] = typicalPatchSize(cloth);
+  if (!cloth.empty()) relief_tile_size_[ReliefKind::kCloth] = typicalPatchSize(cloth);
   std::vector<const std::vector<BezierPatch>*> rest{&skin_.patches()};  // built in the same rest pose
   for (const DressedGarment& dressed : garments_) rest.push_back(&dressed.rest_patches);
   covered_ = sharedCoveredPatches(rest);

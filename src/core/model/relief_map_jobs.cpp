@@ -113,7 +113,7 @@ ReliefMapJobs::~ReliefMapJobs() = default;
 std::size_t ReliefMapJobs::buildCount() { return builds.load(); }
 
 bool ReliefMapJobs::busy(ReliefKind kind) const {
-  const Job& job = jobs_[index(kind)];
+  const Job& job = jobs_[kind];
   return job.running && job.running->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
 }
 
@@ -124,7 +124,7 @@ void ReliefMapJobs::requestSkin(const SkinReliefParameters& parameters) {
 
 void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
   // A 512^2 map takes a noticeable fraction of a second; a bad parameter throws inside the job.
-  jobs_[index(ReliefKind::kSkin)].running = obtain(ReliefKind::kSkin, parameters, [parameters] {
+  jobs_[ReliefKind::kSkin].running = obtain(ReliefKind::kSkin, parameters, [parameters] {
     FinishedReliefMap done;
     auto map = std::make_shared<const ReliefMap>(SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize));
     done.normal_map = std::make_shared<const EncodedNormalMap>(encodeNormalMapMips(*map));
@@ -135,7 +135,7 @@ void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
 }
 
 void ReliefMapJobs::startCloth() {
-  jobs_[index(ReliefKind::kCloth)].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), [] {
+  jobs_[ReliefKind::kCloth].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), [] {
     FinishedReliefMap done;
     auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles());
     done.normal_map = std::make_shared<const EncodedNormalMap>(encodeFoldTilesMips(*tiles));
@@ -154,7 +154,7 @@ float ReliefMapJobs::clothHeightToTile() {
 std::vector<FinishedReliefMap> ReliefMapJobs::poll() {
   std::vector<FinishedReliefMap> finished;
   for (const ReliefKind kind : {ReliefKind::kSkin, ReliefKind::kCloth}) {
-    Job& job = jobs_[index(kind)];
+    Job& job = jobs_[kind];
     if (!job.running || busy(kind)) continue;
     finished.push_back(job.running->result.get());
     if (finished.back().map) {

@@ -44,9 +44,26 @@ struct CellSurface {
 // sequence keeps returning to the same alphas. Keyed by the exact alpha, so a cached fit is the
 // fit that would be computed. Bounded: emptied when full, as alphas from continuous compression
 // need not repeat.
-using FitKey = std::tuple<int, bool, double, double, double, int, int>;
+// One cell's pattern within a map: its kind, the side a Y splits to, its compression.
+struct CellPatternKey {
+  PatternKind kind;
+  bool split_on_right;
+  double alpha;
+  auto tied() const { return std::tie(kind, split_on_right, alpha); }
+  bool operator<(const CellPatternKey& other) const { return tied() < other.tied(); }
+};
 
-std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const BucklingPattern& pattern, const FitKey& key, int terms) {
+// A pattern across maps: the cell's, in a cell of that size, fitted with that many terms.
+struct FitKey {
+  CellPatternKey cell;
+  double half_width_x, half_length_y;
+  OutOfDomainPolicy out_of_domain;
+  int terms;
+  auto tied() const { return std::tie(cell.kind, cell.split_on_right, cell.alpha, half_width_x, half_length_y, out_of_domain, terms); }
+  bool operator<(const FitKey& other) const { return tied() < other.tied(); }
+};
+
+std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const BucklingPattern& pattern, const FitKey& key) {
   constexpr std::size_t kMaximumFits = 256;
   static std::mutex mutex;
   static std::map<FitKey, std::shared_ptr<const GaussianFoldApproximation>> fits;
@@ -55,7 +72,7 @@ std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const Bucklin
     const auto found = fits.find(key);
     if (found != fits.end()) return found->second;
   }
-  auto fit = std::make_shared<const GaussianFoldApproximation>(fitGaussians(pattern, terms));  // outside the lock
+  auto fit = std::make_shared<const GaussianFoldApproximation>(fitGaussians(pattern, key.terms));  // outside the lock
   const std::lock_guard<std::mutex> lock(mutex);
   if (fits.size() >= kMaximumFits) fits.clear();
   fits.emplace(key, fit);
@@ -96,22 +113,21 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
   const std::vector<ChainCell> oriented = orientChain(around, true);
 
   // Build each distinct cell surface once: fits cost milliseconds, pixels must not.
-  std::map<std::tuple<int, bool, double>, CellSurface> surfaces;
+  std::map<CellPatternKey, CellSurface> surfaces;
   std::vector<const CellSurface*> cell_surfaces(cell_count);
   for (int row = 0; row < spec.rows; ++row) {
     for (int column = 0; column < spec.cells_around; ++column) {
       const ChainCell& entry = oriented[static_cast<std::size_t>(column)];
       const bool split_on_right = entry.kind == PatternKind::Y && entry.split_right;
       const double alpha = alphaOfCell(spec, row, column);
-      const auto key = std::make_tuple(static_cast<int>(entry.kind), split_on_right, alpha);
+      const CellPatternKey key{entry.kind, split_on_right, alpha};
       auto found = surfaces.find(key);
       if (found == surfaces.end()) {
         CellSurface surface;
         surface.pattern = std::make_unique<BucklingPattern>(entry.kind, alpha, spec.cell, spec.out_of_domain, split_on_right);
         if (spec.surface == WrinkleSurface::gaussianApproximation) {
-          const FitKey fit_key(static_cast<int>(entry.kind), split_on_right, alpha, spec.cell.half_width_x, spec.cell.half_length_y,
-                               static_cast<int>(spec.out_of_domain), spec.gaussian_terms);
-          surface.gaussians = cachedGaussianFit(*surface.pattern, fit_key, spec.gaussian_terms);
+          const FitKey fit_key{key, spec.cell.half_width_x, spec.cell.half_length_y, spec.out_of_domain, spec.gaussian_terms};
+          surface.gaussians = cachedGaussianFit(*surface.pattern, fit_key);
         }
         found = surfaces.emplace(key, std::move(surface)).first;
       }

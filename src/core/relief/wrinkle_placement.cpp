@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -419,17 +420,16 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
   // keeps falling with flexion where the local measure stalls and even recovers (the surface
   // behind a sharply bent joint creases, see RegionCompression::alpha_span). Other rows (the
   // waist, free cloth) take the local measure.
-  constexpr double kNoRegion = 2.0;
-  std::vector<std::vector<double>> span_alpha(rest.size());
-  for (std::size_t p = 0; p < rest.size(); ++p) span_alpha[p].assign(static_cast<std::size_t>(result.layouts[p].rows), kNoRegion);
+  std::vector<std::vector<std::optional<double>>> span_alpha(rest.size());  // empty: no region's row
+  for (std::size_t p = 0; p < rest.size(); ++p) span_alpha[p].resize(static_cast<std::size_t>(result.layouts[p].rows));
   for (const RegionCompression& measured : placement.measureRegions(posed, pose)) {
     const CompressionRegion& region = placement.region(measured.name);
     if (region.spans.empty()) continue;
     for (const SurfacePoint& at : region.samples) {
       const int rows = result.layouts[at.patch].rows;
       const auto row = static_cast<std::size_t>(std::clamp(static_cast<int>(at.u * rows), 0, rows - 1));
-      double& alpha = span_alpha[at.patch][row];
-      alpha = std::min(alpha, measured.alpha_span);
+      std::optional<double>& alpha = span_alpha[at.patch][row];
+      alpha = std::min(alpha.value_or(measured.alpha_span), measured.alpha_span);
     }
   }
   constexpr int kSamplesAround = 9;
@@ -447,8 +447,8 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
           alphas.push_back(measureStretch(rest, posed, SurfacePoint{static_cast<std::uint32_t>(p), u, v}).alpha);
         }
       }
-      const double region_alpha = span_alpha[p][static_cast<std::size_t>(r)];
-      const double alpha = region_alpha != kNoRegion ? region_alpha : quantile(alphas, options.region_percentile);
+      const std::optional<double>& region_alpha = span_alpha[p][static_cast<std::size_t>(r)];
+      const double alpha = region_alpha ? *region_alpha : quantile(alphas, options.region_percentile);
       const WrinkleChoice choice = chooseWrinkles(alpha, layout.chain, layout.cell, options);
       any = any || choice.wrinkled;
       row_alpha.push_back(choice.alpha_effective);

@@ -230,6 +230,12 @@ Skeleton Skeleton::withSuffix(const std::string& suffix) const {
   return renamed;
 }
 
+Skeleton Skeleton::withBodyShape(const BodyShape& shape) const {
+  Skeleton shaped = *this;
+  shaped.body_shape_ = shape;
+  return shaped;
+}
+
 bool isHumanId(const std::string& id) {
   return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) { return std::isalnum(c) != 0; });
 }

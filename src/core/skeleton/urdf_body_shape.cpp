@@ -56,6 +56,15 @@ bool BodyShape::isIdentity() const {
   return true;
 }
 
+BodyShape BodyShape::appliedOn(const BodyShape& base) const {
+  BodyShape combined;
+  for (std::size_t b = 0; b < kBoneCount; ++b) {
+    combined.scale[b] = scale[b].cwiseProduct(base.scale[b]);
+    combined.offset[b] = offset[b] + base.offset[b];
+  }
+  return combined;
+}
+
 BodyShape urdfBodyShape(const std::string& urdf_xml) {
   tinyxml2::XMLDocument document;
   parse(document, urdf_xml);
@@ -182,12 +191,12 @@ double drawnStature(const Skeleton& skeleton, double stature) {
   return std::abs(stature - 1.0) < 0.005 || !skeleton.bodyShape().isIdentity() ? 1.0 : stature;
 }
 
-Skeleton skeletonAtStature(const Skeleton& skeleton, const std::string& urdf_xml, double stature) {
+Skeleton skeletonAtStature(const Skeleton& skeleton, double stature) {
   const double drawn = drawnStature(skeleton, stature);
-  if (drawn == 1.0 || urdf_xml.empty()) return skeleton;
+  if (drawn == 1.0) return skeleton;
   BodyShape tall;
   for (Eigen::Vector3d& scale : tall.scale) scale.setConstant(drawn);
-  return Skeleton::fromUrdf(shapedUrdf(urdf_xml, tall)).withSuffix(skeleton.suffix());
+  return skeleton.withBodyShape(tall);
 }
 
 }  // namespace dressed_human

@@ -6,6 +6,7 @@
 #include <rviz/properties/float_property.h>
 #include <rviz/properties/ros_topic_property.h>
 #include <rviz/properties/string_property.h>
+#include "properties/notifying.h"
 
 namespace dressed_human {
 namespace {
@@ -17,30 +18,29 @@ const char* const kFromTopic = "From Topic";
 }  // namespace
 
 CrowdProperties::CrowdProperties(rviz::Property* parent) {
-  humans_ = new rviz::EnumProperty(
+  humans_ = notifying(new rviz::EnumProperty(
       "Humans", kRobotDescription,
       "Robot Description: the one human whose skeleton the Robot Description names. Every Human in TF: "
       "each skeleton TF carries (root frames body, body_<id>, checked every second), all with the "
       "Robot Description's skeleton; a human whose TF stops for Human Timeout leaves the display. From Topic: "
       "every human of the dressed_human/Crowd messages on Topic (crowd_publisher), one message for all; a "
       "human absent from the messages for 1 s leaves the display.",
-      parent, SLOT(humansChanged()), this);
+      parent), this, &CrowdProperties::humansChanged);
   humans_->addOption(kRobotDescription);
   humans_->addOption(kEveryHumanInTf);
   humans_->addOption(kFromTopic);
-  topic_ = new rviz::RosTopicProperty("Topic", "/crowd", "dressed_human/Crowd",
+  topic_ = notifying(new rviz::RosTopicProperty("Topic", "/crowd", "dressed_human/Crowd",
                                       "The dressed_human/Crowd topic the humans come from (crowd_publisher's /crowd).",
-                                      parent, SIGNAL(topicChanged()), this);
-  crowd_file_ = new rviz::StringProperty(
+                                      parent), this, &CrowdProperties::topicChanged);
+  crowd_file_ = notifying(new rviz::StringProperty(
       "Crowd File", "",
       "YAML file of what each human wears, by id, as a path or package://<package>/<path> "
-      "(package://dressed_human/config/crowds/example.yaml); empty: none.", parent,
-      SIGNAL(changed()), this);
-  vary_unlisted_ = new rviz::BoolProperty(
+      "(package://dressed_human/config/crowds/example.yaml); empty: none.", parent), this, &CrowdProperties::changed);
+  vary_unlisted_ = notifying(new rviz::BoolProperty(
       "Vary Unlisted Humans", true,
       "Humans the crowd file does not name get an outfit and colours picked from their id (the same "
       "every run); off: the display's own Outfit and colours.",
-      parent, SIGNAL(changed()), this);
+      parent), this, &CrowdProperties::changed);
   // Like the TF display's Frame Timeout: a pedestrian removed from a simulation, a stopped node.
   human_timeout_ = new rviz::FloatProperty(
       "Human Timeout", 5.0f, "Seconds without fresh TF (newer than 1 s) before a human leaves the display.", parent);

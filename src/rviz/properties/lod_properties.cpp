@@ -9,13 +9,13 @@
 #include <rviz/properties/float_property.h>
 #include <rviz/properties/int_property.h>
 
-#include "relief_material.h"
+#include "properties/notifying.h"
 
 namespace dressed_human {
 namespace {
 
 enum LodMode { kAutomatic = 0, kFixed = 1 };
-enum VertexSource { kGpuVertices = 0, kCpuVertices = 1, kAutomaticVertices = 2 };
+enum VertexOption { kGpuVertices = 0, kCpuVertices = 1, kAutomaticVertices = 2 };  // the property's option values
 
 }  // namespace
 
@@ -31,13 +31,13 @@ LodProperties::LodProperties(rviz::Property* parent) {
   max_error_pixels_ =
       new rviz::FloatProperty("Max Screen Error", 1.0, "Automatic level: largest geometric error in pixels.", parent);
   max_error_pixels_->setMin(0.1);
-  vertex_evaluation_ = new rviz::EnumProperty(
+  vertex_evaluation_ = notifying(new rviz::EnumProperty(
       "Vertex Evaluation", "Automatic",
       "GPU: the vertex shader evaluates the Bezier patches from their control points; rviz's thread only poses "
       "the control points. CPU: every vertex is evaluated and sent each frame. Automatic: GPU on a graphics card, "
       "CPU on a software renderer (Mesa llvmpipe), whose vertex shader runs on one CPU thread. Displaced geometry "
       "is always CPU.",
-      parent, SIGNAL(vertexEvaluationChanged()), this);
+      parent), this, &LodProperties::vertexEvaluationChanged);
   vertex_evaluation_->addOption("Automatic", kAutomaticVertices);
   vertex_evaluation_->addOption("GPU", kGpuVertices);
   vertex_evaluation_->addOption("CPU", kCpuVertices);
@@ -69,30 +69,12 @@ CameraView LodProperties::cameraView(const Ogre::Camera& camera) {
 
 bool LodProperties::automatic() const { return mode_->getOptionInt() == kAutomatic; }
 
-LodProperties::VertexChoice LodProperties::chooseVertexEvaluation(const HumanModel& model, const std::string& gpu_problem,
-                                                                  const std::string& software_renderer) const {
-  std::string problem = gpu_problem;
-  for (std::size_t p = 0; problem.empty() && p < model.parts().size(); ++p) {
-    if (model.partPatches(p).size() > ReliefMaterial::kMaxPatches) {
-      problem = model.parts()[p].name + " has " + std::to_string(model.partPatches(p).size()) +
-                " patches, the vertex shader holds " + std::to_string(ReliefMaterial::kMaxPatches);
-    }
+VertexSource LodProperties::vertexSource() const {
+  switch (vertex_evaluation_->getOptionInt()) {
+    case kGpuVertices: return VertexSource::kRenderer;
+    case kCpuVertices: return VertexSource::kCpu;
+    default: return VertexSource::kAutomatic;
   }
-  const int source = vertex_evaluation_->getOptionInt();
-  VertexChoice choice;
-  if (source == kAutomaticVertices && !software_renderer.empty()) {
-    choice.status = "CPU (Automatic): " + software_renderer +
-                    " renders in software, its vertex shader would run on one thread of rviz";
-    return choice;
-  }
-  if (source == kCpuVertices) return choice;
-  if (!problem.empty()) {
-    choice.warn = true;
-    choice.status = problem + "; the CPU evaluates the vertices";
-    return choice;
-  }
-  choice.evaluation = VertexEvaluation::kRenderer;
-  return choice;
 }
 
 LevelOfDetail LodProperties::levelOfDetail(const Ogre::Camera* camera) const {

@@ -7,6 +7,7 @@
 #include <QObject>
 
 #include "dressed_human/core/model/human_model.h"
+#include "dressed_human/core/model/vertex_evaluation_choice.h"
 #include "properties/rviz_properties_fwd.h"
 
 namespace Ogre {
@@ -24,19 +25,9 @@ class LodProperties : public QObject {
   LevelOfDetail levelOfDetail(const Ogre::Camera* camera) const;
   bool automatic() const;
 
-  // Who evaluates `model`'s vertices as the "Vertex Evaluation" property asks, and what its
-  // status says (empty text: no status). `gpu_problem`: why the Bezier vertex shader cannot run
-  // here (empty: it can). `software_renderer`: the GL renderer's name when it rasterizes on the
-  // CPU (llvmpipe), empty on a GPU. Automatic picks the GPU's vertex shader on a GPU and the CPU
-  // on a software renderer, whose vertex shader runs on one thread of rviz (bench/rviz_scaling.py
-  // measures both).
-  struct VertexChoice {
-    VertexEvaluation evaluation = VertexEvaluation::kCpu;
-    bool warn = false;
-    std::string status;
-  };
-  VertexChoice chooseVertexEvaluation(const HumanModel& model, const std::string& gpu_problem,
-                                      const std::string& software_renderer) const;
+  // Who the "Vertex Evaluation" property asks to evaluate the vertices (chooseVertexEvaluation
+  // decides with what the renderer allows).
+  VertexSource vertexSource() const;
   // Whether a relief too small to see is drawn with the plain material (ReliefVisibility).
   bool hideUnseenRelief() const;
   // Whether what the clothes cover may be left out where it cannot be seen (LevelOfDetail::hide_covered).

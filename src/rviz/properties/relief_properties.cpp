@@ -9,6 +9,7 @@
 #include <rviz/properties/int_property.h>
 
 #include "dressed_human/core/surfaces/tessellation.h"
+#include "properties/notifying.h"
 
 namespace dressed_human {
 namespace {
@@ -16,7 +17,7 @@ namespace {
 // A float property in [min, max] that asks for a new skin map.
 rviz::FloatProperty* skinFloat(const char* name, double value, const char* help, double min, double max,
                                rviz::Property* parent, ReliefProperties* group) {
-  auto* property = new rviz::FloatProperty(name, static_cast<float>(value), help, parent, SIGNAL(skinMapChanged()), group);
+  auto* property = notifying(new rviz::FloatProperty(name, static_cast<float>(value), help, parent), group, &ReliefProperties::skinMapChanged);
   property->setMin(static_cast<float>(min));
   property->setMax(static_cast<float>(max));
   return property;
@@ -25,34 +26,32 @@ rviz::FloatProperty* skinFloat(const char* name, double value, const char* help,
 }  // namespace
 
 ReliefProperties::ReliefProperties(rviz::Property* parent) {
-  mode_ = new rviz::EnumProperty(
+  mode_ = notifying(new rviz::EnumProperty(
       "Relief", "Bump mapping",
       "Bump mapping: per-pixel normals from the relief maps. Displaced geometry: the relief heights move the "
       "vertices of a finer mesh (the reference bump mapping approximates; costs far more). Flat: no relief.",
-      parent, SIGNAL(appearanceChanged()), this);
+      parent), this, &ReliefProperties::appearanceChanged);
   mode_->addOption("Bump mapping", static_cast<int>(ReliefMode::kBumpMapping));
   mode_->addOption("Flat", static_cast<int>(ReliefMode::kFlat));
   mode_->addOption("Displaced geometry", static_cast<int>(ReliefMode::kDisplacedGeometry));
-  displacement_level_ = new rviz::IntProperty(
+  displacement_level_ = notifying(new rviz::IntProperty(
       "Displacement Level", 24, "Displaced geometry: each patch is cut n x n, whatever the level of detail (4-32).",
-      mode_, SIGNAL(appearanceChanged()), this);
+      mode_), this, &ReliefProperties::appearanceChanged);
   displacement_level_->setMin(4);
   displacement_level_->setMax(Tessellator::kMaxLevel);
-  skin_strength_ = new rviz::FloatProperty("Skin Relief Strength", 1.0, "Scales the relief's normal tilt.", parent,
-                                           SIGNAL(appearanceChanged()), this);
+  skin_strength_ = notifying(new rviz::FloatProperty("Skin Relief Strength", 1.0, "Scales the relief's normal tilt.", parent), this, &ReliefProperties::appearanceChanged);
   skin_strength_->setMin(0.0);
   skin_strength_->setMax(5.0);
-  wrinkle_strength_ = new rviz::FloatProperty("Wrinkle Strength", 0.6, "Scales the garments' buckling-wrinkle relief.",
-                                              parent, SIGNAL(appearanceChanged()), this);
+  wrinkle_strength_ = notifying(new rviz::FloatProperty("Wrinkle Strength", 0.6, "Scales the garments' buckling-wrinkle relief.",
+                                              parent), this, &ReliefProperties::appearanceChanged);
   wrinkle_strength_->setMin(0.0);
   wrinkle_strength_->setMax(5.0);
-  levels_ = new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", parent,
-                                  SIGNAL(skinMapChanged()), this);
+  levels_ = notifying(new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", parent), this, &ReliefProperties::skinMapChanged);
   levels_->setMin(1);
   levels_->setMax(3);
   cell_size_ = skinFloat("Skin Cell Size", 1.0 / 12.0, "Level-1 cell spacing as a fraction of the relief tile.", 0.01,
                          1.0, parent, this);
-  seed_ = new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", parent, SIGNAL(skinMapChanged()), this);
+  seed_ = notifying(new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", parent), this, &ReliefProperties::skinMapChanged);
   seed_->setMin(0);
   const SkinReliefParameters defaults;
   direction_ = skinFloat("Skin Direction", 0.0,

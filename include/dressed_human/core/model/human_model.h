@@ -20,10 +20,10 @@
 #include "dressed_human/core/surfaces/skin.h"
 #include "dressed_human/core/surfaces/tessellation.h"
 #include "dressed_human/core/relief/vertex_compression.h"
+#include "dressed_human/core/model/relief_kind.h"
 
 namespace dressed_human {
 
-enum class ReliefKind { kSkin, kCloth };
 
 struct SurfacePart {
   std::string name;
@@ -150,7 +150,7 @@ class HumanModel {
   // The size (m) of one relief tile on the parts of `kind`: the reliefs are tiled once per patch,
   // so this is the typical patch size at rest (typicalPatchSize); 0 for cloth without garments.
   // A relief's features are a fraction of it (ReliefVisibility).
-  double reliefTileSize(ReliefKind kind) const { return relief_tile_size_[kind == ReliefKind::kSkin ? 0 : 1]; }
+  double reliefTileSize(ReliefKind kind) const { return relief_tile_size_[kind]; }
   // Encloses every part as posed by the last update() (empty before).
   Eigen::AlignedBox3f bounds() const;
 
@@ -178,7 +178,7 @@ class HumanModel {
     std::vector<Eigen::Vector2f> fold_axes;    // per vertex, last levels used
   };
   std::vector<DressedGarment> garments_;
-  std::array<double, 2> relief_tile_size_{{0.0, 0.0}};  // by ReliefKind
+  PerReliefKind<double> relief_tile_size_{0.0, 0.0};
   std::vector<SurfacePart> parts_;
   struct AutomaticLevels {
     std::vector<int> levels;        // per patch, the level in use

@@ -59,9 +59,9 @@ class ReliefMapJobs {
   // The builds finished since the last call, skin first; never waits.
   std::vector<FinishedReliefMap> poll();
   // The newest map of `kind` built without an error; null before.
-  const std::shared_ptr<const ReliefMap>& map(ReliefKind kind) const { return jobs_[index(kind)].map; }
+  const std::shared_ptr<const ReliefMap>& map(ReliefKind kind) const { return jobs_[kind].map; }
   // The newest fold tiles built without an error (the cloth map's); null before.
-  const std::shared_ptr<const FoldTiles>& foldTiles() const { return jobs_[index(ReliefKind::kCloth)].fold_tiles; }
+  const std::shared_ptr<const FoldTiles>& foldTiles() const { return jobs_[ReliefKind::kCloth].fold_tiles; }
 
   // Maps built in this process so far (each shared build counts once).
   static std::size_t buildCount();
@@ -75,11 +75,10 @@ class ReliefMapJobs {
     std::shared_ptr<const ReliefMap> map;
     std::shared_ptr<const FoldTiles> fold_tiles;
   };
-  static std::size_t index(ReliefKind kind) { return kind == ReliefKind::kSkin ? 0 : 1; }
   bool busy(ReliefKind kind) const;
   void startSkin(const SkinReliefParameters& parameters);
 
-  std::array<Job, 2> jobs_;
+  PerReliefKind<Job> jobs_;
   SkinReliefParameters skin_started_;   // what the running (or last) skin build was started with
   SkinReliefParameters skin_requested_;  // the newest request
 };

@@ -35,6 +35,9 @@ struct BodyShape {
     offset.fill(Eigen::Vector3d::Zero());
   }
   bool isIdentity() const;
+  // This shape on top of `base` (a fitted person's, carried by its URDF): scales multiply,
+  // joint offsets add.
+  BodyShape appliedOn(const BodyShape& base) const;
 };
 constexpr double kMaxShapeOffset = 0.3;  // m: a joint moved further is no person's
 
@@ -92,6 +95,9 @@ class Skeleton {
   // `suffix` ("" or "_<id>", id alphanumeric) instead of this one's. Throws SkeletonError for
   // any other suffix.
   Skeleton withSuffix(const std::string& suffix) const;
+  // The same bones carrying `shape` as the proportions of the person, as if parsed from the URDF
+  // shapedUrdf() writes with it (no parse: a crowd display adds humans on rviz's thread).
+  Skeleton withBodyShape(const BodyShape& shape) const;
 
  private:
   std::vector<Bone> bones_;               // parents before children

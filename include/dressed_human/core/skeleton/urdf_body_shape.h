@@ -21,12 +21,12 @@ namespace dressed_human {
 // the original) or a factor that is not finite and positive.
 std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape);
 
-// A crowd human `stature` times the size of `skeleton` (parsed from `urdf_xml`), as the crowd
-// publisher walks it and the DressedHuman display draws it: the stature it is drawn at (1 within
-// 0.5 % of 1, and for a URDF recording a person's proportions of its own, which are not rescaled)
-// and the skeleton at that stature (the URDF shaped by it).
+// A crowd human `stature` times the size of `skeleton`, as the crowd publisher walks it and the
+// DressedHuman display draws it: the stature it is drawn at (1 within 0.5 % of 1, and for a URDF
+// recording a person's proportions of its own, which are not rescaled) and the skeleton at that
+// stature (as if its URDF were shaped by it).
 double drawnStature(const Skeleton& skeleton, double stature);
-Skeleton skeletonAtStature(const Skeleton& skeleton, const std::string& urdf_xml, double stature);
+Skeleton skeletonAtStature(const Skeleton& skeleton, double stature);
 
 // The shape a URDF records; identity when it records none. Throws SkeletonError naming what is
 // wrong with a malformed record (unknown bone, missing or non-positive factor, a bone twice).
