@@ -16,6 +16,9 @@ namespace {
 
 enum LodMode { kAutomatic = 0, kFixed = 1 };
 enum VertexOption { kGpuVertices = 0, kCpuVertices = 1, kAutomaticVertices = 2 };  // the property's option values
+// A camera rviz has not yet attached to its render panel's viewport has no height: it is judged
+// as if on a panel this tall (a typical rviz view), for the frame or two until it is attached.
+constexpr double kUnattachedViewportPixels = 1000.0;
 
 }  // namespace
 
@@ -64,7 +67,8 @@ bool LodProperties::hideCovered() const { return hide_covered_->getBool(); }
 CameraView LodProperties::cameraView(const Ogre::Camera& camera) {
   const Ogre::Vector3 eye = camera.getDerivedPosition();
   return CameraView{Eigen::Vector3d(eye.x, eye.y, eye.z), camera.getFOVy().valueRadians(),
-                    camera.getViewport() ? static_cast<double>(camera.getViewport()->getActualHeight()) : 1000.0};
+                    camera.getViewport() ? static_cast<double>(camera.getViewport()->getActualHeight())
+                                          : kUnattachedViewportPixels};
 }
 
 bool LodProperties::automatic() const { return mode_->getOptionInt() == kAutomatic; }
