@@ -233,6 +233,42 @@ class Builder {
   double knee_ = 0.0;
   std::int64_t crotch_ = -1;
 
+  using LatticePoints = std::vector<std::pair<std::pair<int, int>, std::uint32_t>>;  // (i, j) of the net, point
+
+  // Pants: the crotch C (lattice (0, 3) = (n/2, 3), where the hips' front and back centre lines
+  // end and both tubes' inseams start) and its twist ring: the eight control points diagonal
+  // to C, one per patch: tangent projections of shape points on the crotch ellipse (garment.h).
+  LatticePoints crotchPoints(int n) {
+    LatticePoints crotch_points;
+    const int bone = boneOf(d_.crotch_frame);
+    ShapeAttachment a;
+    a.bone = bone;
+    a.local = scaled(bone, d_.crotch);
+    const std::uint32_t c = net_.addShape(a, "crotch");
+    crotch_ = c;
+    crotch_points.push_back({{0, 3}, c});
+    crotch_points.push_back({{n / 2, 3}, c});
+    const int half = n / 2;
+    // Lattice position of each patch's twist point at C, by the angle of its sector around C
+    // (x front, y left): hips front-left, left leg front, left leg back, hips back-left, ...
+    const std::pair<int, int> twist[8] = {{1, 2},        {1, 4},        {half - 1, 4}, {half - 1, 2},
+                                          {half + 1, 2}, {half + 1, 4}, {n - 1, 4},    {n - 1, 2}};
+    for (int k = 0; k < 8; ++k) {
+      const double angle = M_PI / 8.0 + k * M_PI / 4.0;
+      const bool leg_sector = twist[k].second > 3;
+      const Eigen::Vector2d& radius = leg_sector ? d_.crotch_leg_radius : d_.crotch_radius;
+      // Source: on the crotch ellipse, fixed in the crotch frame. (Riding the thighs instead
+      // follows the legs better, but hip rotation then swaps the sources' order around C in
+      // some walk poses, and the 8 sectors no longer go once around it: a fold.)
+      ShapeAttachment t;
+      t.bone = bone;
+      t.local = a.local + scaled(bone, Eigen::Vector3d(radius.x() * std::cos(angle), radius.y() * std::sin(angle), 0.0));
+      const std::uint32_t source = net_.addShape(t, "crotch");
+      crotch_points.push_back({twist[k], net_.addTangentProjection(source, c, bone, "crotch")});
+    }
+    return crotch_points;
+  }
+
   void build() {
     const GarmentType type = d_.type;
     Lattice lat;
@@ -278,38 +314,7 @@ class Builder {
     if (pants) lat.tube_row = 1;
     const int n = lat.around();
 
-    // Pants: the crotch C (lattice (0, 3) = (n/2, 3), where the hips' front and back centre lines
-    // end and both tubes' inseams start) and its twist ring: the eight control points diagonal
-    // to C, one per patch: tangent projections of shape points on the crotch ellipse (garment.h).
-    std::vector<std::pair<std::pair<int, int>, std::uint32_t>> crotch_points;
-    if (pants) {
-      const int bone = boneOf(d_.crotch_frame);
-      ShapeAttachment a;
-      a.bone = bone;
-      a.local = scaled(bone, d_.crotch);
-      const std::uint32_t c = net_.addShape(a, "crotch");
-      crotch_ = c;
-      crotch_points.push_back({{0, 3}, c});
-      crotch_points.push_back({{n / 2, 3}, c});
-      const int half = n / 2;
-      // Lattice position of each patch's twist point at C, by the angle of its sector around C
-      // (x front, y left): hips front-left, left leg front, left leg back, hips back-left, ...
-      const std::pair<int, int> twist[8] = {{1, 2},        {1, 4},        {half - 1, 4}, {half - 1, 2},
-                                            {half + 1, 2}, {half + 1, 4}, {n - 1, 4},    {n - 1, 2}};
-      for (int k = 0; k < 8; ++k) {
-        const double angle = M_PI / 8.0 + k * M_PI / 4.0;
-        const bool leg_sector = twist[k].second > 3;
-        const Eigen::Vector2d& radius = leg_sector ? d_.crotch_leg_radius : d_.crotch_radius;
-        // Source: on the crotch ellipse, fixed in the crotch frame. (Riding the thighs instead
-        // follows the legs better, but hip rotation then swaps the sources' order around C in
-        // some walk poses, and the 8 sectors no longer go once around it: a fold.)
-        ShapeAttachment t;
-        t.bone = bone;
-        t.local = a.local + scaled(bone, Eigen::Vector3d(radius.x() * std::cos(angle), radius.y() * std::sin(angle), 0.0));
-        const std::uint32_t source = net_.addShape(t, "crotch");
-        crotch_points.push_back({twist[k], net_.addTangentProjection(source, c, bone, "crotch")});
-      }
-    }
+    const LatticePoints crotch_points = pants ? crotchPoints(n) : LatticePoints{};
     auto override_point = [&](int i, int j) -> std::int64_t {
       for (const auto& [at_ij, point] : crotch_points) {
         if (at_ij == std::make_pair(i, j)) return point;

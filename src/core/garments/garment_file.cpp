@@ -111,6 +111,32 @@ class GarmentYamlReader : public YamlReader<GarmentError> {
   const Skeleton& skeleton_;
 };
 
+// The pants' crotch: its midline frame, point and the radii of its twist ring (garment.h).
+void readCrotch(const GarmentYamlReader& reader, const YAML::Node& crotch, GarmentDescription& g) {
+  reader.requireMap(crotch, "crotch");
+  reader.rejectUnknownKeys(crotch, "crotch", {"frame", "point", "radius", "leg_radius"});
+  g.crotch_frame = reader.frame(reader.require(crotch, "frame", "crotch"), "crotch.frame", false);
+  if (g.crotch_frame.rfind("l_", 0) == 0 || g.crotch_frame.rfind("r_", 0) == 0) {
+    reader.fail(crotch["frame"], "crotch.frame", "must be a frame on the body's midline (body, waist, ...)");
+  }
+  g.crotch = reader.vector<3>(reader.require(crotch, "point", "crotch"), "crotch.point");
+  for (int i = 0; i < 3; ++i) {
+    reader.numberWithin(crotch["point"][i], "crotch.point[" + std::to_string(i) + "]", -kMaxOffset, kMaxOffset, " m");
+  }
+  auto radius = [&](const char* key, Eigen::Vector2d& out) {
+    if (!crotch[key]) return;
+    const std::string path = std::string("crotch.") + key;
+    out = reader.vector<2>(crotch[key], path);
+    for (int i = 0; i < 2; ++i) {
+      if (!(out[i] > 0.0)) reader.fail(crotch[key][i], path + "[" + std::to_string(i) + "]", "must be > 0, got " + crotch[key][i].Scalar());
+      reader.numberWithin(crotch[key][i], path + "[" + std::to_string(i) + "]", 0.0, kMaxRadius, " m");
+    }
+  };
+  radius("radius", g.crotch_radius);
+  g.crotch_leg_radius = g.crotch_radius;
+  radius("leg_radius", g.crotch_leg_radius);
+}
+
 }  // namespace
 
 GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton& skeleton,
@@ -198,29 +224,7 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
     reader.fail(document["legs"], "legs", "a jacket has no legs part");
   }
   if (g.type == GarmentType::kPants) {
-    const YAML::Node crotch = reader.require(document, "crotch", "");
-    reader.requireMap(crotch, "crotch");
-    reader.rejectUnknownKeys(crotch, "crotch", {"frame", "point", "radius", "leg_radius"});
-    g.crotch_frame = reader.frame(reader.require(crotch, "frame", "crotch"), "crotch.frame", false);
-    if (g.crotch_frame.rfind("l_", 0) == 0 || g.crotch_frame.rfind("r_", 0) == 0) {
-      reader.fail(crotch["frame"], "crotch.frame", "must be a frame on the body's midline (body, waist, ...)");
-    }
-    g.crotch = reader.vector<3>(reader.require(crotch, "point", "crotch"), "crotch.point");
-    for (int i = 0; i < 3; ++i) {
-      reader.numberWithin(crotch["point"][i], "crotch.point[" + std::to_string(i) + "]", -kMaxOffset, kMaxOffset, " m");
-    }
-    auto radius = [&](const char* key, Eigen::Vector2d& out) {
-      if (!crotch[key]) return;
-      const std::string path = std::string("crotch.") + key;
-      out = reader.vector<2>(crotch[key], path);
-      for (int i = 0; i < 2; ++i) {
-        if (!(out[i] > 0.0)) reader.fail(crotch[key][i], path + "[" + std::to_string(i) + "]", "must be > 0, got " + crotch[key][i].Scalar());
-        reader.numberWithin(crotch[key][i], path + "[" + std::to_string(i) + "]", 0.0, kMaxRadius, " m");
-      }
-    };
-    radius("radius", g.crotch_radius);
-    g.crotch_leg_radius = g.crotch_radius;
-    radius("leg_radius", g.crotch_leg_radius);
+    readCrotch(reader, reader.require(document, "crotch", ""), g);
   } else if (document["crotch"]) {
     reader.fail(document["crotch"], "crotch", "only pants have a crotch");
   }

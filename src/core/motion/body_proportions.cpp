@@ -50,26 +50,39 @@ void applyOverallFactor(const Skeleton& skeleton, const std::array<bool, kBoneCo
   }
 }
 
-}  // namespace
+// The capture's rest pose, read joint by joint of the map, and its factors checked against ours.
+struct RestSource {
+  const BvhClip& clip;
+  const BvhJointMap& map;
+  const Skeleton& skeleton;
+  BvhPose rest;
+  const std::string& source_name;
 
-BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
-                                   double metres_per_unit, const std::string& source_name) {
-  checkBvhJointMap(map, clip, source_name);
-  const BvhPose rest = bvhRestPose(clip);
-  const auto source = [&](int joint) -> const Eigen::Vector3d& {
+  const Eigen::Vector3d& position(int joint) const {
     return rest.position[static_cast<std::size_t>(clip.findJoint(map.joints[static_cast<std::size_t>(joint)]))];
-  };
-  const auto boneOf = [&](int joint) { return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone); };
-
-  BodyProportions proportions;
-  const auto check = [&](double factor, const std::string& what) {
+  }
+  std::size_t boneOf(int joint) const { return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone); }
+  double checked(double factor, const std::string& what) const {
     if (!(factor >= kMinShapeScale && factor <= kMaxShapeScale)) {
       throw MotionError(source_name + ": " + what + " is " + factorText(factor) + " times ours, outside [" +
                         factorText(kMinShapeScale) + ", " + factorText(kMaxShapeScale) +
                         "]: a wrong unit (--units) or joint map?");
     }
     return factor;
-  };
+  }
+};
+
+}  // namespace
+
+BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
+                                   double metres_per_unit, const std::string& source_name) {
+  checkBvhJointMap(map, clip, source_name);
+  const RestSource read{clip, map, skeleton, bvhRestPose(clip), source_name};
+  const BvhPose& rest = read.rest;
+  const auto source = [&](int joint) -> const Eigen::Vector3d& { return read.position(joint); };
+  const auto boneOf = [&](int joint) { return read.boneOf(joint); };
+  const auto check = [&](double factor, const std::string& what) { return read.checked(factor, what); };
+  BodyProportions proportions;
   const double stature = check(bvhRestStature(clip) * metres_per_unit / skeletonStature(skeleton), "the rest pose's stature");
 
   // Lengths of the bones between two mapped joints, and of the feet (their length sets where the

@@ -143,6 +143,49 @@ double maximumWobble(const CellLevel& level, const Wall& wall) {
   return largest;
 }
 
+// Bucket grid: each cell's polygon (padded by its wobble), in all 9 periodic images.
+// Buckets of a third of a seed spacing: few candidates each (measured: 3x3 per lattice cell is
+// the sweet spot between candidate count and bucket-list size).
+void buildBuckets(CellLevel& level, const Lattice& lattice) {
+  level.buckets_x = 3 * lattice.columns;
+  level.buckets_y = 3 * lattice.rows;
+  const std::size_t bucket_count = static_cast<std::size_t>(level.buckets_x) * static_cast<std::size_t>(level.buckets_y);
+  std::vector<std::vector<std::pair<int, Eigen::Vector2i>>> buckets(bucket_count);
+  for (std::size_t index = 0; index < level.cells.size(); ++index) {
+    const Cell& cell = level.cells[index];
+    Eigen::Vector2d low = cell.polygon.front(), high = cell.polygon.front();
+    for (const auto& vertex : cell.polygon) {
+      low = low.cwiseMin(vertex);
+      high = high.cwiseMax(vertex);
+    }
+    const double pad = cell.wobble_margin + 1e-9;
+    for (int oy = -1; oy <= 1; ++oy) {
+      for (int ox = -1; ox <= 1; ++ox) {
+        const Eigen::Vector2d shift(ox, oy);
+        const Eigen::Vector2d a = low + shift - Eigen::Vector2d::Constant(pad);
+        const Eigen::Vector2d b = high + shift + Eigen::Vector2d::Constant(pad);
+        if (b.x() < 0.0 || b.y() < 0.0 || a.x() >= 1.0 || a.y() >= 1.0) continue;
+        const int x0 = std::max(0, static_cast<int>(std::floor(a.x() * level.buckets_x)));
+        const int x1 = std::min(level.buckets_x - 1, static_cast<int>(std::floor(b.x() * level.buckets_x)));
+        const int y0 = std::max(0, static_cast<int>(std::floor(a.y() * level.buckets_y)));
+        const int y1 = std::min(level.buckets_y - 1, static_cast<int>(std::floor(b.y() * level.buckets_y)));
+        for (int by = y0; by <= y1; ++by)
+          for (int bx = x0; bx <= x1; ++bx)
+            buckets[static_cast<std::size_t>(by) * static_cast<std::size_t>(level.buckets_x) + static_cast<std::size_t>(bx)]
+                .emplace_back(static_cast<int>(index), Eigen::Vector2i(-ox, -oy));
+      }
+    }
+  }
+  level.bucket_start.assign(bucket_count + 1, 0);
+  for (std::size_t bucket = 0; bucket < bucket_count; ++bucket) {
+    level.bucket_start[bucket + 1] = level.bucket_start[bucket] + static_cast<int>(buckets[bucket].size());
+    for (const auto& entry : buckets[bucket]) {
+      level.bucket_cell.push_back(entry.first);
+      level.bucket_offset.push_back(entry.second);
+    }
+  }
+}
+
 void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, double stretch, std::mt19937& random,
                    std::mt19937& wobble_random) {
   const Lattice lattice = latticeFor(level.spacing, parameters.direction_angle, stretch);
@@ -219,47 +262,7 @@ void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, dou
       }
     }
   }
-
-  // Bucket grid: each cell's polygon (padded by its wobble), in all 9 periodic images.
-  // Buckets of a third of a seed spacing: few candidates each (measured: 3x3 per lattice cell is
-  // the sweet spot between candidate count and bucket-list size).
-  level.buckets_x = 3 * lattice.columns;
-  level.buckets_y = 3 * lattice.rows;
-  const std::size_t bucket_count = static_cast<std::size_t>(level.buckets_x) * static_cast<std::size_t>(level.buckets_y);
-  std::vector<std::vector<std::pair<int, Eigen::Vector2i>>> buckets(bucket_count);
-  for (std::size_t index = 0; index < level.cells.size(); ++index) {
-    const Cell& cell = level.cells[index];
-    Eigen::Vector2d low = cell.polygon.front(), high = cell.polygon.front();
-    for (const auto& vertex : cell.polygon) {
-      low = low.cwiseMin(vertex);
-      high = high.cwiseMax(vertex);
-    }
-    const double pad = cell.wobble_margin + 1e-9;
-    for (int oy = -1; oy <= 1; ++oy) {
-      for (int ox = -1; ox <= 1; ++ox) {
-        const Eigen::Vector2d shift(ox, oy);
-        const Eigen::Vector2d a = low + shift - Eigen::Vector2d::Constant(pad);
-        const Eigen::Vector2d b = high + shift + Eigen::Vector2d::Constant(pad);
-        if (b.x() < 0.0 || b.y() < 0.0 || a.x() >= 1.0 || a.y() >= 1.0) continue;
-        const int x0 = std::max(0, static_cast<int>(std::floor(a.x() * level.buckets_x)));
-        const int x1 = std::min(level.buckets_x - 1, static_cast<int>(std::floor(b.x() * level.buckets_x)));
-        const int y0 = std::max(0, static_cast<int>(std::floor(a.y() * level.buckets_y)));
-        const int y1 = std::min(level.buckets_y - 1, static_cast<int>(std::floor(b.y() * level.buckets_y)));
-        for (int by = y0; by <= y1; ++by)
-          for (int bx = x0; bx <= x1; ++bx)
-            buckets[static_cast<std::size_t>(by) * static_cast<std::size_t>(level.buckets_x) + static_cast<std::size_t>(bx)]
-                .emplace_back(static_cast<int>(index), Eigen::Vector2i(-ox, -oy));
-      }
-    }
-  }
-  level.bucket_start.assign(bucket_count + 1, 0);
-  for (std::size_t bucket = 0; bucket < bucket_count; ++bucket) {
-    level.bucket_start[bucket + 1] = level.bucket_start[bucket] + static_cast<int>(buckets[bucket].size());
-    for (const auto& entry : buckets[bucket]) {
-      level.bucket_cell.push_back(entry.first);
-      level.bucket_offset.push_back(entry.second);
-    }
-  }
+  buildBuckets(level, lattice);
 }
 
 // Nearest seed without wobble, level by level (used to hand child seeds to parents).
