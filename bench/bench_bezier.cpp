@@ -29,8 +29,7 @@ void BM_EvaluateGrid(benchmark::State& state) {
   const PatchSurface surface = limb(25);
   const BernsteinTable table = BernsteinTable::uniform(level);
   const std::size_t per_patch = table.size() * table.size();
-  std::vector<Eigen::Vector3f> positions(per_patch), normals(per_patch), tangents_u(per_patch),
-      tangents_v(per_patch);
+  std::vector<Eigen::Vector3f> positions(per_patch), normals(per_patch), tangents_u(per_patch), tangents_v(per_patch);
   const SurfaceSampleArrays out{positions.data(), normals.data(), tangents_u.data(), tangents_v.data()};
   for (auto _ : state) {
     for (const BezierPatch& patch : surface.patches) {
@@ -39,21 +38,19 @@ void BM_EvaluateGrid(benchmark::State& state) {
     }
   }
   const double vertices = static_cast<double>(per_patch * surface.patches.size());
-  state.counters["vertices/s"] =
-      benchmark::Counter(vertices, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices/s"] = benchmark::Counter(vertices, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_EvaluateGrid)->Arg(Tessellator::kDefaultLevel)->Arg(4)->Arg(16)->Arg(32);
 
 // The same with a collapsed edge in every patch (caps): the limit-normal path on one row in level+1.
 void BM_EvaluateGridWithPoles(benchmark::State& state) {
   const int level = static_cast<int>(state.range(0));
-  const PatchSurface surface = makeGeneralizedCylinder(
-      {{0.0, 0.05, 0.05}, {0.1, 0.05, 0.05}, {0.2, 0.05, 0.05}, {0.3, 0.05, 0.05}}, 0.05, 0.05);
+  const PatchSurface surface =
+      makeGeneralizedCylinder({{0.0, 0.05, 0.05}, {0.1, 0.05, 0.05}, {0.2, 0.05, 0.05}, {0.3, 0.05, 0.05}}, 0.05, 0.05);
   std::vector<BezierPatch> caps(surface.patches.begin() + 4, surface.patches.end());
   const BernsteinTable table = BernsteinTable::uniform(level);
   const std::size_t per_patch = table.size() * table.size();
-  std::vector<Eigen::Vector3f> positions(per_patch), normals(per_patch), tangents_u(per_patch),
-      tangents_v(per_patch);
+  std::vector<Eigen::Vector3f> positions(per_patch), normals(per_patch), tangents_u(per_patch), tangents_v(per_patch);
   const SurfaceSampleArrays out{positions.data(), normals.data(), tangents_u.data(), tangents_v.data()};
   for (auto _ : state) {
     for (const BezierPatch& patch : caps) {
@@ -61,8 +58,8 @@ void BM_EvaluateGridWithPoles(benchmark::State& state) {
       benchmark::ClobberMemory();
     }
   }
-  state.counters["vertices/s"] = benchmark::Counter(static_cast<double>(per_patch * caps.size()),
-                                                    benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices/s"] =
+      benchmark::Counter(static_cast<double>(per_patch * caps.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_EvaluateGridWithPoles)->Arg(Tessellator::kDefaultLevel);
 
@@ -85,25 +82,21 @@ void BM_Tessellate100PatchesPerFrame(benchmark::State& state) {
   Tessellator tessellator;
   tessellator.tessellateUniform(surface.patches, surface.topology, level);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        tessellator.tessellateUniform(surface.patches, surface.topology, level).positions.data());
+    benchmark::DoNotOptimize(tessellator.tessellateUniform(surface.patches, surface.topology, level).positions.data());
   }
   state.counters["vertices"] = static_cast<double>(tessellator.mesh().vertexCount());
   state.counters["triangles"] = static_cast<double>(tessellator.mesh().triangleCount());
-  state.counters["vertices/s"] =
-      benchmark::Counter(static_cast<double>(tessellator.mesh().vertexCount()),
-                         benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices/s"] = benchmark::Counter(static_cast<double>(tessellator.mesh().vertexCount()),
+                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_Tessellate100PatchesPerFrame)->Arg(Tessellator::kDefaultLevel)->Arg(16)
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Tessellate100PatchesPerFrame)->Arg(Tessellator::kDefaultLevel)->Arg(16)->Unit(benchmark::kMicrosecond);
 
 // Per-frame cost with adaptive levels chosen every frame (levels stable, so no layout rebuild).
 void BM_Tessellate100PatchesAdaptive(benchmark::State& state) {
   const PatchSurface surface = limb(25);
   Tessellator tessellator;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        tessellator.tessellateToError(surface.patches, surface.topology, 2e-4).positions.data());
+    benchmark::DoNotOptimize(tessellator.tessellateToError(surface.patches, surface.topology, 2e-4).positions.data());
   }
   state.counters["triangles"] = static_cast<double>(tessellator.mesh().triangleCount());
 }
@@ -114,8 +107,7 @@ void BM_Tessellate100PatchesLayoutBuild(benchmark::State& state) {
   const PatchSurface surface = limb(25);
   for (auto _ : state) {
     Tessellator tessellator;
-    benchmark::DoNotOptimize(
-        tessellator.tessellateUniform(surface.patches, surface.topology).positions.data());
+    benchmark::DoNotOptimize(tessellator.tessellateUniform(surface.patches, surface.topology).positions.data());
   }
 }
 BENCHMARK(BM_Tessellate100PatchesLayoutBuild)->Unit(benchmark::kMicrosecond);

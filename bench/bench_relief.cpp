@@ -51,8 +51,8 @@ void SkinMap(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(relief.render(size, size));
   state.counters["cells_l1"] = static_cast<double>(relief.cellCount(0));
   state.counters["cells_l3"] = static_cast<double>(relief.cellCount(2));
-  state.counters["ns_per_pixel"] = benchmark::Counter(static_cast<double>(size) * size,
-                                                      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_pixel"] = benchmark::Counter(
+      static_cast<double>(size) * size, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(SkinMap)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
 
@@ -101,8 +101,8 @@ void SkinMapBruteForce(benchmark::State& state) {
   const SkinRelief relief(benchmarkSkin());
   const int size = static_cast<int>(state.range(0));
   for (auto _ : state) benchmark::DoNotOptimize(relief.renderBruteForce(size, size));
-  state.counters["ns_per_pixel"] = benchmark::Counter(static_cast<double>(size) * size,
-                                                      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_pixel"] = benchmark::Counter(
+      static_cast<double>(size) * size, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(SkinMapBruteForce)->Arg(256)->Unit(benchmark::kMillisecond)->Iterations(2);
 
@@ -130,7 +130,8 @@ void WrinkleMapNewAlphas(benchmark::State& state) {
   for (auto _ : state) {
     shift += 1e-9;  // distinct alphas every iteration: no cache hits
     spec.alpha.clear();
-    for (int cell = 0; cell < spec.rows * spec.cells_around; ++cell) spec.alpha.push_back(0.6 + 0.4 * (cell % 5) / 4.0 - shift);
+    for (int cell = 0; cell < spec.rows * spec.cells_around; ++cell)
+      spec.alpha.push_back(0.6 + 0.4 * (cell % 5) / 4.0 - shift);
     benchmark::DoNotOptimize(makeWrinkleMap(spec));
   }
   state.SetLabel("8 Gaussians, 5 new fits");
@@ -144,7 +145,8 @@ BENCHMARK(WrinkleMapNewAlphas)->Unit(benchmark::kMillisecond)->Iterations(3);
 //  * WrinklePoseMap: one pose's wrinkle atlas for the pants (128 px tiles) and the region summary.
 struct WrinkleOutfit {
   Skeleton skeleton = Skeleton::fromUrdfFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/urdf/human.urdf");
-  BodyDescription body = loadBodyDescriptionFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/bodies/default.yaml", skeleton);
+  BodyDescription body =
+      loadBodyDescriptionFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/bodies/default.yaml", skeleton);
   std::vector<Garment> garments;
   std::vector<std::unique_ptr<WrinklePlacement>> placements;
   SkeletonPose pose;
@@ -155,8 +157,9 @@ struct WrinkleOutfit {
     evaluator.evaluate(0.3 * evaluator.motion().period, angles, root);
     ForwardKinematics(skeleton, body.shape).compute(root, angles, pose);
     for (const char* name : {"pants", "jacket"}) {
-      garments.emplace_back(loadGarmentFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/garments/" + name + ".yaml", skeleton),
-                            skeleton, body.shape);
+      garments.emplace_back(
+          loadGarmentFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/garments/" + name + ".yaml", skeleton),
+          skeleton, body.shape);
       placements.push_back(std::make_unique<WrinklePlacement>(garments.back(), skeleton, body.shape));
       garments.back().pose(pose);
     }
@@ -172,7 +175,8 @@ void WrinkleVertexCompression(benchmark::State& state) {
   std::size_t vertices = 0;
   for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
     tessellators.push_back(std::make_unique<Tessellator>());
-    const TriangleMesh& mesh = tessellators[g]->tessellateUniform(outfit.garments[g].patches(), outfit.garments[g].topology(), level);
+    const TriangleMesh& mesh =
+        tessellators[g]->tessellateUniform(outfit.garments[g].patches(), outfit.garments[g].topology(), level);
     compressions[g].prepare(mesh, outfit.placements[g]->restPatches());
     alpha[g].resize(mesh.vertexCount());
     strength[g].resize(mesh.vertexCount());
@@ -186,8 +190,8 @@ void WrinkleVertexCompression(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   state.counters["vertices"] = static_cast<double>(vertices);
-  state.counters["ns_per_vertex"] = benchmark::Counter(static_cast<double>(vertices),
-                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_vertex"] = benchmark::Counter(
+      static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(WrinkleVertexCompression)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
 
@@ -197,7 +201,8 @@ void WrinkleVertexCompressionPrepare(benchmark::State& state) {
   std::vector<std::unique_ptr<Tessellator>> tessellators;
   for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
     tessellators.push_back(std::make_unique<Tessellator>());
-    tessellators[g]->tessellateUniform(outfit.garments[g].patches(), outfit.garments[g].topology(), static_cast<int>(state.range(0)));
+    tessellators[g]->tessellateUniform(outfit.garments[g].patches(), outfit.garments[g].topology(),
+                                       static_cast<int>(state.range(0)));
   }
   for (auto _ : state) {
     for (std::size_t g = 0; g < outfit.garments.size(); ++g) {
@@ -211,7 +216,8 @@ BENCHMARK(WrinkleVertexCompressionPrepare)->Arg(4)->Arg(8)->Unit(benchmark::kMic
 
 void WrinklePoseMap(benchmark::State& state) {
   const WrinkleOutfit outfit;
-  for (auto _ : state) benchmark::DoNotOptimize(makePoseWrinkleMap(*outfit.placements[0], outfit.garments[0].patches(), outfit.pose, 128));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(makePoseWrinkleMap(*outfit.placements[0], outfit.garments[0].patches(), outfit.pose, 128));
   state.SetLabel("pants, " + std::to_string(outfit.garments[0].patches().size()) + " tiles of 128 px");
 }
 BENCHMARK(WrinklePoseMap)->Unit(benchmark::kMillisecond);

@@ -62,10 +62,16 @@ void BM_SkinPoseAndTessellate(benchmark::State& state) {
   const TriangleMesh& mesh = tessellator.mesh();
   state.counters["vertices"] = static_cast<double>(mesh.vertexCount());
   state.counters["triangles"] = static_cast<double>(mesh.triangleCount());
-  state.counters["vertices/s"] = benchmark::Counter(static_cast<double>(mesh.vertexCount()),
-                                                    benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices/s"] =
+      benchmark::Counter(static_cast<double>(mesh.vertexCount()), benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_SkinPoseAndTessellate)->Arg(Skin::kDefaultLevel)->Arg(2)->Arg(3)->Arg(6)->Arg(8)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SkinPoseAndTessellate)
+    ->Arg(Skin::kDefaultLevel)
+    ->Arg(2)
+    ->Arg(3)
+    ->Arg(6)
+    ->Arg(8)
+    ->Unit(benchmark::kMicrosecond);
 
 // Pose + adaptive tessellation to a geometric error bound (levels recomputed every frame; the
 // layout is rebuilt only when a level changes).

@@ -1,7 +1,8 @@
 // ROS-side benchmark harness: an rviz VisualizationManager (as in rviz itself, render panel on the
 // X server) with N displays of one class, one per human (human_<i>/robot_description), driven at
 // rviz's 30 Hz for a while. Prints one line: class, N, achieved fps, process CPU (% of one core),
-// CPU per frame, resident memory at the end and when every human was first drawn. bench/rviz_scaling.py runs it for DressedHuman and RobotModel side by side.
+// CPU per frame, resident memory at the end and when every human was first drawn. bench/rviz_scaling.py runs it for
+// DressedHuman and RobotModel side by side.
 //
 // Usage: rviz_display_scaling <display class> <count> <seconds> [options]
 //   --set <property>=<value>  set a property of every display (repeatable), e.g. Relief=Flat
@@ -227,10 +228,10 @@ int main(int argc, char** argv) {
     }
   }
   if (!screenshot.isEmpty()) panel.getRenderWindow()->writeContentsToFile(screenshot.toStdString());
-  std::printf("class=%s count=%d fps=%.2f cpu_percent=%.1f cpu_ms_per_frame=%.3f display_ms=%.3f measured=%d "
-              "rss_mb=%.1f first_frame_s=%.2f\n",
-              argv[1], count, frames / wall, 100.0 * cpu / wall, 1000.0 * cpu / frames,
-              display_samples ? display_ms_sum / display_samples : -1.0, measured, residentMegabytes(),
-              first_frame_seconds);
+  std::printf(
+      "class=%s count=%d fps=%.2f cpu_percent=%.1f cpu_ms_per_frame=%.3f display_ms=%.3f measured=%d "
+      "rss_mb=%.1f first_frame_s=%.2f\n",
+      argv[1], count, frames / wall, 100.0 * cpu / wall, 1000.0 * cpu / frames,
+      display_samples ? display_ms_sum / display_samples : -1.0, measured, residentMegabytes(), first_frame_seconds);
   return 0;
 }

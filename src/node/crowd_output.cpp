@@ -70,7 +70,8 @@ void CrowdOutput::publish(const ros::Time& stamp, const std::string& world_frame
     geometry_msgs::TransformStamped* transforms = &transforms_.transforms[i * per_human];
     copyTransform(human.pose.root, transforms[0].transform);
     if (skeleton_tf_) {
-      for (std::size_t d = 0; d < kDofCount; ++d) copyTransform(human.pose.dof_transforms[d], transforms[1 + d].transform);
+      for (std::size_t d = 0; d < kDofCount; ++d)
+        copyTransform(human.pose.dof_transforms[d], transforms[1 + d].transform);
     }
   }
   for (geometry_msgs::TransformStamped& transform : transforms_.transforms) transform.header.stamp = stamp;

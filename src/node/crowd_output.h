@@ -36,7 +36,7 @@ class CrowdOutput {
  private:
   // A human's transforms, named once (and again if the world frame changes).
   const std::vector<geometry_msgs::TransformStamped>& transformsOf(const Human& human, const std::string& world_frame,
-                                                                  const ros::Time& stamp);
+                                                                   const ros::Time& stamp);
 
   bool skeleton_tf_;
   std::string frame_prefix_;

@@ -34,7 +34,8 @@ std::string framePrefixParameter(const Parameters& parameters) {
 Motion crowdMotion(const std::string& motion_file) {
   Motion motion = loadMotionFile(motion_file);
   if (motion.body_shape) {
-    throw ParameterError("motion file " + motion_file + " was fitted to one person's body; a crowd walks the "
+    throw ParameterError("motion file " + motion_file +
+                         " was fitted to one person's body; a crowd walks the "
                          "robot description's body at each human's stature: give a motion without body_shape");
   }
   return motion;
@@ -62,8 +63,8 @@ CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHan
   s.motion_file = parameters.text("motion_file", package.empty() ? "" : package + "/config/motions/walk.yaml");
   s.gait_file = parameters.text("gait_file", package.empty() ? "" : package + "/config/gait/speed_gaits.yaml");
   if (s.motion_file.empty() || s.gait_file.empty()) {
-    throw ParameterError("parameters " + parameters.fullName("motion_file") + " and " + parameters.fullName("gait_file") +
-                         " are needed: the dressed_human package path is unknown");
+    throw ParameterError("parameters " + parameters.fullName("motion_file") + " and " +
+                         parameters.fullName("gait_file") + " are needed: the dressed_human package path is unknown");
   }
   s.rate = parameters.numberIn("rate", s.rate, 1.0, kMaxRate, "Hz");
   s.world_frame = parameters.text("world_frame", s.world_frame);
@@ -99,7 +100,8 @@ void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, con
                                const NormativeGait& gait) {
   const double stature = drawnStature(plain, walk.stature);
   const Skeleton scaled = skeletonAtStature(plain, walk.stature);
-  auto walker = std::make_unique<Walker>(scaled, scaled.bodyShape(), SpeedGait(motion, gait, scaled, scaled.bodyShape()));
+  auto walker =
+      std::make_unique<Walker>(scaled, scaled.bodyShape(), SpeedGait(motion, gait, scaled, scaled.bodyShape()));
   walker->setCruiseSpeed(walk.speed);
   members_.push_back(Member{walk, stature, scaled.withSuffix("_" + walk.id), std::move(walker), {}, {}});
 }
@@ -112,7 +114,8 @@ void CrowdPublisher::place() {
     const std::vector<Eigen::Vector2d>& waypoints = walk.route.waypoints;
     const Eigen::Vector2d from = walk.treadmill ? waypoints.front() : walk.start;
     Eigen::Vector2d direction = (walk.treadmill ? waypoints[1] : waypoints.front()) - from;
-    if (direction.norm() == 0.0 && waypoints.size() > 1) direction = waypoints[1] - from;  // starts on its first waypoint
+    if (direction.norm() == 0.0 && waypoints.size() > 1)
+      direction = waypoints[1] - from;  // starts on its first waypoint
     const double heading = std::atan2(direction.y(), direction.x());
     member.walker->place(from, heading, walk.start_phase);
     if (walk.treadmill) {

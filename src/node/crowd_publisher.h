@@ -18,14 +18,14 @@
 namespace dressed_human {
 
 struct CrowdPublisherSettings {
-  std::string crowd_file;      // humans, routes, statures (crowd_walks.h); empty: `count` on the default layout
+  std::string crowd_file;  // humans, routes, statures (crowd_walks.h); empty: `count` on the default layout
   int count = 6;
-  std::string motion_file;     // the walk every human's gait comes from
-  std::string gait_file;       // the normative gait table
-  double rate = 30.0;          // Hz
+  std::string motion_file;  // the walk every human's gait comes from
+  std::string gait_file;    // the normative gait table
+  double rate = 30.0;       // Hz
   std::string world_frame = "world";
-  bool skeleton_tf = false;    // every human's whole skeleton on /tf too
-  std::string frame_prefix;    // before every frame name but the world frame (CrowdOutput)
+  bool skeleton_tf = false;  // every human's whole skeleton on /tf too
+  std::string frame_prefix;  // before every frame name but the world frame (CrowdOutput)
 
   // Reads the private parameters of `private_node`; throws ParameterError naming the bad one.
   static CrowdPublisherSettings fromParameters(const ros::NodeHandle& private_node);
@@ -59,8 +59,7 @@ class CrowdPublisher {
     JointAngles angles{};
     SkeletonPose pose;
   };
-  void addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion,
-                 const NormativeGait& gait);
+  void addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion, const NormativeGait& gait);
   void place();
   void tick();
 

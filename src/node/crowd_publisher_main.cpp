@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
                    people_topic.c_str());
         }
       }
-      const double smoothing = parameters.numberIn("smoothing", dressed_human::PersonTrackSettings().smoothing, 0.0, 1.0, "s");
+      const double smoothing =
+          parameters.numberIn("smoothing", dressed_human::PersonTrackSettings().smoothing, 0.0, 1.0, "s");
       dressed_human::PeopleFollower follower(node, dressed_human::CrowdPublisherSettings::fromParameters(private_node),
                                              people_topic, smoothing);
       follower.run();

@@ -10,13 +10,20 @@ namespace {
 
 const char* typeName(const XmlRpc::XmlRpcValue& value) {
   switch (value.getType()) {
-    case XmlRpc::XmlRpcValue::TypeBoolean: return "a boolean";
-    case XmlRpc::XmlRpcValue::TypeInt: return "an integer";
-    case XmlRpc::XmlRpcValue::TypeDouble: return "a number";
-    case XmlRpc::XmlRpcValue::TypeString: return "a string";
-    case XmlRpc::XmlRpcValue::TypeArray: return "a list";
-    case XmlRpc::XmlRpcValue::TypeStruct: return "a dictionary";
-    default: return "an unsupported value";
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return "a boolean";
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return "an integer";
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return "a number";
+    case XmlRpc::XmlRpcValue::TypeString:
+      return "a string";
+    case XmlRpc::XmlRpcValue::TypeArray:
+      return "a list";
+    case XmlRpc::XmlRpcValue::TypeStruct:
+      return "a dictionary";
+    default:
+      return "an unsupported value";
   }
 }
 
@@ -85,8 +92,9 @@ bool Parameters::points(const std::string& name, std::vector<Eigen::Vector2d>& p
     XmlRpc::XmlRpcValue& pair = value[i];
     if (pair.getType() != XmlRpc::XmlRpcValue::TypeArray || pair.size() != 2) {
       throw ParameterError("parameter " + fullName(name) + expected + "; element " + std::to_string(i) + " is " +
-                           (pair.getType() == XmlRpc::XmlRpcValue::TypeArray ? "a list of " + std::to_string(pair.size())
-                                                                              : std::string(typeName(pair))));
+                           (pair.getType() == XmlRpc::XmlRpcValue::TypeArray
+                                ? "a list of " + std::to_string(pair.size())
+                                : std::string(typeName(pair))));
     }
     Eigen::Vector2d point;
     for (int k = 0; k < 2; ++k) {

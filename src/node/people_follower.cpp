@@ -23,11 +23,13 @@ constexpr double kResubscribePeriod = 1.0;
 
 PeopleFollower::PeopleFollower(ros::NodeHandle node, const CrowdPublisherSettings& settings, const std::string& topic,
                                double smoothing)
-    : node_(node), settings_(settings), topic_(node.resolveName(topic)),
+    : node_(node),
+      settings_(settings),
+      topic_(node.resolveName(topic)),
       skeleton_(crowdSkeleton(Parameters(node).requiredText("robot_description"))) {
   const Motion motion = crowdMotion(settings_.motion_file);
-  gait_ = std::make_unique<SpeedGait>(motion, loadNormativeGaitFile(settings_.gait_file), skeleton_,
-                                      skeleton_.bodyShape());
+  gait_ =
+      std::make_unique<SpeedGait>(motion, loadNormativeGaitFile(settings_.gait_file), skeleton_, skeleton_.bodyShape());
   TrackedCrowdSettings crowd_settings;
   crowd_settings.track.smoothing = smoothing;
   crowd_ = std::make_unique<TrackedCrowd>(
@@ -57,8 +59,10 @@ double PeopleFollower::sightingTime(const ros::Time& stamp) {
   const ros::Time now = ros::Time::now();
   if (stamp.isZero()) {
     if (!zero_stamps_) {
-      ROS_WARN("crowd_publisher: %s: message stamps are zero: the people are placed at the times their messages "
-               "come", topic_.c_str());
+      ROS_WARN(
+          "crowd_publisher: %s: message stamps are zero: the people are placed at the times their messages "
+          "come",
+          topic_.c_str());
     }
     zero_stamps_ = true;
     clock_offset_ = 0.0;
@@ -75,9 +79,10 @@ double PeopleFollower::sightingTime(const ros::Time& stamp) {
     const bool report = (!clock_offset_ || went_back || lag > *clock_offset_ + kLagJump) && std::abs(lag) > kStampTrust;
     clock_offset_ = lag;
     if (report) {
-      ROS_WARN("crowd_publisher: %s: message stamps are %.1f s %s this node's clock (a bag without /use_sim_time, "
-               "or the source's own clock): the people walk on the stamps' clock, shown that much later",
-               topic_.c_str(), std::abs(lag), lag > 0.0 ? "behind" : "ahead of");
+      ROS_WARN(
+          "crowd_publisher: %s: message stamps are %.1f s %s this node's clock (a bag without /use_sim_time, "
+          "or the source's own clock): the people walk on the stamps' clock, shown that much later",
+          topic_.c_str(), std::abs(lag), lag > 0.0 ? "behind" : "ahead of");
     }
   }
   last_stamp_ = stamp;

@@ -50,12 +50,12 @@ class PeopleFollower {
   std::map<std::string, Skeleton> suffixed_;  // by id, while its human walks
   std::unique_ptr<CrowdOutput> output_;
   std::vector<CrowdOutput::Human> output_humans_;
-  std::string frame_;  // of the newest message
-  std::string type_error_;  // the last unknown type reported
+  std::string frame_;          // of the newest message
+  std::string type_error_;     // the last unknown type reported
   bool unknown_type_ = false;  // a message of an unknown type came, none of a people type since
   ros::WallTime subscribed_;
   std::map<std::string, ros::WallTime> warned_;  // each bad sighting's warning, when last said
-  std::optional<double> clock_offset_;  // s: this node's clock less the stamps'
+  std::optional<double> clock_offset_;           // s: this node's clock less the stamps'
   std::optional<ros::Time> last_stamp_;
   bool zero_stamps_ = false;
   ros::Subscriber subscriber_;

@@ -144,8 +144,8 @@ constexpr std::uint32_t kQuaternionBytes = 4 * 8;
 constexpr std::uint32_t kCovarianceBytes = 36 * 8;
 // TrackedPerson: track_id, is_occluded, is_matched, detection_id, age, PoseWithCovariance,
 // TwistWithCovariance.
-constexpr std::uint32_t kTrackedPersonBytes = 8 + 1 + 1 + 8 + 8 + (kVector3Bytes + kQuaternionBytes +
-                                              kCovarianceBytes) + (2 * kVector3Bytes + kCovarianceBytes);
+constexpr std::uint32_t kTrackedPersonBytes =
+    8 + 1 + 1 + 8 + 8 + (kVector3Bytes + kQuaternionBytes + kCovarianceBytes) + (2 * kVector3Bytes + kCovarianceBytes);
 // The least an element of a variable-length layout can take: every string and array empty.
 constexpr std::uint32_t kEmptyStringBytes = 4;
 constexpr std::uint32_t kEmptyHeaderBytes = 4 + 8 + kEmptyStringBytes;
@@ -157,9 +157,12 @@ constexpr std::uint32_t kSmallestPersonBytes = kEmptyStringBytes + 2 * kVector3B
 
 const char* layoutName(PeopleLayout layout) {
   switch (layout) {
-    case PeopleLayout::kTrackedPersons: return "TrackedPersons";
-    case PeopleLayout::kAgentStates: return "AgentStates";
-    case PeopleLayout::kPeople: return "People";
+    case PeopleLayout::kTrackedPersons:
+      return "TrackedPersons";
+    case PeopleLayout::kAgentStates:
+      return "AgentStates";
+    case PeopleLayout::kPeople:
+      return "People";
   }
   return "?";
 }
@@ -237,7 +240,7 @@ void readHeader(FieldReader& in, ObservedPeople& people) {
 }
 
 void skipHeader(FieldReader& in) {
-  in.skip(4 + 8);  // seq, stamp
+  in.skip(4 + 8);   // seq, stamp
   in.skipString();  // frame_id
 }
 
@@ -289,7 +292,7 @@ ObservedPerson readPerson(FieldReader& in) {
   person.id = peopleNameId(in.next<std::string>());
   person.position = in.vector3();
   person.velocity = in.vector3();
-  in.skip(8);  // reliability
+  in.skip(8);        // reliability
   in.skipStrings();  // tagnames
   in.skipStrings();  // tags
   return person;
@@ -406,9 +409,15 @@ ObservedPeople decodePeople(const topic_tools::ShapeShifter& message, const std:
   FieldReader in(bytes);
   try {
     switch (*layout) {
-      case PeopleLayout::kTrackedPersons: readTrackedPersons(in, people); break;
-      case PeopleLayout::kAgentStates: readAgentStates(in, people); break;
-      case PeopleLayout::kPeople: readPeople(in, people); break;
+      case PeopleLayout::kTrackedPersons:
+        readTrackedPersons(in, people);
+        break;
+      case PeopleLayout::kAgentStates:
+        readAgentStates(in, people);
+        break;
+      case PeopleLayout::kPeople:
+        readPeople(in, people);
+        break;
     }
   } catch (const ros::serialization::StreamOverrunException&) {
     throw PeopleMessageError("topic '" + topic + "': a " + what + " ends inside a field: truncated, or not " +

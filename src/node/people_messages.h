@@ -23,11 +23,11 @@ struct PeopleMessageError : std::runtime_error {
 
 // One person of a people message, whatever its layout.
 struct ObservedPerson {
-  std::string id;            // a human id (isHumanId): a track / agent id in decimal, a People name sanitised (peopleNameId)
+  std::string id;  // a human id (isHumanId): a track / agent id in decimal, a People name sanitised (peopleNameId)
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, in the message's header frame
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, same frame (what the source says; People: its velocity)
-  std::optional<double> yaw;  // rad about z, only where the source's orientation is valid
-  bool occluded = false;      // TrackedPersons' is_occluded: its pose is the tracker's prediction
+  std::optional<double> yaw;                           // rad about z, only where the source's orientation is valid
+  bool occluded = false;  // TrackedPersons' is_occluded: its pose is the tracker's prediction
 };
 
 struct ObservedPeople {

@@ -46,7 +46,8 @@ void requireSameBody(const Motion& motion, const Skeleton& skeleton, const std::
 void readWalkSettings(const Parameters& parameters, const std::string& package, SkeletonPublisherSettings& s) {
   s.mode = parameters.text("mode", s.mode);
   if (s.mode != "walk" && s.mode != "replay") {
-    throw ParameterError("parameter " + parameters.fullName("mode") + " must be 'walk' or 'replay', got '" + s.mode + "'");
+    throw ParameterError("parameter " + parameters.fullName("mode") + " must be 'walk' or 'replay', got '" + s.mode +
+                         "'");
   }
   s.route_end = parameters.text("route_end", s.route_end);
   if (s.route_end != "loop" && s.route_end != "stand") {
@@ -57,7 +58,8 @@ void readWalkSettings(const Parameters& parameters, const std::string& package, 
   try {
     s.speed = parameters.numberIn("speed", s.speed, 0.0, WalkerSettings::kMaxSpeed, "m/s");
   } catch (const ParameterError& error) {
-    ROS_ERROR("skeleton_publisher: %s (no walking backward, no running); walking at %.1f m/s instead", error.what(), 1.2);
+    ROS_ERROR("skeleton_publisher: %s (no walking backward, no running); walking at %.1f m/s instead", error.what(),
+              1.2);
     s.speed = 1.2;
   }
   try {
@@ -88,7 +90,8 @@ SkeletonPublisherSettings SkeletonPublisherSettings::fromParameters(const ros::N
   }
   // Physical ranges: a replay from frozen to ten times as fast; positions a map holds (and that
   // rviz can draw a human at, in float); a heading and phase in radians, not degrees.
-  s.speed_factor = parameters.numberIn("speed_factor", s.speed_factor, 0.0, kMaxSpeedFactor, "(times the motion's speed)");
+  s.speed_factor =
+      parameters.numberIn("speed_factor", s.speed_factor, 0.0, kMaxSpeedFactor, "(times the motion's speed)");
   s.start_phase = parameters.numberIn("start_phase", s.start_phase, -2.0 * M_PI, 2.0 * M_PI, "rad");
   s.loop = parameters.boolean("loop", s.loop);
   s.body_id = parameters.text("body_id", s.body_id);
@@ -146,7 +149,8 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
 void SkeletonPublisher::startWalking(const Skeleton& skeleton, const Motion& motion, ros::NodeHandle& private_node) {
   const NormativeGait normative = loadNormativeGaitFile(settings_.gait_file);  // LocomotionError names the file
   try {
-    walker_ = std::make_unique<Walker>(skeleton, skeleton.bodyShape(), SpeedGait(motion, normative, skeleton, skeleton.bodyShape()));
+    walker_ = std::make_unique<Walker>(skeleton, skeleton.bodyShape(),
+                                       SpeedGait(motion, normative, skeleton, skeleton.bodyShape()));
   } catch (const LocomotionError& error) {
     ROS_ERROR("skeleton_publisher: %s; replaying it as recorded (parameter %s is 'walk')", error.what(),
               private_node.resolveName("mode").c_str());
@@ -154,7 +158,8 @@ void SkeletonPublisher::startWalking(const Skeleton& skeleton, const Motion& mot
   }
   walker_->setCruiseSpeed(settings_.speed);
   placeWalker();
-  commands_ = std::make_unique<WalkCommands>(private_node, *walker_, settings_.world_frame, settings_.route_end == "loop");
+  commands_ =
+      std::make_unique<WalkCommands>(private_node, *walker_, settings_.world_frame, settings_.route_end == "loop");
 }
 
 // The walk starts at origin_x, origin_y facing origin_yaw, on the route from its first waypoint.

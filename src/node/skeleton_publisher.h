@@ -28,11 +28,11 @@ struct SkeletonPublisherSettings {
   std::string route_end = "loop";          // "loop" or "stand" (stop at the last waypoint)
   double speed = 1.2;                      // m/s along the route; 0: stand
   std::string gait_file;                   // the normative gait table (config/gait/speed_gaits.yaml)
-  double rate = 100.0;          // Hz
-  double speed_factor = 1.0;    // motion seconds per ROS second
-  double start_phase = 0.0;     // radians of the motion cycle at start
-  bool loop = true;             // false: play one cycle, then hold the last pose
-  std::string body_id;          // frames get "_<id>" unless the URDF already has it
+  double rate = 100.0;                     // Hz
+  double speed_factor = 1.0;               // motion seconds per ROS second
+  double start_phase = 0.0;                // radians of the motion cycle at start
+  bool loop = true;                        // false: play one cycle, then hold the last pose
+  std::string body_id;                     // frames get "_<id>" unless the URDF already has it
   std::string world_frame = "world";
   double origin_x = 0.0, origin_y = 0.0, origin_yaw = 0.0;  // where the walk starts in world_frame
   bool publish_joint_states = true;
@@ -61,8 +61,8 @@ class SkeletonPublisher {
   SkeletonPublisherSettings settings_;
   std::unique_ptr<ForwardKinematics> kinematics_;
   std::unique_ptr<MotionEvaluator> evaluator_;
-  std::unique_ptr<Walker> walker_;            // mode walk
-  std::unique_ptr<WalkCommands> commands_;    // its live steering
+  std::unique_ptr<Walker> walker_;          // mode walk
+  std::unique_ptr<WalkCommands> commands_;  // its live steering
   JointAngles previous_angles_{};
   std::string extra_suffix_;  // appended to URDF names when body_id is set and the URDF has none
 

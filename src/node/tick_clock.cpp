@@ -21,8 +21,8 @@ TickClock::Tick TickClock::advance(const ros::Time& now, double& dt) {
   dt = 0.0;
   if (now.isZero()) return Tick::kNoTime;
   if (started_ && now < last_) {
-    ROS_INFO("%s: time jumped back from %.3f to %.3f s (bag loop?): %s", node_name_.c_str(), last_.toSec(),
-             now.toSec(), what_restarts_.c_str());
+    ROS_INFO("%s: time jumped back from %.3f to %.3f s (bag loop?): %s", node_name_.c_str(), last_.toSec(), now.toSec(),
+             what_restarts_.c_str());
     started_ = false;
   }
   const bool first = !started_;

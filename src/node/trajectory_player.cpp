@@ -18,7 +18,8 @@ TrajectoryPlayerSettings TrajectoryPlayerSettings::fromParameters(const ros::Nod
   const Parameters parameters(private_node);
   TrajectoryPlayerSettings s;
   s.file = parameters.requiredText("file");
-  if (s.file.empty()) throw ParameterError("parameter " + parameters.fullName("file") + " is empty: give a trajectory file");
+  if (s.file.empty())
+    throw ParameterError("parameter " + parameters.fullName("file") + " is empty: give a trajectory file");
   const std::string format = parameters.text("format", "auto");
   try {
     s.read.format = trajectoryFormatNamed(format);
@@ -47,7 +48,8 @@ TrajectoryPlayer::TrajectoryPlayer(ros::NodeHandle node, ros::NodeHandle private
                          " Hz): more than the " + std::to_string(static_cast<int>(kMaxRate)) + " the player sends");
   }
   std::size_t most_present = 0;
-  for (std::size_t sample = 0; sample < crowd_.sampleCount(); ++sample) most_present = std::max(most_present, crowd_.countAt(sample));
+  for (std::size_t sample = 0; sample < crowd_.sampleCount(); ++sample)
+    most_present = std::max(most_present, crowd_.countAt(sample));
   persons_.reserve(most_present);
   // The advertised type comes from a message: an empty one of the type every tick sends.
   const topic_tools::ShapeShifter type = encodeTrackedPersons(ros::Time(), settings_.frame_id, {});
@@ -75,7 +77,8 @@ void TrajectoryPlayer::tick() {
     if (!settings_.loop) return;
     next_sample_ = 0;
     ++loops_;
-    ROS_INFO("trajectory_player: %s from the start again (loop %zu; the stamps go on)", settings_.file.c_str(), loops_ + 1);
+    ROS_INFO("trajectory_player: %s from the start again (loop %zu; the stamps go on)", settings_.file.c_str(),
+             loops_ + 1);
   }
   persons_.clear();
   for (const RecordedPerson* person = crowd_.begin(next_sample_); person != crowd_.end(next_sample_); ++person) {

@@ -16,11 +16,11 @@
 namespace dressed_human {
 
 struct TrajectoryPlayerSettings {
-  std::string file;             // required
+  std::string file;            // required
   TrajectoryReadOptions read;  // format and frame rate (0: the file's); once the file is read, the format it had
-  bool loop = true;             // start over after the last sample
-  double time_scale = 1.0;      // 2: twice as fast (velocities too)
-  ScenePlacement placement;     // the recording rotated about the origin, then shifted
+  bool loop = true;            // start over after the last sample
+  double time_scale = 1.0;     // 2: twice as fast (velocities too)
+  ScenePlacement placement;    // the recording rotated about the origin, then shifted
   std::string frame_id = "world";
 
   // Reads the private parameters of `private_node`; throws ParameterError naming the bad one.
@@ -43,7 +43,7 @@ class TrajectoryPlayer {
 
   TrajectoryPlayerSettings settings_;
   RecordedCrowd crowd_;
-  double publish_rate_;                   // Hz
+  double publish_rate_;  // Hz
   ros::Publisher publisher_;
   std::size_t next_sample_ = 0;
   std::size_t loops_ = 0;

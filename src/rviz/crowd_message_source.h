@@ -17,8 +17,8 @@ class CrowdMessageSource : public HumanPoseSource {
   // `skeleton`: the drawn human's, its frames named with the human's suffix.
   CrowdMessageSource(std::shared_ptr<const PoseTrack> track, const Skeleton& skeleton);
 
-  bool pose(rviz::FrameManager& frames, DisplayStatus& status, const ForwardKinematics& kinematics, RigidTransform& root,
-            std::array<RigidTransform, kBoneCount>& bones) override;
+  bool pose(rviz::FrameManager& frames, DisplayStatus& status, const ForwardKinematics& kinematics,
+            RigidTransform& root, std::array<RigidTransform, kBoneCount>& bones) override;
   ros::Time stamp() const override { return stamp_; }
   const std::string& rootFrame() const override { return root_frame_; }
   const std::string& boneFrame(std::size_t bone) const override { return bone_frames_[bone]; }

@@ -88,7 +88,8 @@ void DrawnHuman::resetReliefVisibility(double skin_cell_size) {
 void DrawnHuman::setDisplacement(const ReliefMapJobs& jobs, bool displaced, float skin_strength,
                                  float wrinkle_strength) {
   // Until a map has been built its kind stays undisplaced; the display calls again when it comes.
-  model_.setDisplacement(ReliefKind::kSkin, displaced ? jobs.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f, skin_strength);
+  model_.setDisplacement(ReliefKind::kSkin, displaced ? jobs.map(ReliefKind::kSkin) : nullptr, 1.0f, 1.0f,
+                         skin_strength);
   model_.setDisplacement(ReliefKind::kCloth, displaced ? jobs.map(ReliefKind::kCloth) : nullptr, 1.0f,
                          ReliefMapJobs::clothHeightToTile(), wrinkle_strength, jobs.foldTiles());
 }
@@ -142,10 +143,11 @@ bool DrawnHuman::posesDrawable(DisplayStatus& status, const std::string& fixed_f
     std::snprintf(position, sizeof(position), "(%.2g, %.2g, %.2g) m", pose->translation.x(), pose->translation.y(),
                   pose->translation.z());
     const bool finite = pose->translation.allFinite() && pose->rotation.coeffs().allFinite();
-    status.error(pose_status_, "frame '" + frame + "' in '" + fixed_frame + "' is " +
-                                   (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
-                                           : std::string("not finite")) +
-                                   "; the human is hidden until its TF is sane again");
+    status.error(pose_status_,
+                 "frame '" + frame + "' in '" + fixed_frame + "' is " +
+                     (finite ? std::string("at ") + position + ", beyond the 100 km rviz can draw a human at"
+                             : std::string("not finite")) +
+                     "; the human is hidden until its TF is sane again");
     undrawable_frame_ = frame;
   }
   visual_.setVisible(false);  // every frame: enabling the display again must not show it

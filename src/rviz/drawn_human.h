@@ -36,9 +36,8 @@ class DrawnHuman {
   // statuses apart from other humans' of the display ("" for a display's only human, else its
   // root frame). Throws what HumanModel throws (a garment or body file that does not fit).
   DrawnHuman(const Skeleton& skeleton, std::unique_ptr<HumanPoseSource> poses, const BodyDescription& shaped_body,
-             const HumanModelSettings& settings,
-             Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent, const std::string& ogre_prefix,
-             const std::string& label);
+             const HumanModelSettings& settings, Ogre::SceneManager* scene_manager, Ogre::SceneNode* parent,
+             const std::string& ogre_prefix, const std::string& label);
   ~DrawnHuman();
   DrawnHuman(const DrawnHuman&) = delete;
   DrawnHuman& operator=(const DrawnHuman&) = delete;
@@ -87,11 +86,11 @@ class DrawnHuman {
   ForwardKinematics kinematics_;
   HumanModel model_;
   HumanVisual visual_;
-  std::string pose_status_;  // "Pose", or "Pose <root frame>"
+  std::string pose_status_;                       // "Pose", or "Pose <root frame>"
   RigidTransform root_;                           // in the fixed frame
   std::array<RigidTransform, kBoneCount> bones_;  // in the fixed frame
-  std::string undrawable_frame_;  // the frame whose pose hid the human; empty: none
-  bool in_view_ = true;           // at the last update()
+  std::string undrawable_frame_;                  // the frame whose pose hid the human; empty: none
+  bool in_view_ = true;                           // at the last update()
   PerReliefKind<std::unique_ptr<ReliefVisibility>> relief_visibility_;  // null: no such parts
   ReliefVisibility cover_gap_visibility_{HumanModel::kCoverGap};
   ros::WallTime last_seen_;

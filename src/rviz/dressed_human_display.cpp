@@ -43,18 +43,18 @@ DressedHumanDisplay::DressedHumanDisplay()
       lod_properties_(new LodProperties(this)),
       debug_properties_(new DebugProperties(this)) {
   // Member-function pointers: a renamed signal or slot fails to compile, not silently at run time.
-  connect(body_properties_.get(), &BodyProperties::descriptionChanged,
-          this, &DressedHumanDisplay::loadRobotDescription);
+  connect(body_properties_.get(), &BodyProperties::descriptionChanged, this,
+          &DressedHumanDisplay::loadRobotDescription);
   connect(body_properties_.get(), &BodyProperties::shapeChanged, this, &DressedHumanDisplay::updateBodyShape);
   connect(body_properties_.get(), &BodyProperties::skinColourChanged, this, &DressedHumanDisplay::rebuildHumans);
   connect(crowd_properties_.get(), &CrowdProperties::changed, this, &DressedHumanDisplay::loadCrowdFile);
   connect(crowd_properties_.get(), &CrowdProperties::topicChanged, this, &DressedHumanDisplay::updateSubscription);
   connect(garment_properties_.get(), &GarmentProperties::changed, this, &DressedHumanDisplay::rebuildHumans);
   connect(relief_properties_.get(), &ReliefProperties::appearanceChanged, this, &DressedHumanDisplay::updateAppearance);
-  connect(relief_properties_.get(), &ReliefProperties::skinMapChanged,
-          this, &DressedHumanDisplay::regenerateSkinRelief);
-  connect(lod_properties_.get(), &LodProperties::vertexEvaluationChanged,
-          this, &DressedHumanDisplay::updateVertexEvaluation);
+  connect(relief_properties_.get(), &ReliefProperties::skinMapChanged, this,
+          &DressedHumanDisplay::regenerateSkinRelief);
+  connect(lod_properties_.get(), &LodProperties::vertexEvaluationChanged, this,
+          &DressedHumanDisplay::updateVertexEvaluation);
   connect(debug_properties_.get(), &DebugProperties::changed, this, &DressedHumanDisplay::updateAppearance);
 }
 
@@ -133,7 +133,7 @@ void DressedHumanDisplay::loadRobotDescription() {
     skeleton_ = std::make_unique<Skeleton>(Skeleton::fromUrdf(urdf));
     urdf_ = urdf;
     status_.ok("URDF", "human skeleton '" + skeleton_->rootFrame() + "', 20 bones" +
-                     (skeleton_->bodyShape().isIdentity() ? "" : ", a fitted person's proportions"));
+                           (skeleton_->bodyShape().isIdentity() ? "" : ", a fitted person's proportions"));
   } catch (const std::exception& error) {
     status_.error("URDF", "parameter '" + parameter + "': " + error.what());
     return rebuildHumans();
@@ -291,9 +291,9 @@ void DressedHumanDisplay::updateVertexEvaluation() {
 }
 
 void DressedHumanDisplay::applyVertexEvaluation(DrawnHuman& human, bool report) {
-  const VertexEvaluationChoice choice = chooseVertexEvaluation(lod_properties_->vertexSource(), human.model(),
-                                                              gpu_vertices_problem_, software_renderer_,
-                                                              ReliefMaterial::kMaxPatches);
+  const VertexEvaluationChoice choice =
+      chooseVertexEvaluation(lod_properties_->vertexSource(), human.model(), gpu_vertices_problem_, software_renderer_,
+                             ReliefMaterial::kMaxPatches);
   human.model().setVertexEvaluation(choice.evaluation);
   if (!report) return;  // every human makes the same choice: one status says it
   if (choice.status.empty()) {
@@ -384,7 +384,8 @@ void DressedHumanDisplay::updateSurfaces(float wall_dt) {
   std::size_t parts = 0, triangles = 0;
   for (auto& human : humans_) {
     try {
-      if (!human.second->update(*context_->getFrameManager(), status_, lod, camera, hide_unseen_relief, hide_covered)) continue;
+      if (!human.second->update(*context_->getFrameManager(), status_, lod, camera, hide_unseen_relief, hide_covered))
+        continue;
     } catch (const std::exception& error) {
       surfaces_reported_ = {};
       status_.error("Surfaces", human.second->rootFrame() + ": " + error.what());

@@ -1,9 +1,9 @@
 #pragma once
 // rviz display "dressed_human/DressedHuman": skin and garments of one human, of every human in
-// TF, or of every human of a crowd topic (dressed_human/Crowd), on their skeletons' bones. Shaped like rviz's RobotModelDisplay: the display
-// owns the properties (grouped by concern, properties/) and what its humans share (skeleton, body, relief maps); each
-// human (DrawnHuman) reads its bones from a pose source (TF, or the crowd topic), turns them into surfaces (the core's HumanModel)
-// and owns its Ogre objects (HumanVisual).
+// TF, or of every human of a crowd topic (dressed_human/Crowd), on their skeletons' bones. Shaped like rviz's
+// RobotModelDisplay: the display owns the properties (grouped by concern, properties/) and what its humans share
+// (skeleton, body, relief maps); each human (DrawnHuman) reads its bones from a pose source (TF, or the crowd topic),
+// turns them into surfaces (the core's HumanModel) and owns its Ogre objects (HumanVisual).
 
 #include <array>
 #include <map>
@@ -92,15 +92,15 @@ class DressedHumanDisplay : public rviz::Display {
   std::string software_renderer_;  // the GL renderer if it rasterizes on the CPU (llvmpipe)
   bool ogre_ready_ = false;        // onInitialize() ran: humans may create Ogre objects
 
-  std::unique_ptr<Skeleton> skeleton_;     // the robot description's; each human's carries its suffix
-  std::string urdf_;                        // the robot description it was read from
-  bool description_missing_ = false;        // its parameter was not set: looked for again
+  std::unique_ptr<Skeleton> skeleton_;  // the robot description's; each human's carries its suffix
+  std::string urdf_;                    // the robot description it was read from
+  bool description_missing_ = false;    // its parameter was not set: looked for again
   float seconds_without_description_ = 0.0f;
-  std::unique_ptr<BodyDescription> body_;  // as the body file says
-  BodyShape shape_;                        // the file's shape times the Body Shape properties
-  std::map<std::string, HumanAppearance> crowd_file_;  // by human id
+  std::unique_ptr<BodyDescription> body_;                      // as the body file says
+  BodyShape shape_;                                            // the file's shape times the Body Shape properties
+  std::map<std::string, HumanAppearance> crowd_file_;          // by human id
   std::map<std::string, std::unique_ptr<DrawnHuman>> humans_;  // by frame suffix
-  float seconds_since_roster_ = 0.0f;  // since lookForHumans()
+  float seconds_since_roster_ = 0.0f;                          // since lookForHumans()
   CrowdTopic crowd_topic_;
   // The skin and wrinkle maps, built off rviz's thread; kept for the displaced-geometry mode. The
   // newest normal map of each kind goes to every human, those added later too.

@@ -65,8 +65,8 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
     const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[ReliefKind::kCloth];
     part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.hidden_patches,
-                            source.layout_id, source.bounds);
+    part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.hidden_patches, source.layout_id,
+                            source.bounds);
   }
 }
 
@@ -108,16 +108,15 @@ void HumanVisual::setReliefStrength(ReliefKind kind, float strength) {
 void HumanVisual::setReliefFade(ReliefKind kind, float fade) {
   float& current = relief_fade_[kind];
   // Every frame otherwise, per part: a constant lookup by name. Steps of 1/200 do not show.
-  if (std::abs(fade - current) < 0.005f && (fade > 0.0f) == (current > 0.0f) && (fade < 1.0f) == (current < 1.0f)) return;
+  if (std::abs(fade - current) < 0.005f && (fade > 0.0f) == (current > 0.0f) && (fade < 1.0f) == (current < 1.0f))
+    return;
   current = fade;
   for (Part& part : parts_) {
     if (part.relief == kind) part.material->setReliefStrength(reliefStrength(kind));
   }
 }
 
-float HumanVisual::reliefStrength(ReliefKind kind) const {
-  return relief_strength_[kind] * relief_fade_[kind];
-}
+float HumanVisual::reliefStrength(ReliefKind kind) const { return relief_strength_[kind] * relief_fade_[kind]; }
 
 void HumanVisual::setReliefShown(ReliefKind kind, bool shown) {
   relief_shown_[kind] = shown;

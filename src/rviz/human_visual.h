@@ -68,7 +68,7 @@ class HumanVisual {
   PerReliefKind<float> relief_strength_{1.0f, 1.0f};  // the user's
   PerReliefKind<bool> relief_shown_{true, true};
   PerReliefKind<float> relief_fade_{1.0f, 1.0f};
-  float reliefStrength(ReliefKind kind) const;  // the user's times the fade
+  float reliefStrength(ReliefKind kind) const;                   // the user's times the fade
   PerReliefKind<std::shared_ptr<const EncodedNormalMap>> maps_;  // null until built
   bool visible_ = true;
   bool vertex_lit_ = false;

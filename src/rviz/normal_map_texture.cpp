@@ -12,7 +12,7 @@ namespace dressed_human {
 namespace {
 
 std::map<const void*, std::weak_ptr<NormalMapTexture>> shared_textures;  // rviz's thread only
-std::size_t texture_count = 0;  // for unique Ogre names
+std::size_t texture_count = 0;                                           // for unique Ogre names
 
 // Which mip levels the normal-map textures get: the maps' own (EncodedNormalMap's, the default),
 // none (DRESSED_HUMAN_RELIEF_MIPMAPS=0), or the GPU's, averaged from level 0 (=gpu): the last
@@ -23,8 +23,9 @@ MipSource normalMapMipmaps() {
   if (setting == nullptr || std::string(setting) == "1") return MipSource::kOwn;
   if (std::string(setting) == "0") return MipSource::kNone;
   if (std::string(setting) == "gpu") return MipSource::kGpu;
-  throw std::invalid_argument("DRESSED_HUMAN_RELIEF_MIPMAPS='" + std::string(setting) +
-                              "' must be 1 (the default: the maps' own chain), 0 (no mipmaps) or gpu (the GPU's chain)");
+  throw std::invalid_argument(
+      "DRESSED_HUMAN_RELIEF_MIPMAPS='" + std::string(setting) +
+      "' must be 1 (the default: the maps' own chain), 0 (no mipmaps) or gpu (the GPU's chain)");
 }
 
 // The map's levels, each checked against the size it must have.
@@ -34,7 +35,8 @@ Ogre::TexturePtr uploadNormalMap(const EncodedNormalMap& map, const std::string&
   }
   if (map.width <= 0 || map.height <= 0 || map.levels.empty()) {
     throw std::invalid_argument("normal map " + name + ": " + std::to_string(map.width) + " x " +
-                                std::to_string(map.height) + " pixels, " + std::to_string(map.levels.size()) + " levels");
+                                std::to_string(map.height) + " pixels, " + std::to_string(map.levels.size()) +
+                                " levels");
   }
   const MipSource source = normalMapMipmaps();
   const std::size_t levels = source == MipSource::kOwn ? map.levels.size() : 1;

@@ -17,7 +17,8 @@ class NormalMapTexture {
   // given (EncodedNormalMap's; DRESSED_HUMAN_RELIEF_MIPMAPS=0 none, =gpu the GPU's, for
   // bench/relief_flicker.py). Throws std::invalid_argument for a map whose channels or level
   // sizes do not fit, or a malformed setting.
-  static std::shared_ptr<NormalMapTexture> of(const std::shared_ptr<const EncodedNormalMap>& map, const std::string& group);
+  static std::shared_ptr<NormalMapTexture> of(const std::shared_ptr<const EncodedNormalMap>& map,
+                                              const std::string& group);
   ~NormalMapTexture();
   NormalMapTexture(const NormalMapTexture&) = delete;
   NormalMapTexture& operator=(const NormalMapTexture&) = delete;

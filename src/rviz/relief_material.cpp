@@ -89,8 +89,8 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   if (problem.empty()) problem = setting_problem;
   const std::size_t needed = 16 * kMaxPatches + 16;
   if (problem.empty() && registers_offered < needed) {
-    problem = "the GPU offers " + std::to_string(registers_offered) + " vertex shader uniform vectors, the Bezier evaluation needs " +
-              std::to_string(needed);
+    problem = "the GPU offers " + std::to_string(registers_offered) +
+              " vertex shader uniform vectors, the Bezier evaluation needs " + std::to_string(needed);
   }
   if (why) *why = problem;
   return problem.empty();
@@ -134,7 +134,8 @@ void ReliefMaterial::applyShadingParameters() {
 void ReliefMaterial::applyPrograms() {
   Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
   const bool lit = litPerVertex();
-  const char* vertex = bezier_vertices_ ? (lit ? kBezierVertexLit : kBezierVertex) : (lit ? kSurfaceVertexLit : kSurfaceVertex);
+  const char* vertex =
+      bezier_vertices_ ? (lit ? kBezierVertexLit : kBezierVertex) : (lit ? kSurfaceVertexLit : kSurfaceVertex);
   pass->setVertexProgram(vertex);
   pass->setFragmentProgram(relief_shown_ ? relief_fragment_ : lit ? kVertexLitFragment : kPlainFragment);
   // New programs come with their default parameters: everything set before is set again (the
@@ -180,8 +181,8 @@ void ReliefMaterial::setReliefStrength(float strength) {
 void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
   if (!bezier_vertices_) throw std::logic_error("ReliefMaterial " + name_ + ": patches set on a CPU-vertex material");
   if (patches.size() > kMaxPatches) {
-    throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) + " patches; the Bezier vertex shader holds " +
-                                std::to_string(kMaxPatches));
+    throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) +
+                                " patches; the Bezier vertex shader holds " + std::to_string(kMaxPatches));
   }
   if (patches.empty()) return;
   // Straight into the parameters' float buffer (which the render system uploads when it binds
@@ -189,8 +190,8 @@ void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
   const Ogre::GpuProgramParametersSharedPtr parameters = vertexParameters(material_);
   const Ogre::GpuConstantDefinition& definition = parameters->getConstantDefinition("controlPoints");
   if (definition.arraySize * definition.elementSize < patches.size() * 16 * 4) {
-    throw std::logic_error(name_ + ": the shader's controlPoints array holds fewer than " + std::to_string(patches.size()) +
-                           " patches");
+    throw std::logic_error(name_ + ": the shader's controlPoints array holds fewer than " +
+                           std::to_string(patches.size()) + " patches");
   }
   float* out = parameters->getFloatPointer(definition.physicalIndex);
   for (const BezierPatch& patch : patches) {

@@ -78,7 +78,7 @@ class ReliefMaterial {
   bool relief_shown_ = true;
   bool vertex_lit_ = false;
   bool litPerVertex() const { return vertex_lit_ && !relief_shown_; }
-  void applyPrograms();  // the vertex and fragment programs the state above asks for
+  void applyPrograms();                               // the vertex and fragment programs the state above asks for
   Ogre::ColourValue colour_{0.8f, 0.7f, 0.6f, 1.0f};  // as last set, for a fragment program swap
   float relief_strength_ = 1.0f;
   void applyShadingParameters();  // colour and strength, to whichever program shades

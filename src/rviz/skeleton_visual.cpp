@@ -35,7 +35,8 @@ void SkeletonVisual::update(const ForwardKinematics& kinematics, const std::arra
     if (b > 0) lines_->newLine();
     const double length = kinematics.skeleton().bone(b).length * kinematics.shape().scale[b].z();
     const Eigen::Vector3f start = bones[b].translation.cast<float>();
-    const Eigen::Vector3f end = (bones[b].translation + bones[b].rotation * Eigen::Vector3d(0.0, 0.0, length)).cast<float>();
+    const Eigen::Vector3f end =
+        (bones[b].translation + bones[b].rotation * Eigen::Vector3d(0.0, 0.0, length)).cast<float>();
     lines_->addPoint(Ogre::Vector3(start.x(), start.y(), start.z()), colour);
     lines_->addPoint(Ogre::Vector3(end.x(), end.y(), end.z()), colour);
   }

@@ -81,8 +81,9 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit*
   if ((relief_weight != nullptr && relief_weight->size() != vertices) ||
       (fold_axis != nullptr && fold_axis->size() != vertices)) {
     throw std::invalid_argument("mesh with " + std::to_string(vertices) + " vertices has " +
-                                std::to_string(relief_weight ? relief_weight->size() : vertices) + " relief weights and " +
-                                std::to_string(fold_axis ? fold_axis->size() : vertices) + " fold axes");
+                                std::to_string(relief_weight ? relief_weight->size() : vertices) +
+                                " relief weights and " + std::to_string(fold_axis ? fold_axis->size() : vertices) +
+                                " fold axes");
   }
   if (corners) checkCorners(*corners, vertices);
   const std::vector<std::uint32_t>& indices = corners ? corners->indices : mesh.indices;

@@ -56,9 +56,9 @@ class SurfaceMeshObject {
   std::string material_;
   std::size_t vertex_count_ = 0;  // largest counts seen: what the buffers hold
   std::size_t index_count_ = 0;
-  std::size_t rebuild_count_ = 0;  // buffer (re)creations
-  std::uint64_t layout_id_ = 0;    // of the layout the buffers hold; 0: evaluated vertices
-  bool split_sent_ = false;        // the buffers hold the corner split of that layout
+  std::size_t rebuild_count_ = 0;                   // buffer (re)creations
+  std::uint64_t layout_id_ = 0;                     // of the layout the buffers hold; 0: evaluated vertices
+  bool split_sent_ = false;                         // the buffers hold the corner split of that layout
   const std::vector<bool>* hidden_sent_ = nullptr;  // and left out these patches' triangles
   bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
   void addTriangles(const std::vector<std::uint32_t>& indices, const TriangleMesh& mesh,

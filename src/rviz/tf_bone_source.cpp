@@ -114,8 +114,7 @@ ros::Time TfBoneSource::leafStamp(const tf2_ros::Buffer& buffer, const std::stri
   return stamp;
 }
 
-bool TfBoneSource::lookUpAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report,
-                            DisplayStatus& status) {
+bool TfBoneSource::lookUpAt(const tf2_ros::Buffer& buffer, const ros::Time& stamp, bool report, DisplayStatus& status) {
   bool all_found = true;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     // Each bone relative to its parent (bones come parents first): tf2 then walks the three

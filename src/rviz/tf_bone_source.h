@@ -28,8 +28,8 @@ class TfBoneSource : public HumanPoseSource {
   explicit TfBoneSource(const Skeleton& skeleton, const std::string& label = "");
 
   // lookUp(), then every bone in the fixed frame (ForwardKinematics::composeFromTf).
-  bool pose(rviz::FrameManager& frames, DisplayStatus& status, const ForwardKinematics& kinematics, RigidTransform& root,
-            std::array<RigidTransform, kBoneCount>& bones) override;
+  bool pose(rviz::FrameManager& frames, DisplayStatus& status, const ForwardKinematics& kinematics,
+            RigidTransform& root, std::array<RigidTransform, kBoneCount>& bones) override;
   ros::Time stamp() const override { return stamp_; }
   const std::string& rootFrame() const override { return root_frame_; }
   const std::string& boneFrame(std::size_t bone) const override { return bone_frames_[bone]; }

@@ -47,7 +47,8 @@ double statureInTf(const tf2_ros::Buffer& buffer, const Skeleton& skeleton, cons
   const Bone& shank = human.bone(static_cast<std::size_t>(knee));
   const ArticulatedJoint& joint = human.joint(static_cast<std::size_t>(shank.joint));
   try {
-    const auto t = buffer.lookupTransform(human.frameName("l_hip"), joint.intermediate_links[0], ros::Time(0)).transform.translation;
+    const auto t = buffer.lookupTransform(human.frameName("l_hip"), joint.intermediate_links[0], ros::Time(0))
+                       .transform.translation;
     const double rest = shank.rest_translation.norm();
     const double stature = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z) / rest;
     return rest > 0.0 && std::isfinite(stature) && stature > 0.5 && stature < 2.0 ? stature : 1.0;

@@ -59,7 +59,8 @@ const char* const kUsage =
     "  --order M             every series gets exactly order M (no tolerance search)\n"
     "  --skip-frames N       drop N frames at the start (default: auto, drops a leading bind-pose frame)\n"
     "  --name NAME           motion name in the file (default: the input's file name stem)\n"
-    "  --body fitted|default fit the person's proportions from the rest pose (BVH) or model (OpenSim) and write them as\n"
+    "  --body fitted|default fit the person's proportions from the rest pose (BVH) or model (OpenSim) and write them "
+    "as\n"
     "                        the motion's body_shape (default: fitted); default: our 1.75 m body\n"
     "  --units U             BVH length unit: m, cm, mm, in, cmu (CMU's ASF units, 1/0.45 in) or\n"
     "                        metres per unit (default: the unit that makes the rest pose a human height)\n"
@@ -121,7 +122,8 @@ double parseNumberWithin(const std::string& option, const std::string& text, dou
   const double value = parseNumber(option, text, minimum);
   if (value > maximum) {
     std::ostringstream message;
-    message << option << " expects a number in [" << minimum << ", " << maximum << "]" << unit << ", got '" << text << "'";
+    message << option << " expects a number in [" << minimum << ", " << maximum << "]" << unit << ", got '" << text
+            << "'";
     throw UsageError(message.str());
   }
   return value;
@@ -140,7 +142,8 @@ std::string whyNotWritable(const std::string& path) {
   const std::string directory = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   if (::stat(directory.c_str(), &status) != 0) return "no such directory '" + directory + "'";
   if (!S_ISDIR(status.st_mode)) return "'" + directory + "' is not a directory";
-  if (::access(directory.c_str(), W_OK) != 0) return "the directory '" + directory + "' is not writable: " + std::strerror(errno);
+  if (::access(directory.c_str(), W_OK) != 0)
+    return "the directory '" + directory + "' is not writable: " + std::strerror(errno);
   return "";
 }
 
@@ -189,22 +192,26 @@ Arguments parseArguments(int argc, char** argv) {
     } else if (arg == "--urdf") {
       args.urdf = value();
     } else if (arg == "--period") {
-      args.fit.period = parseNumberWithin(arg, value(), dh::MotionLimits::kMinPeriod, dh::MotionLimits::kMaxPeriod, " s");
+      args.fit.period =
+          parseNumberWithin(arg, value(), dh::MotionLimits::kMinPeriod, dh::MotionLimits::kMaxPeriod, " s");
     } else if (arg == "--tolerance-deg") {
       args.fit.tolerance_degrees = parseNumber(arg, value(), 0.0);
     } else if (arg == "--tolerance-mm") {
       args.fit.tolerance_metres = parseNumber(arg, value(), 0.0) / 1000.0;
     } else if (arg == "--max-order") {
-      args.fit.max_order = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "more harmonics than a gait capture holds");
+      args.fit.max_order =
+          parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "more harmonics than a gait capture holds");
     } else if (arg == "--order") {
-      args.fit.fixed_order = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "more harmonics than a gait capture holds");
+      args.fit.fixed_order =
+          parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "more harmonics than a gait capture holds");
     } else if (arg == "--skip-frames") {
       args.fit.skip_frames = static_cast<int>(parseCount(arg, value(), 0, 1000000, "frames of a capture"));
     } else if (arg == "--name") {
       args.name = value();
     } else if (arg == "--body") {
       const std::string body = value();
-      if (body != "fitted" && body != "default") throw UsageError("--body must be 'fitted' or 'default', got '" + body + "'");
+      if (body != "fitted" && body != "default")
+        throw UsageError("--body must be 'fitted' or 'default', got '" + body + "'");
       args.fit_body = body == "fitted";
       args.body_given = true;
     } else if (arg == "--units") {
@@ -213,9 +220,11 @@ Arguments parseArguments(int argc, char** argv) {
     } else if (arg == "--sweep-csv") {
       args.sweep_csv = value();
     } else if (arg == "--sweep-max") {
-      args.sweep_max = parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "the highest order a motion file may hold");
+      args.sweep_max =
+          parseCount(arg, value(), 1, dh::MotionLimits::kMaxOrder, "the highest order a motion file may hold");
     } else if (arg == "--timing-calls") {
-      args.timing_calls = parseCount(arg, value(), 1, 10000000, "each order of the sweep is timed with this many calls");
+      args.timing_calls =
+          parseCount(arg, value(), 1, 10000000, "each order of the sweep is timed with this many calls");
     } else if (arg == "-v" || arg == "--verbose") {
       args.verbose = true;
     } else if (arg == "-q" || arg == "--quiet") {
@@ -231,9 +240,12 @@ Arguments parseArguments(int argc, char** argv) {
   if (args.input.empty()) throw UsageError("no input file");
   if (args.format.empty()) {
     const std::string ext = extension(args.input);
-    if (ext == "bvh") args.format = "bvh";
-    else if (ext == "mot" || ext == "sto") args.format = "mot";
-    else throw UsageError("cannot tell the format of '" + args.input + "' from its extension; use --format bvh|mot");
+    if (ext == "bvh")
+      args.format = "bvh";
+    else if (ext == "mot" || ext == "sto")
+      args.format = "mot";
+    else
+      throw UsageError("cannot tell the format of '" + args.input + "' from its extension; use --format bvh|mot");
   }
   if (args.osim_given && args.format != "mot") throw UsageError("--osim applies to OpenSim motion input only");
   if (args.format != "bvh") {
@@ -253,7 +265,8 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
   if (args.format == "bvh") {
     const dh::BvhClip clip = dh::loadBvhFile(args.input);
     if (!args.map.empty() && map_file.kind != "bvh") {
-      throw dh::JointMapError(args.map + ": a BVH input needs a map of kind 'bvh', this one is '" + map_file.kind + "'");
+      throw dh::JointMapError(args.map + ": a BVH input needs a map of kind 'bvh', this one is '" + map_file.kind +
+                              "'");
     }
     const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input) : map_file.bvh;
     return dh::retargetBvh(clip, map, skeleton, args.input, options);
@@ -262,8 +275,10 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
   if (!args.map.empty() && map_file.kind == "coordinates") {
     // Joint angles only: no model, so no body to fit and no joint positions to measure against.
     if (fit_body && args.body_given) {
-      throw dh::JointMapError(args.map + ": a map of kind 'coordinates' reads joint angles only; --body fitted reads "
-                              "the body from the model (--osim, with no --map or a map of kind 'bvh' naming its bodies)");
+      throw dh::JointMapError(
+          args.map +
+          ": a map of kind 'coordinates' reads joint angles only; --body fitted reads "
+          "the body from the model (--osim, with no --map or a map of kind 'bvh' naming its bodies)");
     }
     return dh::retargetCoordinates(table, map_file.coordinates, skeleton, args.input);
   }
@@ -277,7 +292,8 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
     model_note = "the generic model " + args.osim + " " + scale.why + " (give the subject's model with --osim)";
   }
   const dh::BvhClip clip = dh::openSimMotionClip(model, table, args.input);
-  const dh::BvhJointMap map = args.map.empty() ? dh::chooseBvhJointMap(clip, args.input + " on " + args.osim) : map_file.bvh;
+  const dh::BvhJointMap map =
+      args.map.empty() ? dh::chooseBvhJointMap(clip, args.input + " on " + args.osim) : map_file.bvh;
   options.units = "m";
   dh::SampledMotion sampled = dh::retargetBvh(clip, map, skeleton, args.input, options);
   sampled.units.reason = "an OpenSim model's; on " + model_note;
@@ -353,15 +369,16 @@ void writeSweep(const Arguments& args, const dh::Skeleton& skeleton, const dh::S
     csv << order << ',' << accuracy.mean_rms_degrees << ',' << accuracy.max_rms_degrees << ','
         << accuracy.against_capture.mean_cm << ',' << accuracy.against_capture.max_cm << ','
         << accuracy.against_samples.mean_cm << ',' << accuracy.against_samples.max_cm << ','
-        << accuracy.root_translation.mean_cm << ',' << accuracy.unsmoothed_against_capture.mean_cm << ',' << evaluate_ns << ','
-        << evaluate_fk_ns << ',' << (sampled.body_fitted ? 1 : 0) << ',' << default_body.against_capture.mean_cm << ','
-        << default_body.against_capture.max_cm << ',' << accuracy.stance_foot_height.mean_cm << ','
+        << accuracy.root_translation.mean_cm << ',' << accuracy.unsmoothed_against_capture.mean_cm << ',' << evaluate_ns
+        << ',' << evaluate_fk_ns << ',' << (sampled.body_fitted ? 1 : 0) << ',' << default_body.against_capture.mean_cm
+        << ',' << default_body.against_capture.max_cm << ',' << accuracy.stance_foot_height.mean_cm << ','
         << accuracy.stance_foot_height.max_cm << '\n';
     if (!args.quiet) {
       std::cerr << "  m=" << order << ": RMS mean " << format(accuracy.mean_rms_degrees, 3) << " deg (max "
-                << format(accuracy.max_rms_degrees, 3) << "), joints vs capture " << format(accuracy.against_capture.mean_cm, 2)
-                << " cm, vs samples " << format(accuracy.against_samples.mean_cm, 3) << " cm, evaluate "
-                << format(evaluate_ns, 1) << " ns, +FK " << format(evaluate_fk_ns, 1) << " ns\n";
+                << format(accuracy.max_rms_degrees, 3) << "), joints vs capture "
+                << format(accuracy.against_capture.mean_cm, 2) << " cm, vs samples "
+                << format(accuracy.against_samples.mean_cm, 3) << " cm, evaluate " << format(evaluate_ns, 1)
+                << " ns, +FK " << format(evaluate_fk_ns, 1) << " ns\n";
     }
   }
 }
@@ -370,18 +387,20 @@ void writeSweep(const Arguments& args, const dh::Skeleton& skeleton, const dh::S
 std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy& accuracy,
                          const std::optional<dh::FitAccuracy>& default_body) {
   if (accuracy.against_capture.samples == 0) {
-    return "No capture skeleton (joint coordinates): our default body; joint positions against the capture not measured.";
+    return "No capture skeleton (joint coordinates): our default body; joint positions against the capture not "
+           "measured.";
   }
   std::ostringstream text;
   if (sampled.body_fitted) {
     text << "Body fitted from the rest pose (units: " << sampled.units.name << ", " << sampled.units.reason
          << "; limbs " << format(sampled.proportions.overall, 3) << "x ours).\n"
          << "Joint positions vs the capture's own FK (metres, every mapped joint and frame, root-relative): mean "
-         << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
+         << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2)
+         << " cm";
     if (default_body) {
       text << "\n  (on our default body, the capture scaled to our size (stature, or legs without a head): mean "
-         << format(default_body->against_capture.mean_cm, 2)
-           << " cm, max " << format(default_body->against_capture.max_cm, 2) << " cm)";
+           << format(default_body->against_capture.mean_cm, 2) << " cm, max "
+           << format(default_body->against_capture.max_cm, 2) << " cm)";
     }
     if (accuracy.stance_foot_height.samples > 0) {
       text << "\nLowest foot point in stance vs the capture's: mean " << format(accuracy.stance_foot_height.mean_cm, 2)
@@ -391,7 +410,8 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
   } else {
     text << "Joint positions vs the capture's own FK (scaled to our size: stature, or legs without a head; our default "
             "body, root-relative): mean "
-         << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2) << " cm";
+         << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2)
+         << " cm";
   }
   return text.str();
 }
@@ -407,10 +427,12 @@ void reportWorst(const dh::MotionFit& fit, const dh::FitAccuracy& accuracy, std:
     out << "  worst " << what << ": " << dh::humanJointNames()[static_cast<std::size_t>(e.worst_joint)] << " at frame "
         << fit.skipped_frames + e.worst_frame << " (" << format(fit.times[e.worst_frame], 3) << " s), "
         << format(e.max_cm, 2) << " cm; its y, x, z there: sampled";
-    for (std::size_t d = 0; d < dh::kDofsPerJoint; ++d) out << ' ' << format(fit.samples[first + d][e.worst_frame] * kRadiansToDegrees, 1);
+    for (std::size_t d = 0; d < dh::kDofsPerJoint; ++d)
+      out << ' ' << format(fit.samples[first + d][e.worst_frame] * kRadiansToDegrees, 1);
     out << " deg, fitted";
     for (std::size_t d = 0; d < dh::kDofsPerJoint; ++d) {
-      out << ' ' << format(fit.motion.series(first + d).valueBySummation(fit.times[e.worst_frame]) * kRadiansToDegrees, 1);
+      out << ' '
+          << format(fit.motion.series(first + d).valueBySummation(fit.times[e.worst_frame]) * kRadiansToDegrees, 1);
     }
     out << " deg\n";
   };
@@ -429,8 +451,8 @@ void reportWorst(const dh::MotionFit& fit, const dh::FitAccuracy& accuracy, std:
 void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::MotionFit& fit,
             const dh::FitAccuracy& accuracy, const std::optional<dh::FitAccuracy>& default_body) {
   std::ostream& out = std::cerr;
-  out << "fit_motion: " << args.input << ": " << sampled.times.size() << " frames (" << fit.skipped_frames << " skipped at the start), period "
-      << format(fit.motion.period, 4) << " s ("
+  out << "fit_motion: " << args.input << ": " << sampled.times.size() << " frames (" << fit.skipped_frames
+      << " skipped at the start), period " << format(fit.motion.period, 4) << " s ("
       << (fit.period_estimated ? "autocorrelation peak " + format(fit.period_estimate.correlation, 3) : "given")
       << "), fitted over " << fit.cycles << " whole cycle(s) = " << fit.frames_used << " frames, order cap "
       << fit.max_order_allowed << "\n";
@@ -443,7 +465,8 @@ void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::M
       continue;
     }
     out << " m=" << std::setw(2) << r.order << "  RMS "
-        << (r.is_angle ? format(r.rms_residual * kRadiansToDegrees, 3) + " deg" : format(r.rms_residual * 1000.0, 2) + " mm")
+        << (r.is_angle ? format(r.rms_residual * kRadiansToDegrees, 3) + " deg"
+                       : format(r.rms_residual * 1000.0, 2) + " mm")
         << (r.reached_tolerance ? "" : "  (tolerance not reached at the cap)") << "\n";
   }
   out << "  angle RMS residual: mean " << format(accuracy.mean_rms_degrees, 3) << " deg, max "
@@ -458,9 +481,9 @@ void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::M
           << format(e.mean_cm, 2) << " cm, max " << format(e.max_cm, 2) << " cm\n";
     }
   }
-  out << "  joint positions vs our skeleton on the unsmoothed angles: mean " << format(accuracy.against_samples.mean_cm, 3)
-      << " cm, max " << format(accuracy.against_samples.max_cm, 3) << " cm; root translation: mean "
-      << format(accuracy.root_translation.mean_cm, 3) << " cm\n";
+  out << "  joint positions vs our skeleton on the unsmoothed angles: mean "
+      << format(accuracy.against_samples.mean_cm, 3) << " cm, max " << format(accuracy.against_samples.max_cm, 3)
+      << " cm; root translation: mean " << format(accuracy.root_translation.mean_cm, 3) << " cm\n";
   if (args.verbose) reportWorst(fit, accuracy, out);
 }
 
@@ -511,14 +534,15 @@ int main(int argc, char** argv) {
     std::ostringstream header;
     header << "Fitted to motion capture by:\n  " << commandLine(argc, argv) << "\n"
            << "Source: " << args.input << " (" << sampled.times.size() << " frames, " << fit.skipped_frames
-           << " skipped at the start); period "
-           << format(fit.motion.period, 4) << " s "
-           << (fit.period_estimated ? "(estimated: autocorrelation peak " + format(fit.period_estimate.correlation, 3) + ")"
-                                    : "(given)")
+           << " skipped at the start); period " << format(fit.motion.period, 4) << " s "
+           << (fit.period_estimated
+                   ? "(estimated: autocorrelation peak " + format(fit.period_estimate.correlation, 3) + ")"
+                   : "(given)")
            << ", fitted over " << fit.cycles << " whole cycle(s).\n"
            << "Least-squares Fourier series per DOF (Eq. 1, radians; root translation in metres): order m\n"
-           << "the smallest reaching RMS " << args.fit.tolerance_degrees << " deg / " << args.fit.tolerance_metres * 1000.0
-           << " mm, capped at " << fit.max_order_allowed << "; rms_residual in radians or metres.\n"
+           << "the smallest reaching RMS " << args.fit.tolerance_degrees << " deg / "
+           << args.fit.tolerance_metres * 1000.0 << " mm, capped at " << fit.max_order_allowed
+           << "; rms_residual in radians or metres.\n"
            << accuracyText(sampled, accuracy, default_body) << "\n"
            << "Our skeleton on the fitted series vs on the unsmoothed retarget: mean "
            << format(accuracy.against_samples.mean_cm, 3) << " cm.";
@@ -531,7 +555,8 @@ int main(int argc, char** argv) {
       if (!out || !(out << text.str())) throw std::runtime_error(args.output + ": cannot write the motion file");
     }
     if (!args.sweep_csv.empty()) {
-      writeSweep(args, skeleton, sampled, fit, unfitted ? &*unfitted : nullptr, unfitted_fit ? &*unfitted_fit : nullptr);
+      writeSweep(args, skeleton, sampled, fit, unfitted ? &*unfitted : nullptr,
+                 unfitted_fit ? &*unfitted_fit : nullptr);
     }
   } catch (const std::exception& error) {
     std::cerr << "fit_motion: " << error.what() << "\n";

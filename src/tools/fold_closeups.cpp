@@ -45,7 +45,8 @@ Eigen::Vector3d boneAxis(const SkeletonPose& pose, const Skeleton& skeleton, con
 }
 
 double bendDegrees(const SkeletonPose& pose, const Skeleton& skeleton, const Joint& joint) {
-  return std::acos(std::clamp(boneAxis(pose, skeleton, joint.upper).dot(boneAxis(pose, skeleton, joint.lower)), -1.0, 1.0)) *
+  return std::acos(
+             std::clamp(boneAxis(pose, skeleton, joint.upper).dot(boneAxis(pose, skeleton, joint.lower)), -1.0, 1.0)) *
          180.0 / M_PI;
 }
 
@@ -99,7 +100,8 @@ int run(const std::string& source, const std::string& directory) {
   csv << "joint,state,bend_deg\n";
   for (const Joint& joint : {Joint{"elbow", "jacket", "l_shoulder", "l_elbow", {0.25, 0.38, 0.78}},
                              Joint{"knee", "pants", "l_hip", "l_knee", {0.35, 0.35, 0.42}}}) {
-    Garment garment(loadGarmentFile(source + "/config/garments/" + joint.garment + ".yaml", skeleton), skeleton, body.shape);
+    Garment garment(loadGarmentFile(source + "/config/garments/" + joint.garment + ".yaml", skeleton), skeleton,
+                    body.shape);
     const std::vector<BezierPatch> rest = garment.patches();
     std::size_t bent = 0, straight = 0;
     for (std::size_t k = 0; k < poses.size(); ++k) {
@@ -108,7 +110,8 @@ int run(const std::string& source, const std::string& directory) {
     }
     // Into the crook of the bent joint (between the bones), half from outside the body, level.
     const SkeletonPose& pose = poses[bent];
-    const Eigen::Vector3d crook = (boneAxis(pose, skeleton, joint.lower) - boneAxis(pose, skeleton, joint.upper)).normalized();
+    const Eigen::Vector3d crook =
+        (boneAxis(pose, skeleton, joint.lower) - boneAxis(pose, skeleton, joint.upper)).normalized();
     Eigen::Vector3d outward = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(joint.lower))].translation -
                               pose.root.translation;
     outward.z() = 0.0;
@@ -118,7 +121,8 @@ int run(const std::string& source, const std::string& directory) {
     for (const auto& [state, k] : {std::make_pair("bent", bent), std::make_pair("straight", straight)}) {
       garment.pose(poses[k]);
       Tessellator tessellator;
-      const TriangleMesh mesh = tessellator.tessellateUniform(garment.patches(), garment.topology(), Tessellator::kMaxLevel);
+      const TriangleMesh mesh =
+          tessellator.tessellateUniform(garment.patches(), garment.topology(), Tessellator::kMaxLevel);
       VertexCompression compression, previous(previous_options);
       compression.prepare(mesh, rest);
       previous.prepare(mesh, rest);
@@ -128,9 +132,12 @@ int run(const std::string& source, const std::string& directory) {
       previous.evaluate(mesh, nullptr, previous_strength.data());
       const float height_to_tile = ReliefMapJobs::clothHeightToTile();
       TriangleMesh exact_mesh, bump_mesh, before_mesh;
-      displaceMesh(mesh, ReliefDisplacement{&exact.strong, 1.0f, height_to_tile, 1.0f, &strength, &exact, &axes}, exact_mesh);
-      displaceMesh(mesh, ReliefDisplacement{&smooth.strong, 1.0f, height_to_tile, 1.0f, &strength, &smooth, &axes}, bump_mesh);
-      displaceMesh(mesh, ReliefDisplacement{&before, 1.0f, height_to_tile, 1.0f, &previous_strength, nullptr, nullptr}, before_mesh);
+      displaceMesh(mesh, ReliefDisplacement{&exact.strong, 1.0f, height_to_tile, 1.0f, &strength, &exact, &axes},
+                   exact_mesh);
+      displaceMesh(mesh, ReliefDisplacement{&smooth.strong, 1.0f, height_to_tile, 1.0f, &strength, &smooth, &axes},
+                   bump_mesh);
+      displaceMesh(mesh, ReliefDisplacement{&before, 1.0f, height_to_tile, 1.0f, &previous_strength, nullptr, nullptr},
+                   before_mesh);
       bump_mesh.positions = mesh.positions;  // bump mapping tilts normals only
       before_mesh.positions = mesh.positions;
       const std::string stem = directory + "/closeup_" + joint.name + "_" + state + "_";

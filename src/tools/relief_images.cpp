@@ -101,10 +101,11 @@ void writeSmoothFoldErrors(const std::string& directory) {
         for (int round = 0; round < 3; ++round) {
           const auto start = std::chrono::steady_clock::now();
           smooth = makeWrinkleMap(spec);
-          ms = std::min(ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+          ms =
+              std::min(ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
-        table << patternName(kind) << ',' << alpha << ',' << harmonics << ',' << rmsHeightDifference(smooth, exact) << ','
-              << solveBuckling(kind, alpha, spec.cell).h1 << ',' << ms << ',' << default_harmonics << '\n';
+        table << patternName(kind) << ',' << alpha << ',' << harmonics << ',' << rmsHeightDifference(smooth, exact)
+              << ',' << solveBuckling(kind, alpha, spec.cell).h1 << ',' << ms << ',' << default_harmonics << '\n';
       }
     }
   }
@@ -147,7 +148,8 @@ SkinReliefParameters baseSkin() {
   return parameters;
 }
 
-void writeSkin(const std::string& directory, const std::string& name, const SkinReliefParameters& parameters, int size = 320) {
+void writeSkin(const std::string& directory, const std::string& name, const SkinReliefParameters& parameters,
+               int size = 320) {
   writeShaded(directory + "/skin_" + name + ".png", SkinRelief(parameters).render(size, size));
 }
 
@@ -179,9 +181,11 @@ void writeSkinSweeps(const std::string& directory) {
   writeSkinSweep(directory, "roundness", &SkinReliefParameters::roundness, {0.0, 0.4, 1.0}, percent);
   writeSkinSweep(directory, "jitter", &SkinReliefParameters::jitter, {0.0, 0.2, 0.45}, percent);
   writeSkinSweep(directory, "wobble", &SkinReliefParameters::wobble, {0.0, 0.12, 0.25}, percent);
-  writeSkinSweep(directory, "levels", &SkinReliefParameters::levels, {1, 2, 3}, [](int n) { return std::to_string(n); });
+  writeSkinSweep(directory, "levels", &SkinReliefParameters::levels, {1, 2, 3},
+                 [](int n) { return std::to_string(n); });
   const double stretch = 2.5;
-  for (const auto& [name, angle] : {std::pair<const char*, double>{"none", -1.0}, {"horizontal", 0.0}, {"vertical", M_PI / 2}}) {
+  for (const auto& [name, angle] :
+       {std::pair<const char*, double>{"none", -1.0}, {"horizontal", 0.0}, {"vertical", M_PI / 2}}) {
     SkinReliefParameters parameters = baseSkin();
     if (angle >= 0.0) {
       parameters.direction_angle = angle;

@@ -54,22 +54,42 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
-      if (i + 1 >= argc) { usage(); std::exit(2); }
+      if (i + 1 >= argc) {
+        usage();
+        std::exit(2);
+      }
       return argv[++i];
     };
-    if (arg == "--garment") garment_files.push_back(value());
-    else if (arg == "--out") out = value();
-    else if (arg == "--view") view = value();
-    else if (arg == "--length") length = value();
-    else if (arg == "--time") time = std::stod(value());
-    else if (arg == "--rest") rest = true;
-    else if (arg == "--no-body") body = false;
-    else if (arg == "--source-dir") source = value();
+    if (arg == "--garment")
+      garment_files.push_back(value());
+    else if (arg == "--out")
+      out = value();
+    else if (arg == "--view")
+      view = value();
+    else if (arg == "--length")
+      length = value();
+    else if (arg == "--time")
+      time = std::stod(value());
+    else if (arg == "--rest")
+      rest = true;
+    else if (arg == "--no-body")
+      body = false;
+    else if (arg == "--source-dir")
+      source = value();
     else if (arg == "--size") {
-      if (std::sscanf(value().c_str(), "%dx%d", &width, &height) != 2) { usage(); return 2; }
-    } else { usage(); return 2; }
+      if (std::sscanf(value().c_str(), "%dx%d", &width, &height) != 2) {
+        usage();
+        return 2;
+      }
+    } else {
+      usage();
+      return 2;
+    }
   }
-  if (out.empty()) { usage(); return 2; }
+  if (out.empty()) {
+    usage();
+    return 2;
+  }
   try {
     const Skeleton skeleton = Skeleton::fromUrdfFile(source + "/urdf/human.urdf");
     const BodyDescription description = loadBodyDescriptionFile(source + "/config/bodies/default.yaml", skeleton);
@@ -87,10 +107,14 @@ int main(int argc, char** argv) {
     const Eigen::Vector3d centre = root.translation + Eigen::Vector3d(0, 0, -0.05);
     RasterCamera camera;
     Eigen::Vector3d direction(1.0, 0.0, 0.0);
-    if (view == "side") direction = Eigen::Vector3d(0.0, 1.0, 0.0);
-    else if (view == "back") direction = Eigen::Vector3d(-1.0, 0.0, 0.0);
-    else if (view == "three_quarter") direction = Eigen::Vector3d(1.0, 0.7, 0.15).normalized();
-    else if (view != "front") throw std::invalid_argument("unknown view '" + view + "'");
+    if (view == "side")
+      direction = Eigen::Vector3d(0.0, 1.0, 0.0);
+    else if (view == "back")
+      direction = Eigen::Vector3d(-1.0, 0.0, 0.0);
+    else if (view == "three_quarter")
+      direction = Eigen::Vector3d(1.0, 0.7, 0.15).normalized();
+    else if (view != "front")
+      throw std::invalid_argument("unknown view '" + view + "'");
     camera.eye = centre + 5.0 * direction;
     camera.target = centre;
     camera.ortho_height = 2.0;
@@ -115,7 +139,8 @@ int main(int argc, char** argv) {
       material.colour = g.colour;
       raster.draw(tessellator.tessellateUniform(garment.patches(), garment.topology(), 12), material, light);
       std::cout << g.name << ": " << garment.patches().size() << " patches";
-      if (g.type != GarmentType::kJacket) std::cout << ", c = " << garment.length() << " (c_k = " << garment.kneeLength() << ")";
+      if (g.type != GarmentType::kJacket)
+        std::cout << ", c = " << garment.length() << " (c_k = " << garment.kneeLength() << ")";
       std::cout << '\n';
     }
     raster.writePng(out);

@@ -25,10 +25,14 @@ int main(int argc, char** argv) {
       return 2;
     }
     const std::string value = argv[++i];
-    if (arg == "--root") root = value;
-    else if (arg == "--out") out = value;
-    else if (arg == "--level") level = std::stoi(value);
-    else if (arg == "--size") std::sscanf(value.c_str(), "%dx%d", &width, &height);
+    if (arg == "--root")
+      root = value;
+    else if (arg == "--out")
+      out = value;
+    else if (arg == "--level")
+      level = std::stoi(value);
+    else if (arg == "--size")
+      std::sscanf(value.c_str(), "%dx%d", &width, &height);
     else {
       std::cerr << "render_skin: unknown option " << arg << "\n";
       return 2;

@@ -44,8 +44,8 @@ struct Measurement {
 
 // `humans` models side by side along y, 1 m apart, centred on the origin; the camera looks at
 // them from `distance` along x.
-Measurement measure(const Scene& scene, const HumanModelSettings& settings, int humans, double distance,
-                    bool automatic, int fixed_level, VertexEvaluation evaluation) {
+Measurement measure(const Scene& scene, const HumanModelSettings& settings, int humans, double distance, bool automatic,
+                    int fixed_level, VertexEvaluation evaluation) {
   std::vector<std::unique_ptr<HumanModel>> models;
   for (int h = 0; h < humans; ++h) {
     models.push_back(std::make_unique<HumanModel>(scene.skeleton, scene.body, settings));
@@ -82,8 +82,9 @@ Measurement measure(const Scene& scene, const HumanModelSettings& settings, int 
         for (std::size_t p = 0; p < patches.size(); ++p) {
           const double bound = model->partErrorBound(part).bound(p, patches[p], levels[p]);
           result.max_error_mm = std::max(result.max_error_mm, 1e3 * bound);
-          result.max_error_pixels = std::max(
-              result.max_error_pixels, bound * pixelsPerMetre(lod.camera, distanceToPatchBounds(patches[p], lod.camera.position)));
+          result.max_error_pixels =
+              std::max(result.max_error_pixels,
+                       bound * pixelsPerMetre(lod.camera, distanceToPatchBounds(patches[p], lod.camera.position)));
         }
       }
     }

@@ -83,7 +83,8 @@ void bucklingDomain(const std::string& out) {
 
 Eigen::Matrix3d yxz(double y, double x, double z) {
   return (Eigen::AngleAxisd(y, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(x, Eigen::Vector3d::UnitX()) *
-          Eigen::AngleAxisd(z, Eigen::Vector3d::UnitZ())).toRotationMatrix();
+          Eigen::AngleAxisd(z, Eigen::Vector3d::UnitZ()))
+      .toRotationMatrix();
 }
 
 void fkGimbal(const std::string& out, const Skeleton& skeleton) {
@@ -143,7 +144,8 @@ void fkWrap(const std::string& out, const Skeleton& skeleton) {
     fk.compute(RigidTransform(), shifted, shifted_pose);
     double worst = 0.0;
     for (std::size_t b = 0; b < kBoneCount; ++b) {
-      worst = std::max(worst, (shifted_pose.bone_in_world[b].translation - reference.bone_in_world[b].translation).norm());
+      worst =
+          std::max(worst, (shifted_pose.bone_in_world[b].translation - reference.bone_in_world[b].translation).norm());
     }
     csv.row({1.0, turns, 0, 0, 0, worst});
   }
@@ -294,12 +296,26 @@ void relief(const std::string& out) {
     return parameters;
   };
   const std::vector<Case> cases = {
-      {"cocircular", skin([](SkinReliefParameters& p) { p.jitter = 0.0; p.wobble = 0.0; })},
-      {"max_jitter", skin([](SkinReliefParameters& p) { p.jitter = 0.5; p.levels = 2; })},
-      {"collinear", skin([](SkinReliefParameters& p) {
-         p.cell_size = 0.1; p.direction_stretch = 10.0; p.direction_angle = M_PI / 2; p.jitter = 0.0; p.wobble = 0.0;
+      {"cocircular", skin([](SkinReliefParameters& p) {
+         p.jitter = 0.0;
+         p.wobble = 0.0;
        })},
-      {"one_column", skin([](SkinReliefParameters& p) { p.cell_size = 1.0; p.jitter = 0.5; p.levels = 2; })},
+      {"max_jitter", skin([](SkinReliefParameters& p) {
+         p.jitter = 0.5;
+         p.levels = 2;
+       })},
+      {"collinear", skin([](SkinReliefParameters& p) {
+         p.cell_size = 0.1;
+         p.direction_stretch = 10.0;
+         p.direction_angle = M_PI / 2;
+         p.jitter = 0.0;
+         p.wobble = 0.0;
+       })},
+      {"one_column", skin([](SkinReliefParameters& p) {
+         p.cell_size = 1.0;
+         p.jitter = 0.5;
+         p.levels = 2;
+       })},
   };
   for (const Case& c : cases) {
     const SkinRelief relief(c.parameters);

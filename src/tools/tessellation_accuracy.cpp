@@ -49,7 +49,7 @@ void append(NamedSurface& target, const PatchSurface& part) {
 }
 
 PatchSurface shiftedCapsule(const std::vector<CylinderRing>& rings, double bottom, double top,
-                             const Eigen::Vector3d& offset) {
+                            const Eigen::Vector3d& offset) {
   const PatchSurface surface = makeGeneralizedCylinder(rings, bottom, top);
   PatchSurface moved{{}, surface.topology};
   for (const BezierPatch& patch : surface.patches) {
@@ -62,32 +62,48 @@ PatchSurface shiftedCapsule(const std::vector<CylinderRing>& rings, double botto
 
 NamedSurface capsule() {
   NamedSurface s{"capsule", {}, PatchTopology(0)};
-  append(s, makeGeneralizedCylinder({{0.0, 0.10, 0.08}, {0.10, 0.14, 0.10}, {0.20, 0.05, 0.05},
-                                       {0.30, 0.06, 0.05}, {0.40, 0.07, 0.06}, {0.50, 0.03, 0.035},
-                                       {0.60, 0.04, 0.04}},
-                                      0.08, 0.03));
+  append(s, makeGeneralizedCylinder({{0.0, 0.10, 0.08},
+                                     {0.10, 0.14, 0.10},
+                                     {0.20, 0.05, 0.05},
+                                     {0.30, 0.06, 0.05},
+                                     {0.40, 0.07, 0.06},
+                                     {0.50, 0.03, 0.035},
+                                     {0.60, 0.04, 0.04}},
+                                    0.08, 0.03));
   return s;
 }
 
 NamedSurface body() {
   NamedSurface s{"body", {}, PatchTopology(0)};
   // Torso: 0.55 m, chest and waist.
-  append(s, shiftedCapsule({{0.00, 0.16, 0.11}, {0.12, 0.17, 0.12}, {0.22, 0.14, 0.10},
-                             {0.30, 0.13, 0.09}, {0.40, 0.15, 0.10}, {0.48, 0.17, 0.11},
-                             {0.55, 0.15, 0.10}},
-                            0.06, 0.05, Eigen::Vector3d::Zero()));
+  append(s, shiftedCapsule({{0.00, 0.16, 0.11},
+                            {0.12, 0.17, 0.12},
+                            {0.22, 0.14, 0.10},
+                            {0.30, 0.13, 0.09},
+                            {0.40, 0.15, 0.10},
+                            {0.48, 0.17, 0.11},
+                            {0.55, 0.15, 0.10}},
+                           0.06, 0.05, Eigen::Vector3d::Zero()));
   // Arm: 0.55 m, elbow and wrist.
-  append(s, shiftedCapsule({{0.00, 0.045, 0.045}, {0.10, 0.05, 0.045}, {0.18, 0.04, 0.04},
-                             {0.27, 0.035, 0.035}, {0.35, 0.04, 0.035}, {0.45, 0.03, 0.025},
-                             {0.55, 0.025, 0.02}},
-                            0.02, 0.02, Eigen::Vector3d(0.3, 0.0, 0.0)));
+  append(s, shiftedCapsule({{0.00, 0.045, 0.045},
+                            {0.10, 0.05, 0.045},
+                            {0.18, 0.04, 0.04},
+                            {0.27, 0.035, 0.035},
+                            {0.35, 0.04, 0.035},
+                            {0.45, 0.03, 0.025},
+                            {0.55, 0.025, 0.02}},
+                           0.02, 0.02, Eigen::Vector3d(0.3, 0.0, 0.0)));
   // Fingers: 8 cm, 8-10 mm radius.
   for (int f = 0; f < 5; ++f) {
     const double r = 0.008 + 0.0005 * f;
-    append(s, shiftedCapsule({{0.00, r, r}, {0.02, 1.1 * r, r}, {0.04, 0.9 * r, 0.9 * r},
-                               {0.05, r, 0.95 * r}, {0.06, 0.95 * r, 0.9 * r}, {0.07, 0.9 * r, 0.85 * r},
-                               {0.08, 0.85 * r, 0.8 * r}},
-                              0.004, 0.007, Eigen::Vector3d(0.45 + 0.03 * f, 0.0, 0.0)));
+    append(s, shiftedCapsule({{0.00, r, r},
+                              {0.02, 1.1 * r, r},
+                              {0.04, 0.9 * r, 0.9 * r},
+                              {0.05, r, 0.95 * r},
+                              {0.06, 0.95 * r, 0.9 * r},
+                              {0.07, 0.9 * r, 0.85 * r},
+                              {0.08, 0.85 * r, 0.8 * r}},
+                             0.004, 0.007, Eigen::Vector3d(0.45 + 0.03 * f, 0.0, 0.0)));
   }
   return s;
 }
@@ -132,8 +148,7 @@ struct Errors {
   double parametric = 0.0;
 };
 
-Errors measure(const TriangleMesh& mesh, const Tessellator& tessellator,
-               const std::vector<BezierPatch>& patches) {
+Errors measure(const TriangleMesh& mesh, const Tessellator& tessellator, const std::vector<BezierPatch>& patches) {
   constexpr int kSteps = 3;  // 10 sample points per triangle; the 3 corners carry no error
   Errors errors;
   const auto& corners = tessellator.triangleCornerParameters();
@@ -181,9 +196,8 @@ void report(const NamedSurface& surface, const char* method, double parameter, T
   }
   const TriangleMesh& mesh = tessellator.mesh();
   const Errors errors = measure(mesh, tessellator, surface.patches);
-  std::printf("%s,%s,%.6g,%zu,%zu,%.6g,%.6g,%.3f,%.3f\n", surface.name.c_str(), method, parameter,
-              mesh.triangleCount(), mesh.vertexCount(), 1e3 * errors.closest, 1e3 * errors.parametric,
-              frame_us, build_us);
+  std::printf("%s,%s,%.6g,%zu,%zu,%.6g,%.6g,%.3f,%.3f\n", surface.name.c_str(), method, parameter, mesh.triangleCount(),
+              mesh.vertexCount(), 1e3 * errors.closest, 1e3 * errors.parametric, frame_us, build_us);
   std::fflush(stdout);
 }
 
@@ -191,21 +205,20 @@ void report(const NamedSurface& surface, const char* method, double parameter, T
 
 int main(int argc, char** argv) {
   const std::string root = argc > 1 ? argv[1] : ".";
-  std::printf("surface,method,parameter,triangles,vertices,max_error_mm,max_parametric_error_mm,"
-              "tessellate_us,layout_build_us\n");
+  std::printf(
+      "surface,method,parameter,triangles,vertices,max_error_mm,max_parametric_error_mm,"
+      "tessellate_us,layout_build_us\n");
   for (const NamedSurface& surface : {capsule(), body(), skin(root)}) {
     for (int level : {1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 40, 48, 64}) {
       if (surface.name == "skin" && level > 32) break;  // ~1/2 M triangles: enough, and slow to measure
-      report(surface, "uniform", level, [&](Tessellator& t) {
-        t.tessellateUniform(surface.patches, surface.topology, level);
-      });
+      report(surface, "uniform", level,
+             [&](Tessellator& t) { t.tessellateUniform(surface.patches, surface.topology, level); });
     }
     // Down to where the finest patches reach Tessellator::kMaxLevel (the uniform sweep's end).
     for (double tolerance_mm : {10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05}) {
       if (surface.name == "skin" && tolerance_mm < 0.1) break;
-      report(surface, "adaptive", tolerance_mm, [&](Tessellator& t) {
-        t.tessellateToError(surface.patches, surface.topology, 1e-3 * tolerance_mm);
-      });
+      report(surface, "adaptive", tolerance_mm,
+             [&](Tessellator& t) { t.tessellateToError(surface.patches, surface.topology, 1e-3 * tolerance_mm); });
     }
   }
   return 0;

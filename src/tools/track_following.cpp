@@ -28,9 +28,9 @@ namespace {
 
 using namespace dressed_human;
 
-constexpr double kTick = 1.0 / 30.0;        // s: the crowd publisher's default rate
-constexpr double kMinTrackSeconds = 1.0;     // tracks at least this long must get a human
-constexpr double kWalkingSpeed = 0.5;        // m/s: heading judged only above this
+constexpr double kTick = 1.0 / 30.0;      // s: the crowd publisher's default rate
+constexpr double kMinTrackSeconds = 1.0;  // tracks at least this long must get a human
+constexpr double kWalkingSpeed = 0.5;     // m/s: heading judged only above this
 // s each side: the recording's direction of travel over a whole stride, not the head's sway
 // from step to step (PeTrack tracks a head).
 constexpr double kTravelWindow = 0.5;
@@ -52,7 +52,8 @@ struct Recorded {
 
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return NAN;
-  const std::size_t at = std::min(values.size() - 1, static_cast<std::size_t>(fraction * static_cast<double>(values.size())));
+  const std::size_t at =
+      std::min(values.size() - 1, static_cast<std::size_t>(fraction * static_cast<double>(values.size())));
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at), values.end());
   return values[at];
 }
@@ -66,12 +67,14 @@ void follow(const Scene& scene, const std::string& file, const std::map<std::str
             double smoothing) {
   TrackedCrowdSettings settings;
   settings.track.smoothing = smoothing;
-  TrackedCrowd crowd([&](const std::string&, const WalkerSettings& walker) {
-                       return std::make_unique<Walker>(scene.skeleton, BodyShape(), scene.gait, walker);
-                     },
-                     settings);
+  TrackedCrowd crowd(
+      [&](const std::string&, const WalkerSettings& walker) {
+        return std::make_unique<Walker>(scene.skeleton, BodyShape(), scene.gait, walker);
+      },
+      settings);
   double start = 1e300, end = -1e300;
-  for (const auto& [id, person] : people) start = std::min(start, person.times.front()), end = std::max(end, person.times.back());
+  for (const auto& [id, person] : people)
+    start = std::min(start, person.times.front()), end = std::max(end, person.times.back());
 
   std::map<std::string, StanceSlideMeter> ground;
   std::map<std::string, double> first_seen, last_seen, drawn_at, left_at;
@@ -115,7 +118,8 @@ void follow(const Scene& scene, const std::string& file, const std::map<std::str
       if (person.covers(render - kTravelWindow) && person.covers(render + kTravelWindow) &&
           travel.norm() > kWalkingSpeed * 2.0 * kTravelWindow) {
         heading_errors.push_back(
-            std::abs(std::remainder(human.walker->heading() - std::atan2(travel.y(), travel.x()), 2.0 * M_PI)) * 180.0 / M_PI);
+            std::abs(std::remainder(human.walker->heading() - std::atan2(travel.y(), travel.x()), 2.0 * M_PI)) * 180.0 /
+            M_PI);
       }
     }
     for (const auto& [id, seen] : last_seen) {
@@ -172,9 +176,10 @@ int main(int argc, char** argv) {
     const Skeleton skeleton = Skeleton::fromUrdfFile(source + "/urdf/human.urdf");
     const SpeedGait gait(loadMotionFile(source + "/config/motions/walk.yaml"),
                          loadNormativeGaitFile(source + "/config/gait/speed_gaits.yaml"), skeleton, BodyShape());
-    std::printf("file,rate_hz,smoothing_s,delay_s,tracks_1s,tracks_1s_drawn,latest_appearance_s,latest_leave_s,"
-                "root_median_m,root_p95_m,heading_p95_deg,slide_median_mm,slide_p95_mm,lowest_sole_mm,most_humans,"
-                "cpu_ms_per_human_tick\n");
+    std::printf(
+        "file,rate_hz,smoothing_s,delay_s,tracks_1s,tracks_1s_drawn,latest_appearance_s,latest_leave_s,"
+        "root_median_m,root_p95_m,heading_p95_deg,slide_median_mm,slide_p95_mm,lowest_sole_mm,most_humans,"
+        "cpu_ms_per_human_tick\n");
     for (const std::string& path : files) {
       const PedestrianTrajectories trajectories = loadPedestrianTrajectories(path);
       std::map<std::string, Recorded> people;

@@ -18,12 +18,13 @@ namespace {
 
 using namespace dressed_human;
 
-constexpr double kStep = 0.01;      // s, the node's default 100 Hz
-constexpr double kSettle = 3.0;     // s before measuring
-constexpr double kMeasure = 10.0;   // s measured
+constexpr double kStep = 0.01;     // s, the node's default 100 Hz
+constexpr double kSettle = 3.0;    // s before measuring
+constexpr double kMeasure = 10.0;  // s measured
 
 // Planted: a Walker driven straight at `speed`.
-double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double speed, double& travelled_speed, double& lowest) {
+double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double speed, double& travelled_speed,
+                    double& lowest) {
   Walker walker(skeleton, BodyShape(), gait);
   walker.place({0.0, 0.0}, 0.0);
   walker.drive(speed, 0.0);
@@ -72,13 +73,14 @@ int run(const std::string& source, const std::string& output) {
           << 60.0 * knot.normative_cadence << '\n';
   }
   std::ofstream slides(output + "/walk_slide.csv");
-  slides << "speed_m_s,planted_worst_slide_mm,playback_worst_slide_mm,planted_travel_m_s,planted_lowest_sole_mm,playback_lowest_sole_mm\n";
+  slides << "speed_m_s,planted_worst_slide_mm,playback_worst_slide_mm,planted_travel_m_s,planted_lowest_sole_mm,"
+            "playback_lowest_sole_mm\n";
   for (double speed = 0.6; speed <= 1.81; speed += 0.2) {
     double travelled = 0.0, planted_lowest = 0.0, playback_lowest = 0.0;
     const double planted = plantedSlide(skeleton, gait, speed, travelled, planted_lowest);
     const double playback = playbackSlide(skeleton, walk, speed, playback_lowest);
-    slides << speed << ',' << planted * 1e3 << ',' << playback * 1e3 << ',' << travelled << ',' << planted_lowest * 1e3 << ','
-           << playback_lowest * 1e3 << '\n';
+    slides << speed << ',' << planted * 1e3 << ',' << playback * 1e3 << ',' << travelled << ',' << planted_lowest * 1e3
+           << ',' << playback_lowest * 1e3 << '\n';
   }
   std::cout << "wrote " << output << "/walk_speed_trend.csv and walk_slide.csv\n";
   return 0;

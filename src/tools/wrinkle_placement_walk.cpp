@@ -29,10 +29,11 @@ namespace {
 
 using namespace dressed_human;
 
-
 double bendDegrees(const SkeletonPose& pose, const Skeleton& skeleton, const char* upper, const char* lower) {
-  const Eigen::Vector3d a = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(upper))].rotation * Eigen::Vector3d::UnitZ();
-  const Eigen::Vector3d b = pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(lower))].rotation * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d a =
+      pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(upper))].rotation * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d b =
+      pose.bone_in_world[static_cast<std::size_t>(skeleton.findBone(lower))].rotation * Eigen::Vector3d::UnitZ();
   return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
@@ -45,9 +46,9 @@ std::pair<double, double> shownStrength(const WrinklePlacement& placement, const
   for (const SurfacePoint& at : region.samples) {
     const PatchDerivatives rest = placement.restPatches()[at.patch].derivatives(at.u, at.v);
     const PatchDerivatives now = posed[at.patch].derivatives(at.u, at.v);
-    const double strength =
-        vertexStretchAt(inverseRestMetric(rest.d_du, rest.d_dv), now.d_du.cast<float>(), now.d_dv.cast<float>(), constants)
-            .strength;
+    const double strength = vertexStretchAt(inverseRestMetric(rest.d_du, rest.d_dv), now.d_du.cast<float>(),
+                                            now.d_dv.cast<float>(), constants)
+                                .strength;
     sum += strength;
     largest = std::max(largest, strength);
   }
@@ -63,7 +64,8 @@ int run(const std::string& source, const std::string& directory, int count) {
   std::vector<Garment> garments;
   std::vector<WrinklePlacement> placements;
   for (const std::string& name : names) {
-    garments.emplace_back(loadGarmentFile(source + "/config/garments/" + name + ".yaml", skeleton), skeleton, body.shape);
+    garments.emplace_back(loadGarmentFile(source + "/config/garments/" + name + ".yaml", skeleton), skeleton,
+                          body.shape);
     placements.emplace_back(garments.back(), skeleton, body.shape);
   }
 
@@ -116,8 +118,10 @@ int run(const std::string& source, const std::string& directory, int count) {
   }
 
   // The pose wrinkle map's tile behind the left knee at three poses.
-  const std::size_t most = static_cast<std::size_t>(std::min_element(knee_alpha.begin(), knee_alpha.end()) - knee_alpha.begin());
-  const std::size_t least = static_cast<std::size_t>(std::max_element(knee_alpha.begin(), knee_alpha.end()) - knee_alpha.begin());
+  const std::size_t most =
+      static_cast<std::size_t>(std::min_element(knee_alpha.begin(), knee_alpha.end()) - knee_alpha.begin());
+  const std::size_t least =
+      static_cast<std::size_t>(std::max_element(knee_alpha.begin(), knee_alpha.end()) - knee_alpha.begin());
   std::vector<std::size_t> order(knee_alpha.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return knee_alpha[a] < knee_alpha[b]; });
@@ -127,7 +131,8 @@ int run(const std::string& source, const std::string& directory, int count) {
   std::ofstream tiles(directory + "/wrinkle_walk_tiles.csv");
   tiles << "name,pose,alpha,chain,patch,max_height_mm\n";
   constexpr int kTile = 256;
-  for (const auto& [name, k] : {std::make_pair("least", least), std::make_pair("middle", middle), std::make_pair("most", most)}) {
+  for (const auto& [name, k] :
+       {std::make_pair("least", least), std::make_pair("middle", middle), std::make_pair("most", most)}) {
     garments[0].pose(poses[k]);
     const PoseWrinkleMap map = makePoseWrinkleMap(placements[0], garments[0].patches(), poses[k], kTile);
     ReliefMap tile(kTile, kTile);
@@ -140,11 +145,13 @@ int run(const std::string& source, const std::string& directory, int count) {
         tile.slope_v[to] = map.atlas.slope_v[from];
       }
     }
-    writePng8(directory + "/wrinkle_walk_tile_" + name + ".png", kTile, kTile, 1, shadeReliefMap(tile, Eigen::Vector3d(-0.45, -0.55, 1.0)));
+    writePng8(directory + "/wrinkle_walk_tile_" + name + ".png", kTile, kTile, 1,
+              shadeReliefMap(tile, Eigen::Vector3d(-0.45, -0.55, 1.0)));
     tiles << name << "," << k << "," << knee_alpha[k] << "," << map.layouts[patch].chain << "," << patch << ","
           << tile.maximumHeight() * 1000.0 << "\n";
   }
-  std::cout << "wrote " << directory << "/wrinkle_walk.csv, wrinkle_walk_strength.csv, wrinkle_walk_tiles.csv and 3 tiles\n";
+  std::cout << "wrote " << directory
+            << "/wrinkle_walk.csv, wrinkle_walk_strength.csv, wrinkle_walk_tiles.csv and 3 tiles\n";
   return 0;
 }
 

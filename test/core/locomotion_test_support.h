@@ -13,7 +13,9 @@
 namespace dressed_human {
 namespace locomotion_test {
 
-inline std::string sourcePath(const std::string& relative) { return std::string(DRESSED_HUMAN_SOURCE_DIR) + "/" + relative; }
+inline std::string sourcePath(const std::string& relative) {
+  return std::string(DRESSED_HUMAN_SOURCE_DIR) + "/" + relative;
+}
 
 inline const Skeleton& skeleton() {
   static const Skeleton s = Skeleton::fromUrdfFile(sourcePath("urdf/human.urdf"));

@@ -33,15 +33,13 @@ Eigen::Vector3d deCasteljau(const BezierPatch::ControlPoints& points, double u, 
   std::array<Eigen::Vector3d, 4> column;
   for (int j = 0; j < 4; ++j) {
     column[j] = deCasteljau({points[BezierPatch::index(0, j)], points[BezierPatch::index(1, j)],
-                              points[BezierPatch::index(2, j)], points[BezierPatch::index(3, j)]},
-                             u);
+                             points[BezierPatch::index(2, j)], points[BezierPatch::index(3, j)]},
+                            u);
   }
   return deCasteljau(column, v);
 }
 
-std::vector<double> parametersWithEnds() {
-  return {0.0, 1e-9, 0.013, 0.2, 0.25, 0.5, 0.61, 0.77, 0.999, 1.0};
-}
+std::vector<double> parametersWithEnds() { return {0.0, 1e-9, 0.013, 0.2, 0.25, 0.5, 0.61, 0.77, 0.999, 1.0}; }
 
 TEST(Bernstein, PartitionOfUnityAndDerivativesSumToZero) {
   for (double t : parametersWithEnds()) {
@@ -105,14 +103,10 @@ TEST(BezierPatch, DerivativesMatchCentralFiniteDifferences) {
         EXPECT_LT((d.d_du - fd_u).norm(), 1e-8);
         EXPECT_LT((d.d_dv - fd_v).norm(), 1e-8);
         // Second partials as differences of the (already checked) first partials.
-        const Eigen::Vector3d fd_uu =
-            (patch.derivatives(u + h, v).d_du - patch.derivatives(u - h, v).d_du) / (2 * h);
-        const Eigen::Vector3d fd_vv =
-            (patch.derivatives(u, v + h).d_dv - patch.derivatives(u, v - h).d_dv) / (2 * h);
-        const Eigen::Vector3d fd_uv =
-            (patch.derivatives(u, v + h).d_du - patch.derivatives(u, v - h).d_du) / (2 * h);
-        const Eigen::Vector3d fd_vu =
-            (patch.derivatives(u + h, v).d_dv - patch.derivatives(u - h, v).d_dv) / (2 * h);
+        const Eigen::Vector3d fd_uu = (patch.derivatives(u + h, v).d_du - patch.derivatives(u - h, v).d_du) / (2 * h);
+        const Eigen::Vector3d fd_vv = (patch.derivatives(u, v + h).d_dv - patch.derivatives(u, v - h).d_dv) / (2 * h);
+        const Eigen::Vector3d fd_uv = (patch.derivatives(u, v + h).d_du - patch.derivatives(u, v - h).d_du) / (2 * h);
+        const Eigen::Vector3d fd_vu = (patch.derivatives(u + h, v).d_dv - patch.derivatives(u - h, v).d_dv) / (2 * h);
         EXPECT_LT((d.d2_du2 - fd_uu).norm(), 1e-7);
         EXPECT_LT((d.d2_dv2 - fd_vv).norm(), 1e-7);
         EXPECT_LT((d.d2_dudv - fd_uv).norm(), 1e-7);
@@ -134,8 +128,7 @@ TEST(BezierPatch, GridEvaluationMatchesPointEvaluation) {
   const BernsteinTable v_table = BernsteinTable::uniform(6);
   const std::size_t count = u_table.size() * v_table.size();
   std::vector<Eigen::Vector3f> positions(count), normals(count), tangents_u(count), tangents_v(count);
-  patch.evaluateGrid(u_table, v_table,
-                      {positions.data(), normals.data(), tangents_u.data(), tangents_v.data()});
+  patch.evaluateGrid(u_table, v_table, {positions.data(), normals.data(), tangents_u.data(), tangents_v.data()});
   for (std::size_t b = 0; b < v_table.size(); ++b) {
     for (std::size_t a = 0; a < u_table.size(); ++a) {
       const std::size_t k = b * u_table.size() + a;
@@ -144,8 +137,8 @@ TEST(BezierPatch, GridEvaluationMatchesPointEvaluation) {
       EXPECT_LT((normals[k].cast<double>() - s.normal).norm(), 1e-6);
       EXPECT_LT((tangents_u[k].cast<double>() - s.d_du).norm(), 1e-5);
       EXPECT_LT((tangents_v[k].cast<double>() - s.d_dv).norm(), 1e-5);
-      const PatchSample from_weights = patch.sample(u_table.weights(a), u_table.parameter(a),
-                                                    v_table.weights(b), v_table.parameter(b));
+      const PatchSample from_weights =
+          patch.sample(u_table.weights(a), u_table.parameter(a), v_table.weights(b), v_table.parameter(b));
       EXPECT_LT((from_weights.position - s.position).norm(), 1e-15);
     }
   }
@@ -205,10 +198,22 @@ TEST(BezierPatch, CollapsedEdgeHasTheLimitNormalOnEveryEdge) {
         // On the pole and a little inside the patch, moving away from the pole.
         double u = t, v = t, inside_u = t, inside_v = t;
         const double step = 1e-7;
-        if (edge == "v0") { v = 0.0; inside_v = step; }
-        if (edge == "v1") { v = 1.0; inside_v = 1.0 - step; }
-        if (edge == "u0") { u = 0.0; inside_u = step; }
-        if (edge == "u1") { u = 1.0; inside_u = 1.0 - step; }
+        if (edge == "v0") {
+          v = 0.0;
+          inside_v = step;
+        }
+        if (edge == "v1") {
+          v = 1.0;
+          inside_v = 1.0 - step;
+        }
+        if (edge == "u0") {
+          u = 0.0;
+          inside_u = step;
+        }
+        if (edge == "u1") {
+          u = 1.0;
+          inside_u = 1.0 - step;
+        }
         const PatchDerivatives on_pole = patch.derivatives(u, v);
         ASSERT_LT((edge[0] == 'v' ? on_pole.d_du : on_pole.d_dv).norm(), 1e-14);
         const Eigen::Vector3d limit = patch.normal(u, v);

@@ -53,10 +53,9 @@ std::vector<std::pair<RigidTransform, JointAngles>> somePoses() {
 
 // The bones whose length a BVH of our skeleton carries (between two mapped joints, the feet, and
 // the widths of the hip bones and clavicles); head and hands take the limbs' mean.
-const std::vector<std::string> kMeasuredBones = {"waist",  "torso",      "neck",       "l_clavicle", "l_shoulder",
-                                                 "l_elbow", "r_clavicle", "r_shoulder", "r_elbow",    "l_pelvis",
-                                                 "l_hip",  "l_knee",     "l_ankle",    "r_pelvis",   "r_hip",
-                                                 "r_knee", "r_ankle"};
+const std::vector<std::string> kMeasuredBones = {
+    "waist",    "torso", "neck",   "l_clavicle", "l_shoulder", "l_elbow", "r_clavicle", "r_shoulder", "r_elbow",
+    "l_pelvis", "l_hip", "l_knee", "l_ankle",    "r_pelvis",   "r_hip",   "r_knee",     "r_ankle"};
 
 TEST(BodyProportions, OurSkeletonScaledByAKnownFactorIsRecoveredWithinOnePercent) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
@@ -87,7 +86,8 @@ std::string renamedBvh(std::string text, const std::vector<std::pair<std::string
       if (at != std::string::npos) text.replace(at, keyword.size() + cmu.size(), keyword + "@" + other);
     }
   }
-  for (std::size_t at = text.find('@'); at != std::string::npos; at = text.find('@', at)) text.replace(at, 1, name_space);
+  for (std::size_t at = text.find('@'); at != std::string::npos; at = text.find('@', at))
+    text.replace(at, 1, name_space);
   return text;
 }
 
@@ -96,25 +96,60 @@ TEST(BodyProportions, RigsNamedAsAnimationToolsNameThemAreRecognisedAndFitted) {
   BodyShape shape;
   for (Eigen::Vector3d& s : shape.scale) s.setConstant(1.1);
   const std::string ours = bvhOfOurSkeleton(skeleton, somePoses(), shape);
-  const std::vector<std::pair<std::string, std::string>> mixamo = {
-      {"Spine", "Spine2"}, {"LowerBack", "Spine"}, {"Neck1", "Neck"}, {"Hips", "Hips"}, {"Head", "Head"},
-      {"LeftArm", "LeftArm"}, {"LeftForeArm", "LeftForeArm"}, {"LeftHand", "LeftHand"}, {"RightArm", "RightArm"},
-      {"RightForeArm", "RightForeArm"}, {"RightHand", "RightHand"}, {"LeftUpLeg", "LeftUpLeg"}, {"LeftLeg", "LeftLeg"},
-      {"LeftFoot", "LeftFoot"}, {"RightUpLeg", "RightUpLeg"}, {"RightLeg", "RightLeg"}, {"RightFoot", "RightFoot"}};
-  const std::vector<std::pair<std::string, std::string>> unreal = {
-      {"Spine", "spine_03"}, {"LowerBack", "spine_01"}, {"Neck1", "neck_01"}, {"Hips", "pelvis"}, {"Head", "head"},
-      {"LeftArm", "upperarm_l"}, {"LeftForeArm", "lowerarm_l"}, {"LeftHand", "hand_l"}, {"RightArm", "upperarm_r"},
-      {"RightForeArm", "lowerarm_r"}, {"RightHand", "hand_r"}, {"LeftUpLeg", "thigh_l"}, {"LeftLeg", "calf_l"},
-      {"LeftFoot", "foot_l"}, {"RightUpLeg", "thigh_r"}, {"RightLeg", "calf_r"}, {"RightFoot", "foot_r"}};
-  const std::vector<std::pair<std::string, std::string>> bandai = {
-      {"Spine", "Chest"}, {"LowerBack", "Spine"}, {"Neck1", "Neck"}, {"Hips", "Hips"}, {"Head", "Head"},
-      {"LeftArm", "UpperArm_L"}, {"LeftForeArm", "LowerArm_L"}, {"LeftHand", "Hand_L"}, {"RightArm", "UpperArm_R"},
-      {"RightForeArm", "LowerArm_R"}, {"RightHand", "Hand_R"}, {"LeftUpLeg", "UpperLeg_L"}, {"LeftLeg", "LowerLeg_L"},
-      {"LeftFoot", "Foot_L"}, {"RightUpLeg", "UpperLeg_R"}, {"RightLeg", "LowerLeg_R"}, {"RightFoot", "Foot_R"}};
-  for (const auto& [rig, names, name_space] :
-       {std::make_tuple("HumanIK / Mixamo", mixamo, std::string("mixamorig:")),
-        std::make_tuple("Unreal mannequin", unreal, std::string()),
-        std::make_tuple("Unity humanoid / Bandai", bandai, std::string())}) {
+  const std::vector<std::pair<std::string, std::string>> mixamo = {{"Spine", "Spine2"},
+                                                                   {"LowerBack", "Spine"},
+                                                                   {"Neck1", "Neck"},
+                                                                   {"Hips", "Hips"},
+                                                                   {"Head", "Head"},
+                                                                   {"LeftArm", "LeftArm"},
+                                                                   {"LeftForeArm", "LeftForeArm"},
+                                                                   {"LeftHand", "LeftHand"},
+                                                                   {"RightArm", "RightArm"},
+                                                                   {"RightForeArm", "RightForeArm"},
+                                                                   {"RightHand", "RightHand"},
+                                                                   {"LeftUpLeg", "LeftUpLeg"},
+                                                                   {"LeftLeg", "LeftLeg"},
+                                                                   {"LeftFoot", "LeftFoot"},
+                                                                   {"RightUpLeg", "RightUpLeg"},
+                                                                   {"RightLeg", "RightLeg"},
+                                                                   {"RightFoot", "RightFoot"}};
+  const std::vector<std::pair<std::string, std::string>> unreal = {{"Spine", "spine_03"},
+                                                                   {"LowerBack", "spine_01"},
+                                                                   {"Neck1", "neck_01"},
+                                                                   {"Hips", "pelvis"},
+                                                                   {"Head", "head"},
+                                                                   {"LeftArm", "upperarm_l"},
+                                                                   {"LeftForeArm", "lowerarm_l"},
+                                                                   {"LeftHand", "hand_l"},
+                                                                   {"RightArm", "upperarm_r"},
+                                                                   {"RightForeArm", "lowerarm_r"},
+                                                                   {"RightHand", "hand_r"},
+                                                                   {"LeftUpLeg", "thigh_l"},
+                                                                   {"LeftLeg", "calf_l"},
+                                                                   {"LeftFoot", "foot_l"},
+                                                                   {"RightUpLeg", "thigh_r"},
+                                                                   {"RightLeg", "calf_r"},
+                                                                   {"RightFoot", "foot_r"}};
+  const std::vector<std::pair<std::string, std::string>> bandai = {{"Spine", "Chest"},
+                                                                   {"LowerBack", "Spine"},
+                                                                   {"Neck1", "Neck"},
+                                                                   {"Hips", "Hips"},
+                                                                   {"Head", "Head"},
+                                                                   {"LeftArm", "UpperArm_L"},
+                                                                   {"LeftForeArm", "LowerArm_L"},
+                                                                   {"LeftHand", "Hand_L"},
+                                                                   {"RightArm", "UpperArm_R"},
+                                                                   {"RightForeArm", "LowerArm_R"},
+                                                                   {"RightHand", "Hand_R"},
+                                                                   {"LeftUpLeg", "UpperLeg_L"},
+                                                                   {"LeftLeg", "LowerLeg_L"},
+                                                                   {"LeftFoot", "Foot_L"},
+                                                                   {"RightUpLeg", "UpperLeg_R"},
+                                                                   {"RightLeg", "LowerLeg_R"},
+                                                                   {"RightFoot", "Foot_R"}};
+  for (const auto& [rig, names, name_space] : {std::make_tuple("HumanIK / Mixamo", mixamo, std::string("mixamorig:")),
+                                               std::make_tuple("Unreal mannequin", unreal, std::string()),
+                                               std::make_tuple("Unity humanoid / Bandai", bandai, std::string())}) {
     const BvhClip clip = parseBvh(renamedBvh(ours, names, name_space), "rig.bvh");
     const BvhJointMap map = chooseBvhJointMap(clip, "rig.bvh");
     EXPECT_EQ(map.name, rig);
@@ -130,7 +165,8 @@ TEST(BodyProportions, RigsNamedAsAnimationToolsNameThemAreRecognisedAndFitted) {
       body.rotation = motion.root[f].rotation;
       kinematics.compute(body, motion.angles[f], pose);
       for (std::size_t j = 0; j < kJointCount; ++j) {
-        const Eigen::Vector3d ours_at = pose.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation;
+        const Eigen::Vector3d ours_at =
+            pose.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation;
         EXPECT_LT((ours_at - motion.reference_joint_positions[f][j]).norm(), 0.005) << rig << " joint " << j;
       }
     }
@@ -141,8 +177,9 @@ TEST(BodyProportions, EachBoneLengthIsRecoveredOnItsOwn) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   BodyShape shape;
   const std::vector<std::pair<std::string, double>> lengths = {
-      {"waist", 1.15}, {"torso", 0.9},  {"neck", 1.2},    {"l_clavicle", 0.85}, {"r_clavicle", 0.85}, {"l_shoulder", 1.05},
-      {"r_elbow", 0.95}, {"l_pelvis", 1.2}, {"r_pelvis", 1.2}, {"l_hip", 1.1},     {"r_knee", 0.92},     {"l_ankle", 1.08}};
+      {"waist", 1.15},      {"torso", 0.9},       {"neck", 1.2},     {"l_clavicle", 0.85},
+      {"r_clavicle", 0.85}, {"l_shoulder", 1.05}, {"r_elbow", 0.95}, {"l_pelvis", 1.2},
+      {"r_pelvis", 1.2},    {"l_hip", 1.1},       {"r_knee", 0.92},  {"l_ankle", 1.08}};
   for (const auto& [bone, c] : lengths) shape.scale[boneIndex(skeleton, bone)].z() = c;
   // And a layout unlike ours: hip joints 3 cm in front of and 1.5 cm above where ours are, the
   // shoulders 2 cm behind and below.
@@ -179,20 +216,22 @@ struct FootfallRise {
 };
 
 FootfallRise floorRiseFromFootfalls(const BvhClip& clip, const BvhJointMap& map, double metres_per_unit) {
-  constexpr double kPlantedSpeed = 0.3;     // m/s, horizontal
-  constexpr double kShortestStance = 0.2;   // s
+  constexpr double kPlantedSpeed = 0.3;    // m/s, horizontal
+  constexpr double kShortestStance = 0.2;  // s
   const std::size_t frames = clip.frames.size();
   std::vector<BvhPose> poses(frames);
   for (std::size_t f = 0; f < frames; ++f) poses[f] = bvhForwardKinematics(clip, f);
   std::vector<std::vector<std::pair<double, double>>> footfalls(2);  // per foot: time, height
   for (std::size_t side = 0; side < 2; ++side) {
-    const auto ankle = static_cast<std::size_t>(clip.findJoint(map.joints[side == 0 ? human_joint::kLeftAnkle : human_joint::kRightAnkle]));
+    const auto ankle = static_cast<std::size_t>(
+        clip.findJoint(map.joints[side == 0 ? human_joint::kLeftAnkle : human_joint::kRightAnkle]));
     const std::vector<std::size_t> foot = bvhSubtree(clip, ankle);
     const auto height = [&](std::size_t f) {  // BVH is Y-up
       double lowest = std::numeric_limits<double>::infinity();
       for (const std::size_t j : foot) {
         lowest = std::min(lowest, poses[f].position[j].y());
-        for (const Eigen::Vector3d& end : clip.joints[j].end_sites) lowest = std::min(lowest, (poses[f].position[j] + poses[f].rotation[j] * end).y());
+        for (const Eigen::Vector3d& end : clip.joints[j].end_sites)
+          lowest = std::min(lowest, (poses[f].position[j] + poses[f].rotation[j] * end).y());
       }
       return metres_per_unit * lowest;
     };
@@ -200,7 +239,9 @@ FootfallRise floorRiseFromFootfalls(const BvhClip& clip, const BvhJointMap& map,
     double stance_start = 0.0;
     for (std::size_t f = 1; f < frames; ++f) {
       Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-      if (f + 1 < frames) velocity = metres_per_unit * (poses[f + 1].position[ankle] - poses[f - 1].position[ankle]) / (2.0 * clip.frame_time);
+      if (f + 1 < frames)
+        velocity =
+            metres_per_unit * (poses[f + 1].position[ankle] - poses[f - 1].position[ankle]) / (2.0 * clip.frame_time);
       const bool planted = f + 1 < frames && std::hypot(velocity.x(), velocity.z()) < kPlantedSpeed;
       if (planted) {
         if (stance.empty()) stance_start = static_cast<double>(f) * clip.frame_time;
@@ -254,7 +295,8 @@ TEST(BodyProportions, ARetargetOnTheFittedBodyPutsEveryJointWhereTheCaptureHasIt
   const BvhClip clip = parseBvh(bvhOfOurSkeleton(skeleton, somePoses(), shape), "person.bvh");
   RetargetOptions options;
   options.fit_body = true;
-  const SampledMotion motion = retargetBvh(clip, chooseBvhJointMap(clip, "person.bvh"), skeleton, "person.bvh", options);
+  const SampledMotion motion =
+      retargetBvh(clip, chooseBvhJointMap(clip, "person.bvh"), skeleton, "person.bvh", options);
   ASSERT_TRUE(motion.body_fitted);
   EXPECT_LT(motion.root_offset.norm(), 1e-6);  // the BVH root is our body frame
   const ForwardKinematics kinematics(skeleton, motion.proportions.shape);
@@ -301,8 +343,9 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
   const FootfallRise footfall_rise = floorRiseFromFootfalls(clip, map, fitted_body.units.metres_per_unit);
   EXPECT_GE(footfall_rise.footfalls, 5u);
   EXPECT_NEAR(fitted_body.floor_rise_per_second, footfall_rise.per_second, 2.0 * footfall_rise.standard_error);
-  std::printf("floor rise: levelFloor %.4f m/s, footfalls %.4f +- %.4f m/s (%zu footfalls)\n", fitted_body.floor_rise_per_second,
-              footfall_rise.per_second, footfall_rise.standard_error, footfall_rise.footfalls);
+  std::printf("floor rise: levelFloor %.4f m/s, footfalls %.4f +- %.4f m/s (%zu footfalls)\n",
+              fitted_body.floor_rise_per_second, footfall_rise.per_second, footfall_rise.standard_error,
+              footfall_rise.footfalls);
   // The angles are those of the fit on our default body (the shape moves no rotation; the period,
   // estimated from all series with the root among them, differs in the 7th digit).
   EXPECT_NEAR(accuracy.max_rms_degrees, default_accuracy.max_rms_degrees, 1e-3);
@@ -328,8 +371,9 @@ TEST(CaptureUnits, NamesNumbersAndImpossibleStaturesAreSaid) {
   } catch (const MotionError& error) {
     EXPECT_NE(std::string(error.what()).find("--units"), std::string::npos) << error.what();
   }
-  EXPECT_EQ(detectBvhUnits(parseBvh(bvhOfOurSkeleton(skeleton, somePoses(), BodyShape(), 1000.0), "mm.bvh"), "mm.bvh").name,
-            "mm");
+  EXPECT_EQ(
+      detectBvhUnits(parseBvh(bvhOfOurSkeleton(skeleton, somePoses(), BodyShape(), 1000.0), "mm.bvh"), "mm.bvh").name,
+      "mm");
 }
 
 TEST(BodyProportions, DegenerateRestPosesAreRefusedByName) {
@@ -409,7 +453,8 @@ TEST(UrdfBodyShape, AShapedUrdfReadsBackAsTheSameSkeletonAndShape) {
   ASSERT_TRUE(model);
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     if (plain.bone(b).joint >= 0) continue;
-    const urdf::Vector3& p = model->getLink(plain.bone(b).name)->parent_joint->parent_to_joint_origin_transform.position;
+    const urdf::Vector3& p =
+        model->getLink(plain.bone(b).name)->parent_joint->parent_to_joint_origin_transform.position;
     EXPECT_LT((fixedBoneAsInUrdf(shaped, b).translation - Eigen::Vector3d(p.x, p.y, p.z)).norm(), 1e-8)
         << plain.bone(b).name;
   }
@@ -437,7 +482,8 @@ TEST(UrdfBodyShape, ShapesDoNotStackAndBadRecordsAreNamed) {
            {"<bone name=\"tail\" a=\"1\" b=\"1\" c=\"1\"/>", "not a <bone> of the human layout"},
            {"<bone name=\"waist\" a=\"1\" b=\"0\" c=\"1\"/>", "b must be a positive number"},
            {"<bone name=\"waist\" a=\"1\" c=\"1\"/>", "b must be a positive number"},
-           {"<bone name=\"neck\" a=\"1\" b=\"1\" c=\"1\"/><bone name=\"neck\" a=\"1\" b=\"1\" c=\"1\"/>", "appears twice"},
+           {"<bone name=\"neck\" a=\"1\" b=\"1\" c=\"1\"/><bone name=\"neck\" a=\"1\" b=\"1\" c=\"1\"/>",
+            "appears twice"},
            {"<bone name=\"neck\" a=\"1\" b=\"1\" c=\"1\" offset=\"0 0 9\"/>", "offset must be three numbers within"},
            {"<bone name=\"neck\" a=\"1\" b=\"1\" c=\"1\" offset=\"0 0\"/>", "offset must be three numbers within"}}) {
     try {
@@ -450,8 +496,8 @@ TEST(UrdfBodyShape, ShapesDoNotStackAndBadRecordsAreNamed) {
 }
 
 TEST(MotionFileBodyShape, AFittedBodyIsWrittenAndReadBack) {
-  Motion motion = parseMotionYaml(readWholeFileOrThrow<MotionError>(kSource + "/config/motions/walk.yaml", "walk"),
-                                  "walk.yaml");
+  Motion motion =
+      parseMotionYaml(readWholeFileOrThrow<MotionError>(kSource + "/config/motions/walk.yaml", "walk"), "walk.yaml");
   EXPECT_FALSE(motion.body_shape);  // the default motion keeps the default body
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   motion.body_shape = someShape(skeleton);

@@ -23,7 +23,8 @@ TEST(BodyShapeGroups, GroupsMultiplyTheShapeOfTheirBonesInOrder) {
   EXPECT_EQ(shape.scale[boneIndex(skeleton, "l_knee")], Eigen::Vector3d(2.0, 1.5, 1.0));
   EXPECT_EQ(shape.scale[boneIndex(skeleton, "r_hip")], Eigen::Vector3d(2.0, 1.5, 0.5));
   EXPECT_EQ(shape.scale[boneIndex(skeleton, "head")], Eigen::Vector3d(2.0, 1.0, 1.0));
-  EXPECT_EQ(scaleBodyShapeGroups(base, skeleton, {}).scale[boneIndex(skeleton, "l_knee")], Eigen::Vector3d(1.0, 1.0, 2.0));
+  EXPECT_EQ(scaleBodyShapeGroups(base, skeleton, {}).scale[boneIndex(skeleton, "l_knee")],
+            Eigen::Vector3d(1.0, 1.0, 2.0));
 }
 
 // The body file's shape on a fitted person's (the display's composition): scales multiply bone
@@ -62,7 +63,8 @@ TEST(BodyShapeGroups, AFactorOutOfRangeNamesItsEntryAndAxis) {
 
 TEST(BodyShapeGroups, UnshapedJointTransformsComposeToTheShapedPose) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
-  const BodyShape shape = scaleBodyShapeGroups(BodyShape(), skeleton, {{"legs", {1.2, 0.9, 1.3}}, {"trunk", {1.0, 1.0, 0.8}}});
+  const BodyShape shape =
+      scaleBodyShapeGroups(BodyShape(), skeleton, {{"legs", {1.2, 0.9, 1.3}}, {"trunk", {1.0, 1.0, 0.8}}});
   JointAngles angles{};
   for (std::size_t a = 0; a < angles.size(); ++a) angles[a] = 0.05 * static_cast<double>(a % 7) - 0.1;
   RigidTransform root;

@@ -141,8 +141,12 @@ TEST(BucklingPattern, FootprintHeightAtNamedPointsAndContinuity) {
     EXPECT_LE(largest_jump, steepest * step * 1.0001) << patternName(kind);
     // Slopes are the planes' gradients: match central differences inside a face.
     const ReliefSample inside = pattern.sampleFootprint(0.5, -0.4 * y_edge);
-    EXPECT_NEAR(inside.slope.x(), (pattern.heightAt(0.5 + 1e-6, -0.4 * y_edge) - pattern.heightAt(0.5 - 1e-6, -0.4 * y_edge)) / 2e-6, 1e-6);
-    EXPECT_NEAR(inside.slope.y(), (pattern.heightAt(0.5, -0.4 * y_edge + 1e-6) - pattern.heightAt(0.5, -0.4 * y_edge - 1e-6)) / 2e-6, 1e-6);
+    EXPECT_NEAR(inside.slope.x(),
+                (pattern.heightAt(0.5 + 1e-6, -0.4 * y_edge) - pattern.heightAt(0.5 - 1e-6, -0.4 * y_edge)) / 2e-6,
+                1e-6);
+    EXPECT_NEAR(inside.slope.y(),
+                (pattern.heightAt(0.5, -0.4 * y_edge + 1e-6) - pattern.heightAt(0.5, -0.4 * y_edge - 1e-6)) / 2e-6,
+                1e-6);
   }
 }
 
@@ -164,7 +168,8 @@ TEST(BucklingChain, JointsBendBy2AtanWOverH2AndSharePoints) {
               << kinds << " joint " << joint << " P" << a;
         }
         const double measured = std::acos(std::clamp(
-            (left_pose.linear() * Eigen::Vector3d::UnitZ()).dot(right_pose.linear() * Eigen::Vector3d::UnitZ()), -1.0, 1.0));
+            (left_pose.linear() * Eigen::Vector3d::UnitZ()).dot(right_pose.linear() * Eigen::Vector3d::UnitZ()), -1.0,
+            1.0));
         const BucklingSolution& solution = left.solution();
         const double expected = left.splitRight() ? 2.0 * std::atan(solution.w / solution.h2) : 0.0;
         EXPECT_NEAR(measured, expected, 1e-9) << kinds << " joint " << joint;

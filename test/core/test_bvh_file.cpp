@@ -13,9 +13,11 @@ namespace {
 const std::string kSource = DRESSED_HUMAN_SOURCE_DIR;
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
-std::string tinyBvh(const std::string& leg_channels = "CHANNELS 3 Yrotation Xrotation Zrotation",
-                    const std::string& frames = "Frames: 2\nFrame Time: 0.01\n0 1 2 3 4 5 10 20 30\n1 2 3 4 5 6 7 8 9\n") {
-  return "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation\n"
+std::string tinyBvh(
+    const std::string& leg_channels = "CHANNELS 3 Yrotation Xrotation Zrotation",
+    const std::string& frames = "Frames: 2\nFrame Time: 0.01\n0 1 2 3 4 5 10 20 30\n1 2 3 4 5 6 7 8 9\n") {
+  return "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation "
+         "Xrotation\n"
          " JOINT Leg\n {\n  OFFSET 1 -2 0\n  " +
          leg_channels + "\n  End Site\n  {\n   OFFSET 0 -3 0\n  }\n }\n}\nMOTION\n" + frames;
 }
@@ -63,9 +65,8 @@ TEST(BvhFile, ChannelsComposeInFileOrder) {
 }
 
 TEST(BvhFile, AnyRotationOrderAndChannelCount) {
-  const BvhClip clip = parseBvh(tinyBvh("CHANNELS 2 Xrotation Zrotation",
-                                        "Frames: 1\nFrame Time: 0.01\n0 0 0 0 0 0 40 50\n"),
-                                "tiny.bvh");
+  const BvhClip clip = parseBvh(
+      tinyBvh("CHANNELS 2 Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 0 0 0 0 0 40 50\n"), "tiny.bvh");
   const Eigen::Matrix3d expected = Eigen::AngleAxisd(40 * kDegree, Eigen::Vector3d::UnitX()).toRotationMatrix() *
                                    Eigen::AngleAxisd(50 * kDegree, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   EXPECT_LT((clip.localRotation(0, 1) - expected).norm(), 1e-12);
@@ -87,34 +88,38 @@ TEST_P(BadBvhFile, IsRejectedWithItsMessage) {
 INSTANTIATE_TEST_SUITE_P(
     Malformed, BadBvhFile,
     ::testing::Values(
-        BadBvh{"", "unexpected end of file"},
-        BadBvh{"HIERARCHY\nJOINT x", "expected ROOT"},
+        BadBvh{"", "unexpected end of file"}, BadBvh{"HIERARCHY\nJOINT x", "expected ROOT"},
         BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Wrotation"), "unknown channel 'Wrotation'"},
         BadBvh{tinyBvh("CHANNELS 3 Yrotation Yrotation Zrotation"), "same channel twice"},
         BadBvh{tinyBvh("CHANNELS 7 Yrotation Xrotation Zrotation"), "channel count 7 is more than"},
         BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 3\nFrame Time: 0.01\n0 1 2 3 4 5 6 7 8\n"),
                "needs 3 x 9 numbers"},
-        BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 4 5 6 7 8 9\n"),
-               "more numbers than"},
-        BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 nan 5 6 7 8\n"),
-               "must be a finite number"},
+        BadBvh{
+            tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 4 5 6 7 8 9\n"),
+            "more numbers than"},
+        BadBvh{
+            tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 nan 5 6 7 8\n"),
+            "must be a finite number"},
         BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 4x 5 6 7 8\n"),
                "got '4x'"},
         BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0\n0 1 2 3 4 5 6 7 8\n"),
                "Frame Time must be > 0"},
         BadBvh{tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: -1\n"), "non-negative whole number"},
-        BadBvh{"HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 0\n JOINT Hips\n {\n OFFSET 0 0 0\n CHANNELS 0\n }\n}\n",
-               "appears twice"},
+        BadBvh{
+            "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 0\n JOINT Hips\n {\n OFFSET 0 0 0\n CHANNELS 0\n }\n}\n",
+            "appears twice"},
         BadBvh{"HIERARCHY\nROOT Hips\n{\n OFFSET 0 0\n", "unexpected end of file, expected OFFSET component"},
-        BadBvh{"HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 CHANNELS\n", "expected a number (OFFSET component), got 'CHANNELS'"},
-        BadBvh{"HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 1 Xrotation\n End Site\n {\n OFFSET 0 1 0\n JOINT x\n",
-               "End Site block holds only its OFFSET"},
+        BadBvh{"HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 CHANNELS\n",
+               "expected a number (OFFSET component), got 'CHANNELS'"},
+        BadBvh{
+            "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 1 Xrotation\n End Site\n {\n OFFSET 0 1 0\n JOINT x\n",
+            "End Site block holds only its OFFSET"},
         BadBvh{"HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 0\n}\nMOTION\nFrames: 100000000\nFrame Time: 0.01\n",
                "no channels"}));
 
 TEST(BvhFile, ErrorsNameTheLine) {
-  const std::string message =
-      errorOf(tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 4 5 6 7 bad\n"));
+  const std::string message = errorOf(
+      tinyBvh("CHANNELS 3 Yrotation Xrotation Zrotation", "Frames: 1\nFrame Time: 0.01\n0 1 2 3 4 5 6 7 bad\n"));
   EXPECT_NE(message.find("test.bvh:19:"), std::string::npos) << message;
 }
 
@@ -124,9 +129,7 @@ TEST(BvhFile, DeepNestingIsRefusedNotOverflowed) {
   EXPECT_NE(errorOf(text).find("nested deeper"), std::string::npos);
 }
 
-TEST(BvhFile, MissingFileIsNamed) {
-  EXPECT_THROW(loadBvhFile("/nonexistent/walk.bvh"), BvhError);
-}
+TEST(BvhFile, MissingFileIsNamed) { EXPECT_THROW(loadBvhFile("/nonexistent/walk.bvh"), BvhError); }
 
 }  // namespace
 }  // namespace dressed_human

@@ -132,8 +132,8 @@ void compareWithDrawn(const HumanModel& model, std::size_t p, const std::string&
   double worst_drawn = 0.0, worst_bound = 0.0;
   for (std::size_t k = 0; k < drawn.size(); ++k) {
     const double bound = model.partErrorBound(p).bound(k, (*part.patches)[k], drawn[k].level);
-    EXPECT_GE(bound + kMeasurableError, drawn[k].error)
-        << part.name << " patch " << k << " level " << drawn[k].level << ", " << lod_name << ": bound below the drawn error";
+    EXPECT_GE(bound + kMeasurableError, drawn[k].error) << part.name << " patch " << k << " level " << drawn[k].level
+                                                        << ", " << lod_name << ": bound below the drawn error";
     worst_drawn = std::max(worst_drawn, drawn[k].error);
     worst_bound = std::max(worst_bound, bound);
     if (drawn[k].error < kMeasurableError) continue;
@@ -143,7 +143,8 @@ void compareWithDrawn(const HumanModel& model, std::size_t p, const std::string&
     ++ratios.patches;
     if (ratio <= 2.0) ++ratios.within_two;
   }
-  if (worst_drawn > kMeasurableError) ratios.part_worst_ratio = std::max(ratios.part_worst_ratio, worst_bound / worst_drawn);
+  if (worst_drawn > kMeasurableError)
+    ratios.part_worst_ratio = std::max(ratios.part_worst_ratio, worst_bound / worst_drawn);
 }
 
 // README: the bound "never below the drawn error; each part's largest within 2x of its largest".

@@ -188,12 +188,14 @@ TEST(CoveredPatches, LeavingThemOutChangesAlmostNoPixelWhereTheDisplayDoesIt) {
         }
         std::size_t changed = 0;
         for (std::size_t i = 0; i + 2 < pictures[0].size(); i += 3) {
-          const int difference = std::abs(pictures[0][i] - pictures[1][i]) + std::abs(pictures[0][i + 1] - pictures[1][i + 1]) +
+          const int difference = std::abs(pictures[0][i] - pictures[1][i]) +
+                                 std::abs(pictures[0][i + 1] - pictures[1][i + 1]) +
                                  std::abs(pictures[0][i + 2] - pictures[1][i + 2]);
           changed += difference > 24 ? 1 : 0;
         }
         worst = std::max(worst, static_cast<double>(changed) / static_cast<double>(figure));
-        if (changed > 0.01 * figure) std::printf("az %d el %.1f share %.3f\n", azimuth, elevation, double(changed) / figure);
+        if (changed > 0.01 * figure)
+          std::printf("az %d el %.1f share %.3f\n", azimuth, elevation, double(changed) / figure);
       }
     }
   }

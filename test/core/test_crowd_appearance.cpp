@@ -68,7 +68,8 @@ TEST(CrowdAppearance, BadFilesNameFileLineAndKey) {
   EXPECT_NE(crowdFileError("humans:\n  \"3\": {outfit: kilt}\n").find(":2:"), std::string::npos);
   EXPECT_NE(crowdFileError("humans:\n  \"3\": {outfit: kilt}\n").find("humans.3.outfit: unknown outfit 'kilt'"),
             std::string::npos);
-  EXPECT_NE(crowdFileError("humans:\n  \"3\": {skin_colour: [1, 2, 0]}\n").find("humans.3.skin_colour[1]: must lie in [0, 1]"),
+  EXPECT_NE(crowdFileError("humans:\n  \"3\": {skin_colour: [1, 2, 0]}\n")
+                .find("humans.3.skin_colour[1]: must lie in [0, 1]"),
             std::string::npos);
   EXPECT_NE(crowdFileError("humans:\n  \"3\": {hat: red}\n").find("hat"), std::string::npos);
   EXPECT_NE(crowdFileError("humans:\n  \"a-b\": {}\n").find("letters and digits"), std::string::npos);

@@ -127,7 +127,8 @@ TEST(CrowdWalks, ABadWalkNamesItsKeyAndLine) {
   EXPECT_NE(end_error.find("loop or stand"), std::string::npos) << end_error;
   const std::string treadmill_error = crowdWalksError("humans:\n  \"3\": {treadmill: often}\n");
   EXPECT_NE(treadmill_error.find("humans.3.treadmill"), std::string::npos) << treadmill_error;
-  const std::string short_treadmill = crowdWalksError("humans:\n  \"3\": {route: [[0, 0]], route_end: stand, treadmill: true}\n");
+  const std::string short_treadmill =
+      crowdWalksError("humans:\n  \"3\": {route: [[0, 0]], route_end: stand, treadmill: true}\n");
   EXPECT_NE(short_treadmill.find("two waypoints"), std::string::npos) << short_treadmill;
   const std::string unknown = crowdWalksError("humans:\n  \"3\": {sped: 1}\n");
   EXPECT_NE(unknown.find("unknown key"), std::string::npos) << unknown;

@@ -91,7 +91,8 @@ TEST(FourierFit, WrappedAngleFitsLikeItsUnwrappedTwin) {
     wrapped.push_back(std::remainder(angle, 2 * kPi));
   }
   double largest_jump = 0.0;
-  for (std::size_t i = 1; i < wrapped.size(); ++i) largest_jump = std::max(largest_jump, std::abs(wrapped[i] - wrapped[i - 1]));
+  for (std::size_t i = 1; i < wrapped.size(); ++i)
+    largest_jump = std::max(largest_jump, std::abs(wrapped[i] - wrapped[i - 1]));
   ASSERT_GT(largest_jump, kPi);  // the raw channel does wrap
 
   const std::vector<double> unwrapped = unwrapAngles(wrapped);

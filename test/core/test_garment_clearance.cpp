@@ -84,7 +84,8 @@ double minimumClearance(const std::string& file, const std::string& length, std:
           if (c < minimum) {
             minimum = c;
             where = piece + " patch " + std::to_string(p) + " (u " + std::to_string(u) + ", v " + std::to_string(v) +
-                    ") walk pose " + std::to_string(k) + "/" + std::to_string(kWalkPoses) + ", skin part " + std::to_string(part);
+                    ") walk pose " + std::to_string(k) + "/" + std::to_string(kWalkPoses) + ", skin part " +
+                    std::to_string(part);
           }
         }
       }

@@ -29,10 +29,22 @@ Eigen::Vector3d across(const BezierPatch& patch, PatchEdge edge, double t, Eigen
   double u = t, v = t, sign = 1.0;
   bool along_u = true;
   switch (edge) {
-    case PatchEdge::kV0: v = 0.0; along_u = false; sign = -1.0; break;
-    case PatchEdge::kV1: v = 1.0; along_u = false; break;
-    case PatchEdge::kU0: u = 0.0; sign = -1.0; break;
-    case PatchEdge::kU1: u = 1.0; break;
+    case PatchEdge::kV0:
+      v = 0.0;
+      along_u = false;
+      sign = -1.0;
+      break;
+    case PatchEdge::kV1:
+      v = 1.0;
+      along_u = false;
+      break;
+    case PatchEdge::kU0:
+      u = 0.0;
+      sign = -1.0;
+      break;
+    case PatchEdge::kU1:
+      u = 1.0;
+      break;
   }
   const PatchDerivatives d = patch.derivatives(u, v);
   position = d.position;
@@ -105,7 +117,8 @@ TEST(GarmentContinuity, PantsAreG1AtTheCrotchPoint) {
   for (int edit = 0; edit < 2; ++edit) {
     if (edit == 1) {  // move a twist point's source (out of the plane too): still G1
       const std::uint32_t source = pants.net().rule(twist[3]).sources[0];
-      pants.net().setShapeLocal(source, pants.net().rule(source).attachment.local + Eigen::Vector3d(0.01, -0.003, 0.03));
+      pants.net().setShapeLocal(source,
+                                pants.net().rule(source).attachment.local + Eigen::Vector3d(0.01, -0.003, 0.03));
     }
     double worst = 0.0;
     for (const SkeletonPose& pose : poses) {
@@ -124,8 +137,9 @@ TEST(GarmentContinuity, PantsAreG1AtTheCrotchPoint) {
       EXPECT_EQ(corners, 8);
     }
     EXPECT_LE(worst, 1e-9) << (edit ? "after editing a twist point" : "");
-    std::cout << "[ G1      ] pants: 8 patch normals at the crotch within " << worst << " of the crotch frame's -z over "
-              << kPoses << " walk poses" << (edit ? " (one twist point edited)" : "") << '\n';
+    std::cout << "[ G1      ] pants: 8 patch normals at the crotch within " << worst
+              << " of the crotch frame's -z over " << kPoses << " walk poses"
+              << (edit ? " (one twist point edited)" : "") << '\n';
   }
 }
 

@@ -15,7 +15,8 @@ namespace {
 using namespace garment_test;
 
 TEST(SkirtLengthMap, ContinuousAtKneeLengthWithTheRightEndValues) {
-  for (const auto& [di, dj] : std::vector<std::pair<double, double>>{{0.42, 0.41}, {0.45, 0.30}, {0.3, 0.5}, {1.0, 1.0}}) {
+  for (const auto& [di, dj] :
+       std::vector<std::pair<double, double>>{{0.42, 0.41}, {0.45, 0.30}, {0.3, 0.5}, {1.0, 1.0}}) {
     const double ck = kneeLength(di, dj);
     EXPECT_DOUBLE_EQ(ck, di / (di + dj));
     const SkirtLengthWeights at0 = skirtLengthWeights(0.0, di, dj);
@@ -25,7 +26,7 @@ TEST(SkirtLengthMap, ContinuousAtKneeLengthWithTheRightEndValues) {
     EXPECT_EQ(at0.a0, 1.0);
     EXPECT_EQ(at0.aj, 0.0);
     EXPECT_NEAR(atk.ai, 1.0, 1e-15);
-    EXPECT_EQ(atk.aj, 0.0);  // A_j = 0 at c_k
+    EXPECT_EQ(atk.aj, 0.0);           // A_j = 0 at c_k
     EXPECT_NEAR(at1.aj, 1.0, 1e-15);  // A_j = 1 at c = 1
     EXPECT_EQ(at1.ai, 1.0);
     const SkirtLengthWeights below = skirtLengthWeights(std::nextafter(ck, 0.0), di, dj);
@@ -48,7 +49,8 @@ double hemDepth(const Garment& skirt, const SkeletonPose& pose, std::uint32_t po
   const RigidTransform& t = pose.bone_in_world[static_cast<std::size_t>(thigh)];
   if (a.lower_weight == 0.0) return (t.rotation.conjugate() * (x - t.translation)).z();
   const Eigen::Vector3d pivot = t.rotation * a.local + t.translation;  // P^i (A_i = 1 above c_k)
-  const Eigen::Vector3d shank_axis = pose.bone_in_world[static_cast<std::size_t>(shank)].rotation * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d shank_axis =
+      pose.bone_in_world[static_cast<std::size_t>(shank)].rotation * Eigen::Vector3d::UnitZ();
   return a.local.z() + shank_axis.dot(x - pivot);
 }
 
@@ -98,7 +100,8 @@ TEST(SkirtLengthMap, HemMovesMonotonicallyDownTheLegAndIsContinuousAtTheKnee) {
   for (const SkeletonPose& pose : poses) {
     a.pose(pose);
     b.pose(pose);
-    for (std::size_t p = 0; p < a.net().pointCount(); ++p) jump = std::max(jump, (a.net().worldPoints()[p] - b.net().worldPoints()[p]).norm());
+    for (std::size_t p = 0; p < a.net().pointCount(); ++p)
+      jump = std::max(jump, (a.net().worldPoints()[p] - b.net().worldPoints()[p]).norm());
   }
   EXPECT_LE(jump, 1e-12);
 }
@@ -120,7 +123,8 @@ TEST(SkirtLengthMap, LongSkirtHemFollowsTheBendingKnee) {
   // turns with the knee about the fixed P^i, and its offset from P^i keeps its shank-frame value.
   std::vector<std::uint32_t> lower;
   for (std::uint32_t p : skirt.net().shapePoints()) {
-    if (skirt.net().rule(p).attachment.lower_bone == shank && skirt.net().rule(p).attachment.lower_weight == 1.0) lower.push_back(p);
+    if (skirt.net().rule(p).attachment.lower_bone == shank && skirt.net().rule(p).attachment.lower_weight == 1.0)
+      lower.push_back(p);
   }
   ASSERT_EQ(lower.size(), 4u);
   for (std::uint32_t p : lower) {

@@ -23,7 +23,9 @@ std::size_t loopsOf(const std::vector<BezierPatch>& patches, const PatchTopology
 std::size_t linkedComponents(const PatchTopology& topology, const std::set<std::uint32_t>& patches) {
   std::map<std::uint32_t, std::uint32_t> parent;
   for (std::uint32_t p : patches) parent[p] = p;
-  std::function<std::uint32_t(std::uint32_t)> find = [&](std::uint32_t x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  std::function<std::uint32_t(std::uint32_t)> find = [&](std::uint32_t x) {
+    return parent[x] == x ? x : parent[x] = find(parent[x]);
+  };
   for (const EdgeLink& l : topology.links()) {
     if (patches.count(l.patch_a) && patches.count(l.patch_b)) parent[find(l.patch_a)] = find(l.patch_b);
   }
@@ -43,7 +45,7 @@ TEST(GarmentTopology, PantsAreAHipsRingOnTwoTubes) {
     const std::string& piece = pants.net().patchPiece(p);
     if (piece == "l_leg" || piece == "r_leg") legs.insert(p);
   }
-  ASSERT_EQ(legs.size(), 8u);  // per leg: thigh row and shank row, front and back each
+  ASSERT_EQ(legs.size(), 8u);                               // per leg: thigh row and shank row, front and back each
   EXPECT_EQ(linkedComponents(pants.topology(), legs), 2u);  // left and right are not joined
   // Each tube alone: an annulus (its rim at the crotch and its cuff), its two rows joined at the knee.
   for (const std::string side : {"l_leg", "r_leg"}) {

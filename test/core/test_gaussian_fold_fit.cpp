@@ -31,11 +31,16 @@ TEST(GaussianFoldFit, FlatPatternNeedsNoTerms) {
 TEST(GaussianFoldFit, SlopeIsTheDerivativeOfTheHeight) {
   const BucklingPattern pattern(PatternKind::Y, 0.7, {1.0, 1.0});
   const GaussianFoldApproximation fit = fitGaussians(pattern, 6);
-  for (const Eigen::Vector2d& point : {Eigen::Vector2d(0.1, 0.2), Eigen::Vector2d(-0.6, -0.3), Eigen::Vector2d(0.9, 0.5)}) {
+  for (const Eigen::Vector2d& point :
+       {Eigen::Vector2d(0.1, 0.2), Eigen::Vector2d(-0.6, -0.3), Eigen::Vector2d(0.9, 0.5)}) {
     const double h = 1e-6;
     const ReliefSample sample = fit.sample(point.x(), point.y());
-    EXPECT_NEAR(sample.slope.x(), (fit.sample(point.x() + h, point.y()).height - fit.sample(point.x() - h, point.y()).height) / (2 * h), 1e-5);
-    EXPECT_NEAR(sample.slope.y(), (fit.sample(point.x(), point.y() + h).height - fit.sample(point.x(), point.y() - h).height) / (2 * h), 1e-5);
+    EXPECT_NEAR(sample.slope.x(),
+                (fit.sample(point.x() + h, point.y()).height - fit.sample(point.x() - h, point.y()).height) / (2 * h),
+                1e-5);
+    EXPECT_NEAR(sample.slope.y(),
+                (fit.sample(point.x(), point.y() + h).height - fit.sample(point.x(), point.y() - h).height) / (2 * h),
+                1e-5);
   }
 }
 

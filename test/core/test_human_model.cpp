@@ -68,7 +68,8 @@ TEST(HumanModel, BoundsEncloseThePosedPartInEveryModeAndPose) {
   }
   auto map = std::make_shared<ReliefMap>(32, 32);
   for (int r = 0; r < 32; ++r) {
-    for (int c = 0; c < 32; ++c) map->heights[map->index(c, r)] = 0.3f * static_cast<float>(std::cos(0.4 * c - 0.7 * r));
+    for (int c = 0; c < 32; ++c)
+      map->heights[map->index(c, r)] = 0.3f * static_cast<float>(std::cos(0.4 * c - 0.7 * r));
   }
   std::vector<LevelOfDetail> lods;
   for (const int level : {1, 3, 16}) {
@@ -131,7 +132,8 @@ TEST(HumanModel, DisplacedGeometryMovesOnlyTheDisplacedKindWithinItsBound) {
   for (int r = 0; r < 64; ++r) {
     // One period per tile each way: the level-8 vertices (4 per tile at tiling 2) carry it;
     // finer relief is filtered out of displaced geometry (mesh_displacement.h).
-    for (int c = 0; c < 64; ++c) map->heights[map->index(c, r)] = 0.05f * static_cast<float>(std::sin(2.0 * M_PI * (c + r) / 64.0));
+    for (int c = 0; c < 64; ++c)
+      map->heights[map->index(c, r)] = 0.05f * static_cast<float>(std::sin(2.0 * M_PI * (c + r) / 64.0));
   }
   displaced.setDisplacement(ReliefKind::kCloth, map, 2.0f, 1.0f, 1.0f);
   LevelOfDetail lod;
@@ -191,8 +193,10 @@ TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
   };
   // Anatomical flexion swings the ankle backwards (-x); pick the sign of the y angle that does.
   const std::size_t ankle = static_cast<std::size_t>(skeleton().findBone("l_ankle"));
-  const double sign = poseWithKnee(0.3).bone_in_world[ankle].translation.x() <
-                              poseWithKnee(0.0).bone_in_world[ankle].translation.x() ? 1.0 : -1.0;
+  const double sign =
+      poseWithKnee(0.3).bone_in_world[ankle].translation.x() < poseWithKnee(0.0).bone_in_world[ankle].translation.x()
+          ? 1.0
+          : -1.0;
   const auto strongest = [&](double knee_flexion) {
     const SkeletonPose pose = poseWithKnee(sign * knee_flexion);
     model.update(pose.root, pose.bone_in_world, LevelOfDetail());
@@ -263,7 +267,8 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
         if (p == 0) continue;
         // What relief_surface.vert computes from the renderer's inputs.
         const float strength = vertexStretchAt((*part.inverse_rest_metric)[i], d.d_du.cast<float>(),
-                                               d.d_dv.cast<float>(), part.wrinkle_constants).strength;
+                                               d.d_dv.cast<float>(), part.wrinkle_constants)
+                                   .strength;
         worst_weight = std::max(worst_weight, static_cast<double>(std::abs(strength - (*expected.relief_weight)[i])));
         strongest = std::max(strongest, (*expected.relief_weight)[i]);
       }
@@ -294,7 +299,8 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
                                                       automatic.max_level, wanted);
       for (std::size_t k = 0; k < patches.size(); ++k) {
         EXPECT_GE(levels[k], wanted[k]) << renderer.parts()[p].name << " patch " << k;
-        const int apriori = levelForScreenError(patches[k], automatic.camera, automatic.max_error_pixels, automatic.max_level);
+        const int apriori =
+            levelForScreenError(patches[k], automatic.camera, automatic.max_error_pixels, automatic.max_level);
         coarser_than_apriori += levels[k] < apriori ? 1 : 0;
         const std::vector<int> ladder{1, 2, 3, 4, 6, 8, 12, 16};
         EXPECT_TRUE(std::count(ladder.begin(), ladder.end(), levels[k]) == 1 || levels[k] == automatic.max_level)

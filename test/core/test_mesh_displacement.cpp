@@ -66,8 +66,10 @@ TEST(MeshDisplacement, FlatPatchFollowsTheAnalyticDisplacedSurface) {
     // z = amplitude * h(x * tiling) * (1 m / tiling): a tile is half a metre here.
     const double z = 1.5 * 0.01 * std::sin(2.0 * kPi * 2.0 * x) / 2.0;
     const double dzdx = 1.5 * 0.01 * 2.0 * kPi * std::cos(2.0 * kPi * 2.0 * x);
-    worst_position = std::max(worst_position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
-    worst_normal = std::max(worst_normal, (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
+    worst_position = std::max(
+        worst_position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
+    worst_normal = std::max(worst_normal,
+                            (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
   }
   // Bilinear interpolation of a 512-pixel sine: relative error ~ (2 pi / 512)^2 / 8.
   EXPECT_LT(worst_position, 2e-6);
@@ -90,8 +92,10 @@ TEST(MeshDisplacement, NormalsAgreeWithTheDisplacedPositions) {
     const Eigen::Vector3f& b = displaced.positions[displaced.indices[3 * t + 1]];
     const Eigen::Vector3f& c = displaced.positions[displaced.indices[3 * t + 2]];
     const Eigen::Vector3f face = (b - a).cross(c - a).normalized();
-    const Eigen::Vector3f vertex_mean = (displaced.normals[displaced.indices[3 * t]] + displaced.normals[displaced.indices[3 * t + 1]] +
-                                         displaced.normals[displaced.indices[3 * t + 2]]).normalized();
+    const Eigen::Vector3f vertex_mean =
+        (displaced.normals[displaced.indices[3 * t]] + displaced.normals[displaced.indices[3 * t + 1]] +
+         displaced.normals[displaced.indices[3 * t + 2]])
+            .normalized();
     EXPECT_GT(face.dot(vertex_mean), std::cos(0.02)) << "triangle " << t;
     ++checked;
   }
@@ -257,7 +261,8 @@ TEST(MeshDisplacement, FilteredLookupsReadLevelZeroAtTexelSpacing) {
     EXPECT_DOUBLE_EQ(sampleReliefLevels(mips, u, 0.3, 1.0).height, sampleReliefMap(map, u, 0.3).height);
     EXPECT_DOUBLE_EQ(sampleReliefLevels(mips, u, 0.3, 4.0).height, sampleReliefMap(mips[2], u, 0.3).height);
     const double between = sampleReliefLevels(mips, u, 0.3, std::pow(2.0, 2.5)).height;
-    EXPECT_NEAR(between, 0.5 * (sampleReliefMap(mips[2], u, 0.3).height + sampleReliefMap(mips[3], u, 0.3).height), 1e-12);
+    EXPECT_NEAR(between, 0.5 * (sampleReliefMap(mips[2], u, 0.3).height + sampleReliefMap(mips[3], u, 0.3).height),
+                1e-12);
   }
   EXPECT_THROW(sampleReliefLevels({}, 0.1, 0.1, 1.0), std::invalid_argument);
   const FoldTiles folds(sineMap(32, 0.05), sineMap(32, 0.08));

@@ -11,8 +11,10 @@ namespace {
 
 TriangleMesh square(double x, const Eigen::Vector3f& normal) {
   TriangleMesh m;
-  m.positions = {{static_cast<float>(x), -0.5f, -0.5f}, {static_cast<float>(x), 0.5f, -0.5f},
-                 {static_cast<float>(x), 0.5f, 0.5f}, {static_cast<float>(x), -0.5f, 0.5f}};
+  m.positions = {{static_cast<float>(x), -0.5f, -0.5f},
+                 {static_cast<float>(x), 0.5f, -0.5f},
+                 {static_cast<float>(x), 0.5f, 0.5f},
+                 {static_cast<float>(x), -0.5f, 0.5f}};
   m.normals.assign(4, normal);
   m.indices = {0, 1, 2, 0, 2, 3};
   m.triangle_patch = {0, 0};
@@ -28,14 +30,14 @@ TEST(MeshRasterizer, CoversTheProjectedAreaAndKeepsTheNearestSurface) {
   red.colour = Eigen::Vector3d(1, 0, 0);
   blue.colour = Eigen::Vector3d(0, 0, 1);
   const Eigen::Vector3d light(1, 0, 0);
-  raster.draw(square(0.5, Eigen::Vector3f(1, 0, 0)), red, light);    // nearer
-  raster.draw(square(-0.5, Eigen::Vector3f(1, 0, 0)), blue, light);  // behind: hidden
+  raster.draw(square(0.5, Eigen::Vector3f(1, 0, 0)), red, light);           // nearer
+  raster.draw(square(-0.5, Eigen::Vector3f(1, 0, 0)), blue, light);         // behind: hidden
   EXPECT_NEAR(static_cast<double>(raster.coveredPixels()), 2500.0, 150.0);  // 1 m x 1 m of 2 m x 2 m
   const std::vector<std::uint8_t> rgb = raster.rgb();
   const std::size_t centre = 3 * (50 * 100 + 50);
-  EXPECT_EQ(rgb[centre], 255);      // lit head-on: Eq. 12 gives 1 (+ ambient, clamped)
+  EXPECT_EQ(rgb[centre], 255);  // lit head-on: Eq. 12 gives 1 (+ ambient, clamped)
   EXPECT_EQ(rgb[centre + 2], 0);
-  EXPECT_EQ(rgb[0], 255);           // background white
+  EXPECT_EQ(rgb[0], 255);  // background white
   const std::string path = ::testing::TempDir() + "/raster.png";
   raster.writePng(path);
   std::ifstream file(path, std::ios::binary);

@@ -169,26 +169,31 @@ TEST(MocapRetarget, AnArmThroughTheGimbalKeepsItsAngles) {
 
 TEST(MocapRetarget, EulerSplitsInverseTheirCompositions) {
   const Eigen::Vector3d yxz(0.3, -0.4, 2.9);
-  const Eigen::Matrix3d r = (Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
-                             Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) *
-                             Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ())).toRotationMatrix();
+  const Eigen::Matrix3d r =
+      (Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) *
+       Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   EXPECT_LT((decomposeYxz(r) - yxz).norm(), 1e-12);
   // Beyond x = 90 degrees, and at it: the branch nearest the angles a frame before.
   const auto compose = [](const Eigen::Vector3d& a) {
     return (Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitX()) *
-            Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ())).toRotationMatrix();
+            Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ()))
+        .toRotationMatrix();
   };
   const Eigen::Vector3d beyond(0.3, 2.0, -0.5);
   EXPECT_GT((decomposeYxz(compose(beyond)) - beyond).norm(), 1.0);  // the principal branch's other angles
   EXPECT_LT((decomposeYxzNear(compose(beyond), beyond + Eigen::Vector3d::Constant(0.05)) - beyond).norm(), 1e-12);
   EXPECT_LT((decomposeYxzNear(compose(yxz), yxz + Eigen::Vector3d(0.1, -0.1, 2.0 * kPi)) -
-             (yxz + Eigen::Vector3d(0.0, 0.0, 2.0 * kPi))).norm(), 1e-12);  // whole turns kept
+             (yxz + Eigen::Vector3d(0.0, 0.0, 2.0 * kPi)))
+                .norm(),
+            1e-12);  // whole turns kept
   const Eigen::Vector3d gimbal(0.7, 0.5 * kPi, 0.2);
   EXPECT_LT((decomposeYxzNear(compose(gimbal), Eigen::Vector3d(0.65, 1.5, 0.2)) - gimbal).norm(), 1e-7);
   const Eigen::Vector3d rpy(-0.2, 0.5, -3.0);
-  const Eigen::Matrix3d q = (Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) *
-                             Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *
-                             Eigen::AngleAxisd(rpy[0], Eigen::Vector3d::UnitX())).toRotationMatrix();
+  const Eigen::Matrix3d q =
+      (Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(rpy[0], Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   EXPECT_LT((decomposeRollPitchYaw(q) - rpy).norm(), 1e-12);
 }
 

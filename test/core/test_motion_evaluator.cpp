@@ -149,7 +149,7 @@ TEST(MotionEvaluator, ShippedWalkIsAWalk) {
     min_height = std::min(min_height, root.translation.z());
     max_height = std::max(max_height, root.translation.z());
   }
-  EXPECT_GT(max_knee, 0.6);   // swing-phase flexion of roughly 35..70 degrees
+  EXPECT_GT(max_knee, 0.6);  // swing-phase flexion of roughly 35..70 degrees
   EXPECT_LT(max_knee, 1.3);
   EXPECT_GT(min_knee, -0.2);  // the knee does not bend backwards
   EXPECT_GT(min_height, 0.7);

@@ -84,16 +84,15 @@ TEST_P(BadMotionFile, IsRejectedWithItsMessage) {
 INSTANTIATE_TEST_SUITE_P(
     AllKinds, BadMotionFile,
     ::testing::Values(
-        BadFile{"syntax_error.yaml", ":3:1: not valid YAML"},
-        BadFile{"empty.yaml", "the motion file is empty"},
-        BadFile{"unknown_top_key.yaml", ":4:1: speed: unknown key; expected one of: body_shape, joints, name, period, root"},
+        BadFile{"syntax_error.yaml", ":3:1: not valid YAML"}, BadFile{"empty.yaml", "the motion file is empty"},
+        BadFile{"unknown_top_key.yaml",
+                ":4:1: speed: unknown key; expected one of: body_shape, joints, name, period, root"},
         BadFile{"missing_period.yaml", "period: missing"},
         BadFile{"negative_period.yaml", ":1:9: period: must be > 0 seconds, got -1.1"},
         BadFile{"period_not_number.yaml", ":1:9: period: expected a number, got 'fast'"},
         BadFile{"period_infinite.yaml", "period: expected a finite number, got '.inf'"},
         BadFile{"unknown_joint.yaml", ":3:3: joints.l_hipp: unknown key"},
-        BadFile{"missing_joint.yaml", "joints.waist: missing"},
-        BadFile{"missing_dof.yaml", "joints.waist.z: missing"},
+        BadFile{"missing_joint.yaml", "joints.waist: missing"}, BadFile{"missing_dof.yaml", "joints.waist.z: missing"},
         BadFile{"unknown_dof.yaml", ":5:5: joints.waist.w: unknown key; expected one of: x, y, z"},
         BadFile{"coefficient_count.yaml", ":4:8: joints.waist.y: wrong coefficient counts: 2 in a but 1 in b"},
         BadFile{"coefficient_nan.yaml", ":4:25: joints.waist.y.a[2]: expected a finite number, got '.nan'"},
@@ -146,8 +145,10 @@ TEST(MotionFile, AbsurdNumbersAreRejectedWithTheirRange) {
       {"period: 1.1000000000000001", "period: 1e5", "motion period 100000 s is outside [0.1, 60] s"},
       {"{a0: 0, period: 1}", "{a0: 0, period: 1e-300}", "waist.x: period 1e-300 s is outside [0.1, 60] s"},
       {"forward_speed: 1.2", "forward_speed: 1e300", "root.forward_speed 1e+300 m/s is outside [-12.5, 12.5] m/s"},
-      {"a0: 1.8600000000000001", "a0: 1e308", "root.translation.z: amplitude 0.5 |a0| + sum |(a_k, b_k)| = 5e+307 m is outside [0, 10] m"},
-      {"0.20000000000000001]", "200]", "waist.y: amplitude 0.5 |a0| + sum |(a_k, b_k)| = 200.1 rad is outside [0, 6.28319] rad"},
+      {"a0: 1.8600000000000001", "a0: 1e308",
+       "root.translation.z: amplitude 0.5 |a0| + sum |(a_k, b_k)| = 5e+307 m is outside [0, 10] m"},
+      {"0.20000000000000001]", "200]",
+       "waist.y: amplitude 0.5 |a0| + sum |(a_k, b_k)| = 200.1 rad is outside [0, 6.28319] rad"},
   };
   for (const Case& c : cases) {
     std::string text = validText();

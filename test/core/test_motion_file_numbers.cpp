@@ -19,8 +19,9 @@ namespace dressed_human {
 namespace {
 
 const std::vector<std::string> kHostileNumbers = {
-    "0", "1e-300", "-1e-300", "4.9e-324", "1e300", "-1e300", "1e308", "-1.7976931348623157e308", ".nan", ".inf",
-    "-.inf", "1e5", "-1e5", "0.1", "60", "60.000001", "0.0999999", "12.5", "-12.6", "3.14159", "7", "-7", "1e-9"};
+    "0",         "1e-300", "-1e-300", "4.9e-324", "1e300", "-1e300", "1e308", "-1.7976931348623157e308",
+    ".nan",      ".inf",   "-.inf",   "1e5",      "-1e5",  "0.1",    "60",    "60.000001",
+    "0.0999999", "12.5",   "-12.6",   "3.14159",  "7",     "-7",     "1e-9"};
 
 // The numbers of `text` (after a ':' or '[' or ','), each replaced with probability `rate`.
 std::string mutateNumbers(const std::string& text, std::mt19937& rng, double rate) {

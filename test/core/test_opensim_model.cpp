@@ -59,8 +59,9 @@ std::string scaledModel(double scale) {
   scaled += text.substr(last);
   scaled = std::regex_replace(scaled, std::regex("<SimmSpline name=\"function\">"),
                               "<MultiplierFunction name=\"function\"><function><SimmSpline name=\"function\">");
-  scaled = std::regex_replace(scaled, std::regex("</SimmSpline>"),
-                              "</SimmSpline></function><scale>" + std::to_string(scale) + "</scale></MultiplierFunction>");
+  scaled =
+      std::regex_replace(scaled, std::regex("</SimmSpline>"),
+                         "</SimmSpline></function><scale>" + std::to_string(scale) + "</scale></MultiplierFunction>");
   return scaled;
 }
 
@@ -110,14 +111,17 @@ TEST(OpenSimModel, ASimmSplineIsExactOnACubicAndLinearBeyondItsEnds) {
     xs += std::to_string(x) + " ";
     ys += std::to_string(cubic(x)) + " ";
   }
-  const std::string xml = "<OpenSimDocument><Model name='m'><BodySet><objects><Body name='a'/></objects></BodySet>"
-                          "<JointSet><objects><CustomJoint name='j'><socket_parent_frame>/ground</socket_parent_frame>"
-                          "<socket_child_frame>/bodyset/a</socket_child_frame><coordinates><Coordinate name='q'/></coordinates>"
-                          "<SpatialTransform><TransformAxis name='rotation1'><coordinates>q</coordinates><axis>0 0 1</axis>"
-                          "<LinearFunction name='function'><coefficients>1 0</coefficients></LinearFunction></TransformAxis>"
-                          "<TransformAxis name='translation2'><coordinates>q</coordinates><axis>0 1 0</axis>"
-                          "<SimmSpline name='function'><x>" + xs + "</x><y>" + ys + "</y></SimmSpline></TransformAxis>"
-                          "</SpatialTransform></CustomJoint></objects></JointSet></Model></OpenSimDocument>";
+  const std::string xml =
+      "<OpenSimDocument><Model name='m'><BodySet><objects><Body name='a'/></objects></BodySet>"
+      "<JointSet><objects><CustomJoint name='j'><socket_parent_frame>/ground</socket_parent_frame>"
+      "<socket_child_frame>/bodyset/a</socket_child_frame><coordinates><Coordinate name='q'/></coordinates>"
+      "<SpatialTransform><TransformAxis name='rotation1'><coordinates>q</coordinates><axis>0 0 1</axis>"
+      "<LinearFunction name='function'><coefficients>1 0</coefficients></LinearFunction></TransformAxis>"
+      "<TransformAxis name='translation2'><coordinates>q</coordinates><axis>0 1 0</axis>"
+      "<SimmSpline name='function'><x>" +
+      xs + "</x><y>" + ys +
+      "</y></SimmSpline></TransformAxis>"
+      "</SpatialTransform></CustomJoint></objects></JointSet></Model></OpenSimDocument>";
   const OpenSimModel model = parseOpenSimModel(xml, "cubic.osim");
   const OpenSimFunction& spline = model.joints[0].translations[1].function;
   for (double x = -2.0; x <= 2.1; x += 0.05) EXPECT_NEAR(spline.value(x), cubic(x), 2e-6) << x;
@@ -136,7 +140,9 @@ TEST(OpenSimCapture, TheClipCarriesTheModelsOwnKinematics) {
     std::vector<double> q(model.coordinates.size(), 0.0);
     for (std::size_t c = 0; c < q.size(); ++c) {
       const int column = table.findColumn(model.coordinates[c].name);
-      if (column >= 0) q[c] = table.rows[row][static_cast<std::size_t>(column)] * (model.coordinates[c].rotational ? M_PI / 180.0 : 1.0);
+      if (column >= 0)
+        q[c] =
+            table.rows[row][static_cast<std::size_t>(column)] * (model.coordinates[c].rotational ? M_PI / 180.0 : 1.0);
     }
     const std::vector<Eigen::Isometry3d> world = model.bodyTransforms(q);
     const BvhPose pose = bvhForwardKinematics(clip, row);
@@ -189,11 +195,14 @@ TEST(OpenSimCapture, TheGaitWalkOnItsFittedBodyMeetsTheModelsJointsAndFeet) {
 // torso then branches into two arms, and our chest must still point up the middle.
 std::string modelWithArms() {
   std::string bodies, joints;
-  const auto weld = [&](const std::string& name, const std::string& parent, const std::string& child, const std::string& at) {
+  const auto weld = [&](const std::string& name, const std::string& parent, const std::string& child,
+                        const std::string& at) {
     bodies += "<Body name=\"" + child + "\" />";
-    joints += "<WeldJoint name=\"" + name + "\"><socket_parent_frame>" + parent + "_offset</socket_parent_frame>"
-              "<socket_child_frame>/bodyset/" + child + "</socket_child_frame><frames><PhysicalOffsetFrame name=\"" +
-              parent + "_offset\"><socket_parent>/bodyset/" + parent + "</socket_parent><translation>" + at +
+    joints += "<WeldJoint name=\"" + name + "\"><socket_parent_frame>" + parent +
+              "_offset</socket_parent_frame>"
+              "<socket_child_frame>/bodyset/" +
+              child + "</socket_child_frame><frames><PhysicalOffsetFrame name=\"" + parent +
+              "_offset\"><socket_parent>/bodyset/" + parent + "</socket_parent><translation>" + at +
               "</translation><orientation>0 0 0</orientation></PhysicalOffsetFrame></frames></WeldJoint>";
   };
   for (const std::string side : {"r", "l"}) {
@@ -211,7 +220,8 @@ TEST(OpenSimCapture, AModelWithArmsPutsThemWhereItsTorsoCarriesThem) {
   const OpenSimModel model = parseOpenSimModel(modelWithArms(), "arms.osim");
   SampledMotion sampled;
   const FitAccuracy accuracy = fittedWalk(model, skeleton, sampled);
-  EXPECT_TRUE(sampled.driven[static_cast<std::size_t>(skeleton.bone(static_cast<std::size_t>(skeleton.findBone("l_elbow"))).joint)]);
+  EXPECT_TRUE(sampled.driven[static_cast<std::size_t>(
+      skeleton.bone(static_cast<std::size_t>(skeleton.findBone("l_elbow"))).joint)]);
   for (std::size_t j = 0; j < kJointCount; ++j) {
     if (!sampled.driven[j]) continue;
     EXPECT_LE(accuracy.joint_against_capture[j].max_cm, 5.0) << humanJointNames()[j];
@@ -297,29 +307,36 @@ std::string renamedElement(const std::string& open, const std::string& name, con
 TEST(OpenSimModel, BadModelsAreRefusedByName) {
   expectModelError("<Model", "not valid XML");
   expectModelError("<robot/>", "no <Model> element");
-  expectModelError("<OpenSimDocument><Model><BodySet><objects><Body name='femur'><Joint/></Body></objects></BodySet></Model></OpenSimDocument>",
-                   "body 'femur' holds its joint: an OpenSim 3 model");
+  expectModelError(
+      "<OpenSimDocument><Model><BodySet><objects><Body "
+      "name='femur'><Joint/></Body></objects></BodySet></Model></OpenSimDocument>",
+      "body 'femur' holds its joint: an OpenSim 3 model");
   expectModelError(renamedElement("<CustomJoint name=\"mtp_r\">", "CustomJoint", "BallJoint"),
                    "joint 'mtp_r' (BallJoint): this joint type is not read");
   expectModelError(renamedElement("<SimmSpline name=\"function\">", "SimmSpline", "GCVSpline"),
                    "joint 'knee_r' (CustomJoint) translation1 uses a GCVSpline, which is not read");
   expectModelError(replaced("<x> -2.0944 -1.74533", "<x> -2.0944 -2.74533"),
                    "joint 'knee_r' (CustomJoint) translation1 SimmSpline x must increase, it does not at knot 2");
-  expectModelError(replaced("<socket_parent>/bodyset/femur_r</socket_parent>", "<socket_parent>/bodyset/thigh_r</socket_parent>"),
-                   "names '/bodyset/thigh_r', which is no body of the model");
-  expectModelError(replaced("<translation>0 -0.42999999999999999 0</translation>", "<translation>0 nan 0</translation>"),
-                   "translation must be three finite numbers, got '0 nan 0'");
+  expectModelError(
+      replaced("<socket_parent>/bodyset/femur_r</socket_parent>", "<socket_parent>/bodyset/thigh_r</socket_parent>"),
+      "names '/bodyset/thigh_r', which is no body of the model");
+  expectModelError(
+      replaced("<translation>0 -0.42999999999999999 0</translation>", "<translation>0 nan 0</translation>"),
+      "translation must be three finite numbers, got '0 nan 0'");
   expectModelError(replaced("<Body name=\"torso\" />", "<Body name=\"torso\" /><Body name=\"head\" />"),
                    "body 'head' is joined to the ground by no chain of joints");
-  expectModelError(replaced("<translation>0 -0.42999999999999999 0</translation>", "<translation>0 -4300 0</translation>"),
-                   "translation '0 -4300 0' is beyond 1000");
-  expectModelError(replaced("<y> -0.0032 0.00179", "<y> -1000 1000", replaced("<x> -2.0944 -1.74533", "<x> -2.0944 -2.094399999")),
-                   "joint 'knee_r' (CustomJoint) translation1 SimmSpline knots are too close for a spline through them");
+  expectModelError(
+      replaced("<translation>0 -0.42999999999999999 0</translation>", "<translation>0 -4300 0</translation>"),
+      "translation '0 -4300 0' is beyond 1000");
+  expectModelError(
+      replaced("<y> -0.0032 0.00179", "<y> -1000 1000", replaced("<x> -2.0944 -1.74533", "<x> -2.0944 -2.094399999")),
+      "joint 'knee_r' (CustomJoint) translation1 SimmSpline knots are too close for a spline through them");
   expectModelError(replaced("<socket_child_frame>talus_l_offset</socket_child_frame>",
                             "<socket_child_frame>/bodyset/talus_r</socket_child_frame>"),
                    "body 'talus_r' is the child of two joints ('ankle_r', 'ankle_l')");
-  expectModelError(replaced("<coordinates>knee_angle_r</coordinates>", "<coordinates>knee_angle_r hip_flexion_r</coordinates>"),
-                   "depends on several coordinates (knee_angle_r hip_flexion_r), which is not read");
+  expectModelError(
+      replaced("<coordinates>knee_angle_r</coordinates>", "<coordinates>knee_angle_r hip_flexion_r</coordinates>"),
+      "depends on several coordinates (knee_angle_r hip_flexion_r), which is not read");
   EXPECT_THROW(loadOpenSimModelFile(kSource + "/no/such/model.osim"), OpenSimModelError);
 }
 

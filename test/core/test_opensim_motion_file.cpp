@@ -37,8 +37,7 @@ TEST(OpenSimMotionFile, GaitCycleReadsCompletely) {
 }
 
 TEST(OpenSimMotionFile, RadiansHeader) {
-  const OpenSimTable table =
-      parseOpenSimMotion("inDegrees=no\nendheader\ntime\tq\n0\t0.1\n0.5\t0.2\n", "radians.mot");
+  const OpenSimTable table = parseOpenSimMotion("inDegrees=no\nendheader\ntime\tq\n0\t0.1\n0.5\t0.2\n", "radians.mot");
   EXPECT_FALSE(table.in_degrees);
   EXPECT_EQ(table.rows.size(), 2u);
 }

@@ -37,7 +37,8 @@ struct CompressedPatch {
     posed_dv = squeeze * rest_dv;
   }
   VertexStretch stretch() const {
-    return vertexStretchAt(inverseRestMetric(rest_du, rest_dv), posed_du.cast<float>(), posed_dv.cast<float>(), VertexCompression().strengthConstants());
+    return vertexStretchAt(inverseRestMetric(rest_du, rest_dv), posed_du.cast<float>(), posed_dv.cast<float>(),
+                           VertexCompression().strengthConstants());
   }
 };
 
@@ -55,7 +56,7 @@ Eigen::Vector3d drawnFoldDirection(const CompressedPatch& patch, const VertexStr
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(tensor);
   const Eigen::Vector2d across = solver.eigenvectors().col(1);  // the dominant slope
-  const Eigen::Vector2d along(-across.y(), across.x());           // where the height stays
+  const Eigen::Vector2d along(-across.y(), across.x());         // where the height stays
   return (along.x() * patch.posed_du + along.y() * patch.posed_dv).normalized();
 }
 
@@ -85,7 +86,8 @@ TEST(OrientedFolds, BlendIsTheTwoNeighboursSummingToOne) {
   for (int step = 0; step < 720; ++step) {
     const double double_angle = step * kPi / 360.0;
     // Long axes: the bias towards the tile as laid out (kFoldAxisBias) is negligible.
-    const FoldBlend blend = foldOrientationBlend(1e4f * Eigen::Vector2f(std::cos(double_angle), std::sin(double_angle)));
+    const FoldBlend blend =
+        foldOrientationBlend(1e4f * Eigen::Vector2f(std::cos(double_angle), std::sin(double_angle)));
     EXPECT_NEAR(blend.first_weight + blend.second_weight, 1.0f, 1e-6f);
     EXPECT_EQ(blend.second, (blend.first + 1) % kFoldOrientations);
     const double folds = std::fmod(double_angle * 90.0 / kPi + 180.0, 180.0);
@@ -95,9 +97,14 @@ TEST(OrientedFolds, BlendIsTheTwoNeighboursSummingToOne) {
   // At an orientation's own angle, that orientation alone.
   for (int k = 0; k < kFoldOrientations; ++k) {
     const double double_angle = 2.0 * foldOrientations()[static_cast<std::size_t>(k)].degrees * kPi / 180.0;
-    const FoldBlend blend = foldOrientationBlend(1e4f * Eigen::Vector2f(std::cos(double_angle), std::sin(double_angle)));
+    const FoldBlend blend =
+        foldOrientationBlend(1e4f * Eigen::Vector2f(std::cos(double_angle), std::sin(double_angle)));
     // Rounding may put the angle a hair below k's: then k is the second, at full weight.
-    EXPECT_NEAR(blend.first == k ? blend.first_weight : blend.second == k ? blend.second_weight : 0.0f, 1.0f, 1e-3f) << k;
+    EXPECT_NEAR(blend.first == k    ? blend.first_weight
+                : blend.second == k ? blend.second_weight
+                                    : 0.0f,
+                1.0f, 1e-3f)
+        << k;
   }
   // No preferred direction: the tile as laid out (folds along v).
   const FoldBlend none = foldOrientationBlend(Eigen::Vector2f::Zero());
@@ -155,7 +162,8 @@ TEST(OrientedFolds, UncompressedOrStretchedClothIsSmooth) {
     const VertexStretch stretch = patch.stretch();
     EXPECT_EQ(stretch.strength, 0.0f);
     for (int i = 0; i < 16; ++i) {
-      const ReliefSample sample = orientedFolds(tiles(), Eigen::Vector2d(i / 16.0, i / 7.0), stretch.fold_axis, stretch.strength);
+      const ReliefSample sample =
+          orientedFolds(tiles(), Eigen::Vector2d(i / 16.0, i / 7.0), stretch.fold_axis, stretch.strength);
       EXPECT_EQ(sample.height, 0.0);
       EXPECT_EQ(sample.slope.norm(), 0.0);
     }
@@ -208,7 +216,8 @@ TEST(OrientedFolds, ReliefChangesContinuouslyWithAxisAndStrength) {
       previous = sample;
     }
     for (int step = 0; step <= kSteps; ++step) {
-      const ReliefSample sample = orientedFolds(tiles(), at, Eigen::Vector2f(0.2f, 0.1f), static_cast<float>(step) / kSteps);
+      const ReliefSample sample =
+          orientedFolds(tiles(), at, Eigen::Vector2f(0.2f, 0.1f), static_cast<float>(step) / kSteps);
       if (step > 0) {
         EXPECT_LT((sample.slope - previous.slope).norm(), 0.05 * largest_slope) << "strength step " << step;
       }

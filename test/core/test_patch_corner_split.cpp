@@ -60,7 +60,8 @@ TEST(PatchCornerSplit, EveryTriangleSeesItsOwnPatchParameters) {
     // Without the split some triangles run across a whole patch; with it none spans more than
     // a grid step (at level 1 a whole patch).
     EXPECT_GT(largestTriangleSpan(mesh.indices, mesh.uv), 0.5f);
-    EXPECT_LE(largestTriangleSpan(split.indices, split.uv), 1.0f / *std::min_element(levels.begin(), levels.end()) + 1e-5f);
+    EXPECT_LE(largestTriangleSpan(split.indices, split.uv),
+              1.0f / *std::min_element(levels.begin(), levels.end()) + 1e-5f);
   }
 }
 

@@ -121,10 +121,14 @@ TEST(PedestrianTrajectories, FramesThatStepBySeveralAreOneSampleAStep) {
 
 // ETH's seq_hotel style: every 10th video frame annotated, scientific notation, x z y columns.
 const char* const kObsmatFile =
-    "   7.8000000e+02   1.0000000e+00   8.4556575e+00   0.0000000e+00   3.5863173e+00   1.6075000e+00   0.0000000e+00  -1.4800000e-01\n"
-    "   7.9000000e+02   1.0000000e+00   9.0986576e+00   0.0000000e+00   3.5271269e+00   1.6075000e+00   0.0000000e+00  -1.4800000e-01\n"
-    "   7.9000000e+02   2.0000000e+00   1.0000000e+00   0.0000000e+00   2.0000000e+00   0.0000000e+00   0.0000000e+00   0.0000000e+00\n"
-    "   8.1000000e+02   1.0000000e+00   9.7416577e+00   0.0000000e+00   3.4679364e+00   1.6075000e+00   0.0000000e+00  -1.4800000e-01\n";
+    "   7.8000000e+02   1.0000000e+00   8.4556575e+00   0.0000000e+00   3.5863173e+00   1.6075000e+00   0.0000000e+00  "
+    "-1.4800000e-01\n"
+    "   7.9000000e+02   1.0000000e+00   9.0986576e+00   0.0000000e+00   3.5271269e+00   1.6075000e+00   0.0000000e+00  "
+    "-1.4800000e-01\n"
+    "   7.9000000e+02   2.0000000e+00   1.0000000e+00   0.0000000e+00   2.0000000e+00   0.0000000e+00   0.0000000e+00  "
+    " 0.0000000e+00\n"
+    "   8.1000000e+02   1.0000000e+00   9.7416577e+00   0.0000000e+00   3.4679364e+00   1.6075000e+00   0.0000000e+00  "
+    "-1.4800000e-01\n";
 
 TEST(PedestrianTrajectories, AnObsmatFileIsSampledAt2point5HzOneStepOfItsFrameNumbersApart) {
   const PedestrianTrajectories t = load(kObsmatFile);
@@ -138,7 +142,8 @@ TEST(PedestrianTrajectories, AnObsmatFileIsSampledAt2point5HzOneStepOfItsFrameNu
   ASSERT_EQ(first.samples.size(), 3u);
   EXPECT_DOUBLE_EQ(first.samples[1].time, 0.4);
   EXPECT_DOUBLE_EQ(first.samples[2].time, 1.2);
-  EXPECT_TRUE(first.samples[0].position.isApprox(Eigen::Vector3d(8.4556575, 3.5863173, 0.0)));  // x, then y from column 5
+  EXPECT_TRUE(
+      first.samples[0].position.isApprox(Eigen::Vector3d(8.4556575, 3.5863173, 0.0)));  // x, then y from column 5
   EXPECT_EQ(t.people[1].samples[0].step, 1u);
   // A given rate is samples per second here: one step of the frame numbers.
   EXPECT_DOUBLE_EQ(load(kObsmatFile, withRate(5.0)).people[0].samples[1].time, 0.2);
@@ -152,7 +157,8 @@ TEST(PedestrianTrajectories, TheFormatCanBeGivenAndMustMatchTheColumns) {
   EXPECT_EQ(errorOf(kPeTrackFile, withFormat(TrajectoryFormat::kObsmat)),
             "file:4: 5 columns; the obsmat format has 8: frame id x z y vx vz vy");
   EXPECT_EQ(errorOf("# framerate: 25\n1 2 3 4 5 6\n"),
-            "file:2: 6 columns: neither the Jülich format (id frame x y [z], 4 or 5) nor obsmat (frame id x z y vx vz vy, 8)");
+            "file:2: 6 columns: neither the Jülich format (id frame x y [z], 4 or 5) nor obsmat (frame id x z y vx vz "
+            "vy, 8)");
   EXPECT_EQ(trajectoryFormatNamed("obsmat"), TrajectoryFormat::kObsmat);
   EXPECT_STREQ(trajectoryFormatName(trajectoryFormatNamed("juelich")), "juelich");
   EXPECT_THROW(trajectoryFormatNamed("eth"), PedestrianTrajectoryError);
@@ -166,7 +172,8 @@ TEST(PedestrianTrajectories, AMalformedRowNamesItsFileLineAndColumn) {
   EXPECT_EQ(errorOf(header + "1.5 0 0 0 1.7\n"), "file:2: column id must be a whole number >= 0, got '1.5'");
   EXPECT_EQ(errorOf(header + "1 -3 0 0 1.7\n"), "file:2: column frame must be a whole number >= 0, got '-3'");
   EXPECT_EQ(errorOf(header + "1 0 1e999 0 1.7\n"), "file:2: column x is out of a double's range: '1e999'");
-  EXPECT_EQ(errorOf(std::string(kObsmatFile) + "8.2e+02 1 9.9 0 3.4 1.6 0 zz\n"), "file:5: column vy is not a number: 'zz'");
+  EXPECT_EQ(errorOf(std::string(kObsmatFile) + "8.2e+02 1 9.9 0 3.4 1.6 0 zz\n"),
+            "file:5: column vy is not a number: 'zz'");
 }
 
 TEST(PedestrianTrajectories, NotANumberAndInfinityAreRefused) {
@@ -193,10 +200,12 @@ TEST(PedestrianTrajectories, AFileWithoutRowsSaysSo) {
 }
 
 TEST(PedestrianTrajectories, ABadHeaderStatementNamesItsLine) {
-  EXPECT_EQ(errorOf("#x\n# framerate: fast\n1 0 0 0 0\n"), "file:2: the frame rate statement holds no number: '# framerate: fast'");
+  EXPECT_EQ(errorOf("#x\n# framerate: fast\n1 0 0 0 0\n"),
+            "file:2: the frame rate statement holds no number: '# framerate: fast'");
   EXPECT_EQ(errorOf("# framerate: 0 fps\n1 0 0 0 0\n"),
             "file:1: the frame rate must be > 0 frames per second, the header states 0");
-  EXPECT_EQ(errorOf("# framerate: 25\n# frame rate: 30\n1 0 0 0 0\n"), "file:2: states the frame rate 30, line 1 stated 25");
+  EXPECT_EQ(errorOf("# framerate: 25\n# frame rate: 30\n1 0 0 0 0\n"),
+            "file:2: states the frame rate 30, line 1 stated 25");
   EXPECT_EQ(errorOf("# framerate: 25\n# id frame x/cm y/m\n1 0 0 0\n"), "file:2: states the unit m, line 2 stated cm");
   EXPECT_EQ(errorOf("# framerate: 25\n# unit: ft\n1 0 0 0\n"), "file:2: the unit 'ft' is none of m, cm, mm");
   // Prose about the frame rate is no statement.
@@ -207,7 +216,8 @@ TEST(PedestrianTrajectories, AFrameFarBeyondTheOthersOrABadGivenRateIsRefused) {
   EXPECT_EQ(errorOf("# framerate: 25\n1 0 0 0\n1 1 0 0\n2 5000000 0 0\n"),
             "file:4: frame 5000000 is 5000000 samples after the first (frame 0): more than the 1000000 a recording "
             "may span (a typo?)");
-  EXPECT_EQ(errorOf(kPeTrackFile, withRate(-25.0)), "file: the given frame rate must be > 0 Hz (or 0: the file's), got -25");
+  EXPECT_EQ(errorOf(kPeTrackFile, withRate(-25.0)),
+            "file: the given frame rate must be > 0 Hz (or 0: the file's), got -25");
 }
 
 // The two recordings shipped in /work/shared (their README states people, frames and rate).
@@ -233,7 +243,8 @@ TEST(PedestrianTrajectories, TheSharedJuelichRecordingsReadAsTheirReadmeSays) {
     EXPECT_EQ(t.frame_step, 1);
     EXPECT_DOUBLE_EQ(t.sample_rate, 25.0);
     for (const PersonTrajectory& person : t.people) {
-      for (std::size_t i = 1; i < person.samples.size(); ++i) EXPECT_GT(person.samples[i].time, person.samples[i - 1].time);
+      for (std::size_t i = 1; i < person.samples.size(); ++i)
+        EXPECT_GT(person.samples[i].time, person.samples[i - 1].time);
       EXPECT_DOUBLE_EQ(person.samples.front().position.z(), 1.76);
     }
 #ifndef __SANITIZE_ADDRESS__  // ASan runs it several times slower: only the plain build is timed

@@ -148,7 +148,8 @@ TEST(PoseTrack, AWalkSentAt30HzIsDrawnBetweenItsSamplesWithinTheInterpolationBou
   std::vector<std::array<double, kBoneCount>> acceleration(bones.size());
   for (std::size_t i = 1; i + 1 < bones.size(); ++i) {
     for (std::size_t b = 0; b < kBoneCount; ++b) {
-      const Eigen::Vector3d second = bones[i + 1][b].translation - 2.0 * bones[i][b].translation + bones[i - 1][b].translation;
+      const Eigen::Vector3d second =
+          bones[i + 1][b].translation - 2.0 * bones[i][b].translation + bones[i - 1][b].translation;
       acceleration[i][b] = second.norm() / (kStep * kStep);
     }
   }

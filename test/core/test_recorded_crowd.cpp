@@ -66,8 +66,8 @@ TEST(RecordedCrowd, VelocitiesAreCentralDifferencesOneSidedAtTheEnds) {
 }
 
 TEST(RecordedCrowd, AHeadingOnlyAbove0point3MetresPerSecond) {
-  const RecordedCrowd slow(parsePedestrianTrajectories("# framerate: 10\n1 0 0 0\n1 1 0.029 0\n2 0 0 0\n2 1 0.031 0\n", "slow"),
-                           {});
+  const RecordedCrowd slow(
+      parsePedestrianTrajectories("# framerate: 10\n1 0 0 0\n1 1 0.029 0\n2 0 0 0\n2 1 0.031 0\n", "slow"), {});
   EXPECT_FALSE(at(slow, 0)[0].heading.has_value());
   EXPECT_TRUE(at(slow, 0)[1].heading.has_value());
 }
@@ -81,7 +81,8 @@ TEST(RecordedCrowd, ThePlacementRotatesAboutTheOriginThenShifts) {
   EXPECT_NEAR((walker.position - Eigen::Vector2d(10.0, -1.9)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((walker.velocity - Eigen::Vector2d(0.0, 1.0)).norm(), 0.0, 1e-12);  // turned, not shifted
   EXPECT_NEAR(*walker.heading, M_PI / 2, 1e-12);
-  EXPECT_NEAR((at(recorded, 2)[1].position - Eigen::Vector2d(5.0, 3.0)).norm(), 0.0, 1e-12);  // (5, 5) -> (-5, 5) -> (5, 3)
+  EXPECT_NEAR((at(recorded, 2)[1].position - Eigen::Vector2d(5.0, 3.0)).norm(), 0.0,
+              1e-12);  // (5, 5) -> (-5, 5) -> (5, 3)
 }
 
 }  // namespace

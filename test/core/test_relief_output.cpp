@@ -70,7 +70,8 @@ Eigen::Vector2f decodedSlope(const std::uint8_t* rgb) {
 ReliefMap creasedMap() {
   ReliefMap map(64, 64);
   for (int row = 0; row < map.height; ++row) {
-    for (int column = 0; column < map.width; ++column) map.slope_u[map.index(column, row)] = column % 4 == 0 ? 2.0f : 0.0f;
+    for (int column = 0; column < map.width; ++column)
+      map.slope_u[map.index(column, row)] = column % 4 == 0 ? 2.0f : 0.0f;
   }
   return map;
 }

@@ -14,7 +14,8 @@ namespace {
 BezierPatch flatSquare(double side) {
   BezierPatch::ControlPoints points;
   for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) points[static_cast<std::size_t>(4 * j + i)] = Eigen::Vector3d(side * i / 3.0, side * j / 3.0, 0.0);
+    for (int i = 0; i < 4; ++i)
+      points[static_cast<std::size_t>(4 * j + i)] = Eigen::Vector3d(side * i / 3.0, side * j / 3.0, 0.0);
   }
   return BezierPatch(points);
 }
@@ -27,7 +28,7 @@ TEST(ReliefVisibility, TypicalPatchSizeIsTheMedianLargerSide) {
 
 TEST(ReliefVisibility, HidesWhereItWouldFadeToNothingAndShowsAgainWithHysteresis) {
   const CameraView camera{Eigen::Vector3d::Zero(), 0.8, 700.0};
-  ReliefVisibility visibility(0.01);  // 1 cm features
+  ReliefVisibility visibility(0.01);                                                       // 1 cm features
   const double hide = 0.01 * pixelsPerMetre(camera, 1.0) / ReliefVisibility::kHidePixels;  // metres
   EXPECT_NEAR(0.01 * pixelsPerMetre(camera, hide), ReliefVisibility::kHidePixels, 1e-9);
   // Walking away: shown until just beyond the hide distance.
@@ -80,7 +81,7 @@ namespace {
 TEST(ReliefVisibility, FadesToNothingWhereItIsSwitched) {
   ReliefVisibility visibility(0.01);  // features 1 cm apart: pixels = pixels_per_metre / 100
   EXPECT_EQ(visibility.fade(), 1.0);
-  double previous = 0.0;  // from 0 px
+  double previous = 0.0;                     // from 0 px
   for (int step = 0; step <= 800; ++step) {  // approaching: 0 to 8 px
     const double pixels = step * 0.01;
     const bool shown = visibility.update(pixels * 100.0);

@@ -100,8 +100,9 @@ TEST_F(SkeletonTest, StandingPoseMatchesTheAdultProportions) {
   EXPECT_NEAR(jointPosition("l_shoulder", zero).y(), 0.19, kTolerance);
   const std::size_t head = static_cast<std::size_t>(skeleton.findBone("head"));
   kinematics.compute(standingRoot(), zero, pose);
-  const Eigen::Vector3d head_top = pose.bone_in_world[head].translation +
-                                   pose.bone_in_world[head].rotation * Eigen::Vector3d(0, 0, skeleton.bone(head).length);
+  const Eigen::Vector3d head_top =
+      pose.bone_in_world[head].translation +
+      pose.bone_in_world[head].rotation * Eigen::Vector3d(0, 0, skeleton.bone(head).length);
   EXPECT_NEAR(head_top.z(), 1.75, kTolerance);  // stature
 }
 
@@ -208,7 +209,7 @@ TEST(SkeletonSuffix, AnotherHumanOfTheTreeIsTheSuffixedUrdfsSkeleton) {
 }
 
 TEST(SkeletonSuffix, HumansAmongFramesNeedTheirRootAndFirstBone) {
-  const std::vector<std::string> frames = {"world", "body", "waist", "body_3", "waist_3", "body_12",
+  const std::vector<std::string> frames = {"world",    "body",      "waist",  "body_3",   "waist_3", "body_12",
                                            "waist_12", "body_link", "body_9", "waist_x9", "body_-1", "waist_-1"};
   EXPECT_EQ(humanSuffixesAmong(frames), (std::vector<std::string>{"", "_12", "_3"}));
   EXPECT_TRUE(humanSuffixesAmong({"world", "map"}).empty());
@@ -231,7 +232,8 @@ TEST(SkeletonErrors, NameWhatDoesNotFit) {
       << skeletonErrorOf(text);
 
   text = urdfText();
-  replaceOnce(text, "<joint name=\"l_clavicle_fixed\" type=\"fixed\">", "<joint name=\"l_clavicle_fixed\" type=\"continuous\"><axis xyz=\"0 0 1\"/>");
+  replaceOnce(text, "<joint name=\"l_clavicle_fixed\" type=\"fixed\">",
+              "<joint name=\"l_clavicle_fixed\" type=\"continuous\"><axis xyz=\"0 0 1\"/>");
   EXPECT_NE(skeletonErrorOf(text).find("'l_clavicle' (the left clavicle) must hang from a fixed joint"),
             std::string::npos)
       << skeletonErrorOf(text);
@@ -269,7 +271,11 @@ TEST(CrowdStature, ScalesTheBonesUnlessNegligibleOrAlreadyAPersons) {
   const Skeleton parsed = Skeleton::fromUrdf(shapedUrdf(urdf, tall));
   const Skeleton scaled = skeletonAtStature(plain, 1.1);
   for (std::size_t b = 0; b < kBoneCount; ++b) {
-    EXPECT_LT((shapedRestTranslation(scaled, scaled.bodyShape(), b) - shapedRestTranslation(parsed, parsed.bodyShape(), b)).norm(), 1e-9) << b;
+    EXPECT_LT(
+        (shapedRestTranslation(scaled, scaled.bodyShape(), b) - shapedRestTranslation(parsed, parsed.bodyShape(), b))
+            .norm(),
+        1e-9)
+        << b;
     EXPECT_NEAR(scaled.bone(b).length, parsed.bone(b).length, 1e-9) << b;
     EXPECT_NEAR(scaled.bone(b).radius, parsed.bone(b).radius, 1e-9) << b;
     EXPECT_EQ(scaled.bodyShape().scale[b], parsed.bodyShape().scale[b]) << b;

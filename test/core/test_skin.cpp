@@ -62,9 +62,9 @@ double maxJointGap(const Skin& skin) {
 
 struct EdgeCheck {
   std::size_t edges = 0;
-  std::size_t bad_edges = 0;         // not used by exactly two triangles in opposite directions
-  std::size_t degenerate = 0;        // triangles with a repeated vertex
-  long euler = 0;                    // V - E + F
+  std::size_t bad_edges = 0;   // not used by exactly two triangles in opposite directions
+  std::size_t degenerate = 0;  // triangles with a repeated vertex
+  long euler = 0;              // V - E + F
 };
 
 EdgeCheck checkEdges(const TriangleMesh& mesh) {
@@ -82,8 +82,8 @@ EdgeCheck checkEdges(const TriangleMesh& mesh) {
     if (uses != 1 || reverse == directed.end() || reverse->second != 1) ++check.bad_edges;
   }
   check.edges = undirected.size();
-  check.euler = static_cast<long>(mesh.vertexCount()) - static_cast<long>(check.edges) +
-                static_cast<long>(mesh.triangleCount());
+  check.euler =
+      static_cast<long>(mesh.vertexCount()) - static_cast<long>(check.edges) + static_cast<long>(mesh.triangleCount());
   return check;
 }
 
@@ -113,7 +113,7 @@ void expectClosed(const TriangleMesh& mesh, std::size_t parts, const std::string
 
 TEST(Skin, DefaultBodyLayout) {
   const Skin skin(skeleton(), defaultBody());
-  EXPECT_EQ(skin.partCount(), 7u);  // trunk, 2 clavicles, 2 arms, 2 legs
+  EXPECT_EQ(skin.partCount(), 7u);       // trunk, 2 clavicles, 2 arms, 2 legs
   EXPECT_EQ(skin.joints().size(), 12u);  // waist, torso, neck, head, 2 x (elbow, wrist, knee, ankle)
   EXPECT_EQ(skin.topology().patchCount(), skin.patches().size());
   for (std::size_t p = 0; p < skin.patches().size(); ++p) {
@@ -142,10 +142,12 @@ TEST(Skin, C0AtEveryJointOverTheWalk) {
     for (const SkinJoint& joint : skin.joints()) {
       Eigen::Vector3d centre = Eigen::Vector3d::Zero();
       for (int q = 0; q < 4; ++q) centre += skin.patches()[joint.child_patches[q]].controlPoint(0, 0) / 4.0;
-      worst_centre = std::max(worst_centre, (centre - pose.bone_in_world[static_cast<std::size_t>(joint.child_bone)].translation).norm());
+      worst_centre = std::max(
+          worst_centre, (centre - pose.bone_in_world[static_cast<std::size_t>(joint.child_bone)].translation).norm());
     }
   }
-  std::printf("max C0 gap over 120 walk poses, 12 joints: %.3g m; ring centre off joint: %.3g m\n", worst, worst_centre);
+  std::printf("max C0 gap over 120 walk poses, 12 joints: %.3g m; ring centre off joint: %.3g m\n", worst,
+              worst_centre);
   EXPECT_LE(worst, 1e-9);
   EXPECT_LE(worst_centre, 1e-9);
 }

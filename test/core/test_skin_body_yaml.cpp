@@ -91,9 +91,10 @@ TEST(BodyDescription, BadFiles) {
   // The waist's joint is at z = 0.05 in the body frame: the pelvis region must stop below it.
   expectError(replaced(good, "      - [-0.01, 0.110, 0.165]", "      - [0.07, 0.110, 0.165]"),
               {"segments.body.sections", "below the joint", "waist"});
-  expectError(replaced(good, "  - bone: waist           # 0.20 m, z up\n    joined: true\n    sections:\n      - [0.00,",
-                       "  - bone: waist           # 0.20 m, z up\n    joined: true\n    sections:\n      - [0.02,"),
-              {"segments.waist.sections[0]", "z must be 0"});
+  expectError(
+      replaced(good, "  - bone: waist           # 0.20 m, z up\n    joined: true\n    sections:\n      - [0.00,",
+               "  - bone: waist           # 0.20 m, z up\n    joined: true\n    sections:\n      - [0.02,"),
+      {"segments.waist.sections[0]", "z must be 0"});
   expectError(replaced(good, "    joined: true\n    distal_cap: 0.10", "    joined: true\n    distal_cap: 0.0"),
               {"segments.head.distal_cap", "open distal end"});
   expectError(replaced(good, "    proximal_cap: 0.06    # crotch", "    proximal_cap: -0.06"),
@@ -119,8 +120,7 @@ TEST(BodyDescription, BadFiles) {
               {"segments.l_clavicle", "second segment"});
   expectError(replaced(good, "  all: [1.0, 1.0, 1.0]", "  tentacles: [1.0, 1.0, 1.0]"),
               {"bad.yaml:", "shape.tentacles", "neither a bone"});
-  expectError(replaced(good, "  all: [1.0, 1.0, 1.0]", "  arms: [1.0, 0.0, 1.0]"),
-              {"shape.arms", "outside"});
+  expectError(replaced(good, "  all: [1.0, 1.0, 1.0]", "  arms: [1.0, 0.0, 1.0]"), {"shape.arms", "outside"});
   expectError("name: x\nsegments: {}\n", {"bad.yaml:2:11", "segments", "non-empty list"});
   // A child listed before its parent.
   const std::string neck_and_head =

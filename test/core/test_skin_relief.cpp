@@ -34,8 +34,10 @@ TEST(SkinRelief, HeightIsContinuousAcrossTheTileSeams) {
     for (int k = 0; k < 2000; ++k) {
       const double t = (k + 0.5) / 2000.0;
       // Periodic neighbours: just left of u = 1 versus just right of u = 0, same for v.
-      seam_jump = std::max(seam_jump, std::abs(relief.sample({1.0 - step, t}).height - relief.sample({step, t}).height));
-      seam_jump = std::max(seam_jump, std::abs(relief.sample({t, 1.0 - step}).height - relief.sample({t, step}).height));
+      seam_jump =
+          std::max(seam_jump, std::abs(relief.sample({1.0 - step, t}).height - relief.sample({step, t}).height));
+      seam_jump =
+          std::max(seam_jump, std::abs(relief.sample({t, 1.0 - step}).height - relief.sample({t, step}).height));
       steepest = std::max(steepest, relief.sample({step, t}).slope.norm());
     }
     EXPECT_LE(seam_jump, 4.0 * step * steepest + 1e-12);
@@ -71,9 +73,11 @@ LineScan scanLine(const SkinRelief& relief, double step, int count) {
   LineScan scan;
   Eigen::Vector2d point(0.013, 0.271);
   const Eigen::Vector2d direction = Eigen::Vector2d(1.0, 0.37).normalized();
-  for (int k = 0; k < count; ++k) scan.steepest = std::max(scan.steepest, relief.sample(point + k * step * direction).slope.norm());
+  for (int k = 0; k < count; ++k)
+    scan.steepest = std::max(scan.steepest, relief.sample(point + k * step * direction).slope.norm());
   for (int k = 0; k < count; ++k) {
-    const double jump = std::abs(relief.sample(point + (k + 1) * step * direction).height - relief.sample(point + k * step * direction).height);
+    const double jump = std::abs(relief.sample(point + (k + 1) * step * direction).height -
+                                 relief.sample(point + k * step * direction).height);
     scan.largest_jump = std::max(scan.largest_jump, jump);
     if (jump > 1.5 * step * scan.steepest) ++scan.steps_over_bound;
   }
@@ -110,8 +114,11 @@ TEST(SkinRelief, SlopeIsTheGradientOfTheHeight) {
       const Eigen::Vector2d point(unit(random), unit(random));
       const double h = 1e-7;
       const ReliefSample sample = relief.sample(point);
-      const Eigen::Vector2d numeric((relief.sample(point + Eigen::Vector2d(h, 0)).height - relief.sample(point - Eigen::Vector2d(h, 0)).height) / (2 * h),
-                                    (relief.sample(point + Eigen::Vector2d(0, h)).height - relief.sample(point - Eigen::Vector2d(0, h)).height) / (2 * h));
+      const Eigen::Vector2d numeric(
+          (relief.sample(point + Eigen::Vector2d(h, 0)).height - relief.sample(point - Eigen::Vector2d(h, 0)).height) /
+              (2 * h),
+          (relief.sample(point + Eigen::Vector2d(0, h)).height - relief.sample(point - Eigen::Vector2d(0, h)).height) /
+              (2 * h));
       if ((numeric - sample.slope).norm() <= 1e-3 * std::max(1.0, sample.slope.norm())) ++agree;
     }
     // Points within 1e-7 of a crease (furrow line, wobble kink, ray-switch line) may disagree.
@@ -195,8 +202,9 @@ MapAgreement compareMaps(const ReliefMap& map, const ReliefMap& reference) {
       ++differing;
       continue;
     }
-    agreement.largest_slope = std::max({agreement.largest_slope, std::abs(static_cast<double>(map.slope_u[at]) - reference.slope_u[at]),
-                                        std::abs(static_cast<double>(map.slope_v[at]) - reference.slope_v[at])});
+    agreement.largest_slope =
+        std::max({agreement.largest_slope, std::abs(static_cast<double>(map.slope_u[at]) - reference.slope_u[at]),
+                  std::abs(static_cast<double>(map.slope_v[at]) - reference.slope_v[at])});
   }
   agreement.differing_fraction = static_cast<double>(differing) / static_cast<double>(map.heights.size());
   return agreement;
@@ -205,7 +213,8 @@ MapAgreement compareMaps(const ReliefMap& map, const ReliefMap& reference) {
 double deepestLevel(const SkinReliefParameters& parameters) {
   double deepest = 0.0;
   for (int level = 0; level < parameters.levels; ++level)
-    deepest = std::max(deepest, parameters.level_depth[static_cast<std::size_t>(level)] * parameters.cell_size * std::pow(parameters.child_cell_ratio, level));
+    deepest = std::max(deepest, parameters.level_depth[static_cast<std::size_t>(level)] * parameters.cell_size *
+                                    std::pow(parameters.child_cell_ratio, level));
   return deepest;
 }
 
@@ -233,12 +242,17 @@ TEST(SkinRelief, FastRenderMatchesReferenceWithinTolerance) {
     const ReliefMap reference = relief.renderBruteForce(size, size);
     const MapAgreement agreement = compareMaps(map, reference);
     const double deepest = deepestLevel(parameters);
-    std::printf("seed %u roundness %.2f wobble %.2f stretch %.1f: differing %.6f, largest height %.3g (%.3g of the deepest level), slope %.3g\n",
-                parameters.seed, parameters.roundness, parameters.wobble, parameters.direction_stretch, agreement.differing_fraction,
-                agreement.largest_height, agreement.largest_height / deepest, agreement.largest_slope);
+    std::printf(
+        "seed %u roundness %.2f wobble %.2f stretch %.1f: differing %.6f, largest height %.3g (%.3g of the deepest "
+        "level), slope %.3g\n",
+        parameters.seed, parameters.roundness, parameters.wobble, parameters.direction_stretch,
+        agreement.differing_fraction, agreement.largest_height, agreement.largest_height / deepest,
+        agreement.largest_slope);
     const bool rasterised = parameters.roundness == 0.0;
-    EXPECT_LE(agreement.differing_fraction, rasterised ? SkinRelief::kReferenceDifferingFraction : 0.0) << "seed " << parameters.seed;
-    EXPECT_LE(agreement.largest_height, rasterised ? SkinRelief::kReferenceLargestHeightDifference * deepest : SkinRelief::kReferenceHeightTolerance)
+    EXPECT_LE(agreement.differing_fraction, rasterised ? SkinRelief::kReferenceDifferingFraction : 0.0)
+        << "seed " << parameters.seed;
+    EXPECT_LE(agreement.largest_height, rasterised ? SkinRelief::kReferenceLargestHeightDifference * deepest
+                                                   : SkinRelief::kReferenceHeightTolerance)
         << "seed " << parameters.seed;
     EXPECT_LE(agreement.largest_slope, SkinRelief::kReferenceSlopeTolerance) << "seed " << parameters.seed;
 
@@ -254,7 +268,8 @@ TEST(SkinRelief, FastRenderMatchesReferenceWithinTolerance) {
     const ReliefMap own_finest = relief.render(size, size, parameters.levels - 1);
     const ReliefMap other_finest = SkinRelief(other_seed).render(size, size, parameters.levels - 1);
     ReliefMap other = map;
-    for (std::size_t at = 0; at < other.heights.size(); ++at) other.heights[at] += other_finest.heights[at] - own_finest.heights[at];
+    for (std::size_t at = 0; at < other.heights.size(); ++at)
+      other.heights[at] += other_finest.heights[at] - own_finest.heights[at];
     EXPECT_GT(compareMaps(other, reference).differing_fraction, 20.0 * SkinRelief::kReferenceDifferingFraction);
   }
 }
@@ -275,7 +290,8 @@ TEST(SkinRelief, SampleAgreesWithRenderAndReferenceCells) {
       EXPECT_NEAR(relief.sample(point + Eigen::Vector2d(-2.0, 3.0)).height, height, 1e-12);
     }
   }
-  EXPECT_LE(static_cast<double>(differing) / static_cast<double>(map.heights.size()), SkinRelief::kReferenceDifferingFraction);
+  EXPECT_LE(static_cast<double>(differing) / static_cast<double>(map.heights.size()),
+            SkinRelief::kReferenceDifferingFraction);
 }
 
 TEST(SkinRelief, TopLevelCellsMatchBoostPolygonVoronoi) {

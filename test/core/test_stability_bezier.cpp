@@ -45,11 +45,15 @@ TEST(StabilityBezier, NormalApproachesTheDegenerateCornerContinuously) {
   const Case cases[] = {
       {"coincident corner points", [](BezierPatch::ControlPoints& p) { p[BezierPatch::index(1, 0)] = p[0]; }},
       {"parallel corner tangents",
-       [](BezierPatch::ControlPoints& p) { p[BezierPatch::index(0, 1)] = p[0] + 0.6 * (p[BezierPatch::index(1, 0)] - p[0]); }},
-      {"collapsed edge v = 0", [](BezierPatch::ControlPoints& p) {
+       [](BezierPatch::ControlPoints& p) {
+         p[BezierPatch::index(0, 1)] = p[0] + 0.6 * (p[BezierPatch::index(1, 0)] - p[0]);
+       }},
+      {"collapsed edge v = 0",
+       [](BezierPatch::ControlPoints& p) {
          for (int i = 1; i < 4; ++i) p[BezierPatch::index(i, 0)] = p[0];
        }},
-      {"collapsed edges v = 0 and u = 0", [](BezierPatch::ControlPoints& p) {
+      {"collapsed edges v = 0 and u = 0",
+       [](BezierPatch::ControlPoints& p) {
          for (int i = 1; i < 4; ++i) p[BezierPatch::index(i, 0)] = p[BezierPatch::index(0, i)] = p[0];
        }},
   };
@@ -164,7 +168,8 @@ TEST(StabilityBezier, SkinPolesAndPantsCrotchTessellateToFiniteUnitNormals) {
       const TriangleMesh& mesh = tessellator.tessellateUniform(pants.patches(), pants.topology(), level);
       expectFiniteUnitMesh(mesh, "pants" + what);
       // Every vertex at the crotch point: one position, one normal (to float precision).
-      const Eigen::Vector3f crotch = pants.net().worldPoints()[static_cast<std::size_t>(pants.crotchPoint())].cast<float>();
+      const Eigen::Vector3f crotch =
+          pants.net().worldPoints()[static_cast<std::size_t>(pants.crotchPoint())].cast<float>();
       std::vector<Eigen::Vector3f> normals;
       for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
         if ((mesh.positions[v] - crotch).norm() < 1e-5f) normals.push_back(mesh.normals[v]);

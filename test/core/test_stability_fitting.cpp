@@ -24,12 +24,14 @@ constexpr double kDegree = kPi / 180.0;
 
 Eigen::Matrix3d yxz(double y, double x, double z) {
   return (Eigen::AngleAxisd(y, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(x, Eigen::Vector3d::UnitX()) *
-          Eigen::AngleAxisd(z, Eigen::Vector3d::UnitZ())).toRotationMatrix();
+          Eigen::AngleAxisd(z, Eigen::Vector3d::UnitZ()))
+      .toRotationMatrix();
 }
 
 Eigen::Matrix3d rollPitchYaw(double roll, double pitch, double yaw) {
   return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX())).toRotationMatrix();
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
 }
 
 // The x angles a gimbal test visits: exactly +-90 degrees and 10^-k short of it.
@@ -156,8 +158,8 @@ TEST(StabilityFitting, RootHeadingAtPlusMinus180Fits) {
 std::string periodError(const std::vector<std::vector<double>>& channels, double frame_time) {
   try {
     const PeriodEstimate estimate = estimateGaitPeriod(channels, frame_time);
-    return "(found a period of " + std::to_string(estimate.period) + " s, r = " +
-           std::to_string(estimate.correlation) + ")";
+    return "(found a period of " + std::to_string(estimate.period) + " s, r = " + std::to_string(estimate.correlation) +
+           ")";
   } catch (const MotionError& error) {
     return error.what();
   }

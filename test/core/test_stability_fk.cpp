@@ -182,11 +182,13 @@ TEST(StabilityFk, ZeroLengthBoneInTheUrdfIsRefusedByName) {
   std::stringstream text;
   text << file.rdbuf();
   const std::string urdf = text.str();
-  const std::string visual = "<origin xyz=\"0 0 0.205\" rpy=\"0 0 0\"/>\n      <geometry><cylinder radius=\"0.055\" length=\"0.41\"/>";
+  const std::string visual =
+      "<origin xyz=\"0 0 0.205\" rpy=\"0 0 0\"/>\n      <geometry><cylinder radius=\"0.055\" length=\"0.41\"/>";
   const std::size_t at = urdf.find(visual, urdf.find("<link name=\"l_knee\">"));
   ASSERT_NE(at, std::string::npos) << "the l_knee visual moved: update this test";
   std::string zero = urdf;
-  zero.replace(at, visual.size(), "<origin xyz=\"0 0 0\" rpy=\"0 0 0\"/>\n      <geometry><cylinder radius=\"0.055\" length=\"0\"/>");
+  zero.replace(at, visual.size(),
+               "<origin xyz=\"0 0 0\" rpy=\"0 0 0\"/>\n      <geometry><cylinder radius=\"0.055\" length=\"0\"/>");
   try {
     Skeleton::fromUrdf(zero);
     FAIL() << "a zero-length shank was accepted";

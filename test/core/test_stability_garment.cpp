@@ -36,7 +36,8 @@ std::vector<double> lengthsAround(double ck) {
 }
 
 TEST(StabilityGarment, SkirtWeightsAtTheEndsAndEitherSideOfKneeLength) {
-  for (const auto& [di, dj] : std::vector<std::pair<double, double>>{{0.42, 0.41}, {0.45, 0.30}, {1e-3, 1.0}, {1.0, 1e-3}}) {
+  for (const auto& [di, dj] :
+       std::vector<std::pair<double, double>>{{0.42, 0.41}, {0.45, 0.30}, {1e-3, 1.0}, {1.0, 1e-3}}) {
     const double ck = kneeLength(di, dj);
     SkirtLengthWeights previous{1.0, 0.0, 0.0};
     for (double c : lengthsAround(ck)) {
@@ -68,7 +69,8 @@ TEST(StabilityGarment, SkirtWeightsAtTheEndsAndEitherSideOfKneeLength) {
       EXPECT_NEAR(w.aj, 0.0, 1e-12);
     }
   }
-  for (double bad : {-1e-300, 1.0 + 1e-15, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (double bad :
+       {-1e-300, 1.0 + 1e-15, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     EXPECT_THROW(skirtLengthWeights(bad, 0.4, 0.4), std::invalid_argument) << bad;
   }
 }

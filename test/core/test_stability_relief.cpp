@@ -104,7 +104,8 @@ TEST(StabilityRelief, PatternsAndChainsBeyondTheDomainStayFiniteAndIsometric) {
           const double half_y = pattern.footprintHalfLength();
           for (int i = 0; i <= 20; ++i) {
             for (int j = 0; j <= 20; ++j) {
-              const ReliefSample sample = pattern.sampleFootprint(cell.half_width_x * (i / 10.0 - 1.0), half_y * (j / 10.0 - 1.0));
+              const ReliefSample sample =
+                  pattern.sampleFootprint(cell.half_width_x * (i / 10.0 - 1.0), half_y * (j / 10.0 - 1.0));
               ASSERT_TRUE(std::isfinite(sample.height) && sample.slope.allFinite()) << alpha;
               EXPECT_LE(sample.height, pattern.solution().h1 + 1e-12);
               EXPECT_GE(sample.height, -pattern.solution().h2 - 1e-12);

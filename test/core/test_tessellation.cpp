@@ -25,13 +25,13 @@ namespace {
 // with bulges and a waist so curvature varies from patch to patch.
 PatchSurface closedTestSurface() {
   return makeGeneralizedCylinder({{0.0, 0.10, 0.08},
-                                    {0.10, 0.14, 0.10},
-                                    {0.20, 0.05, 0.05},
-                                    {0.30, 0.06, 0.05},
-                                    {0.40, 0.07, 0.06},
-                                    {0.50, 0.03, 0.035},
-                                    {0.60, 0.04, 0.04}},
-                                   0.08, 0.03);
+                                  {0.10, 0.14, 0.10},
+                                  {0.20, 0.05, 0.05},
+                                  {0.30, 0.06, 0.05},
+                                  {0.40, 0.07, 0.06},
+                                  {0.50, 0.03, 0.035},
+                                  {0.60, 0.04, 0.04}},
+                                 0.08, 0.03);
 }
 
 struct EdgeUse {
@@ -45,7 +45,10 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeUse> edgeUses(const Triang
     for (int c = 0; c < 3; ++c) {
       const std::uint32_t a = mesh.indices[3 * t + c];
       const std::uint32_t b = mesh.indices[3 * t + (c + 1) % 3];
-      if (a < b) ++uses[{a, b}].forward; else ++uses[{b, a}].backward;
+      if (a < b)
+        ++uses[{a, b}].forward;
+      else
+        ++uses[{b, a}].backward;
     }
   }
   return uses;
@@ -70,8 +73,8 @@ void expectClosedOrientedSphere(const TriangleMesh& mesh) {
     ASSERT_EQ(use.forward, 1) << "edge " << edge.first << "-" << edge.second;
     ASSERT_EQ(use.backward, 1) << "edge " << edge.first << "-" << edge.second;
   }
-  const long euler = static_cast<long>(mesh.vertexCount()) - static_cast<long>(uses.size()) +
-                     static_cast<long>(mesh.triangleCount());
+  const long euler =
+      static_cast<long>(mesh.vertexCount()) - static_cast<long>(uses.size()) + static_cast<long>(mesh.triangleCount());
   EXPECT_EQ(euler, 2);
 }
 
@@ -90,7 +93,7 @@ void expectValidAttributes(const TriangleMesh& mesh) {
 // Every triangle corner lies on its own patch at the recorded parameters: shared vertices are on
 // both patches, so the mesh has no geometric crack either.
 void expectCornersOnTheirPatches(const TriangleMesh& mesh, const Tessellator& tessellator,
-                                     const std::vector<BezierPatch>& patches) {
+                                 const std::vector<BezierPatch>& patches) {
   const auto& corners = tessellator.triangleCornerParameters();
   ASSERT_EQ(corners.size(), mesh.indices.size());
   for (std::size_t c = 0; c < corners.size(); ++c) {
@@ -103,8 +106,7 @@ void expectCornersOnTheirPatches(const TriangleMesh& mesh, const Tessellator& te
 // Largest |F(x) - L(x)| over samples of every triangle: an upper bound of the distance between
 // mesh and surface (each is within it of the other). Also per patch.
 double maxParametricError(const TriangleMesh& mesh, const Tessellator& tessellator,
-                            const std::vector<BezierPatch>& patches,
-                            std::vector<double>* per_patch = nullptr) {
+                          const std::vector<BezierPatch>& patches, std::vector<double>* per_patch = nullptr) {
   constexpr int kSteps = 5;
   if (per_patch) per_patch->assign(patches.size(), 0.0);
   double worst = 0.0;
@@ -115,8 +117,7 @@ double maxParametricError(const TriangleMesh& mesh, const Tessellator& tessellat
       for (int b = 0; a + b <= kSteps; ++b) {
         const double wa = double(a) / kSteps, wb = double(b) / kSteps, wc = 1.0 - wa - wb;
         const Eigen::Vector2d uv =
-            (wa * corners[3 * t] + wb * corners[3 * t + 1] + wc * corners[3 * t + 2])
-                .cwiseMax(0.0).cwiseMin(1.0);
+            (wa * corners[3 * t] + wb * corners[3 * t + 1] + wc * corners[3 * t + 2]).cwiseMax(0.0).cwiseMin(1.0);
         const Eigen::Vector3d on_mesh = wa * mesh.positions[mesh.indices[3 * t]].cast<double>() +
                                         wb * mesh.positions[mesh.indices[3 * t + 1]].cast<double>() +
                                         wc * mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
@@ -174,8 +175,8 @@ TEST(Tessellation, MixedLevelsStayWatertight) {
 }
 
 TEST(Tessellation, OpenTubeHasBoundaryOnlyAtItsRims) {
-  const PatchSurface tube = makeGeneralizedCylinder(
-      {{0.0, 0.1, 0.1}, {0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.3, 0.1, 0.1}}, 0.0, 0.0);
+  const PatchSurface tube =
+      makeGeneralizedCylinder({{0.0, 0.1, 0.1}, {0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.3, 0.1, 0.1}}, 0.0, 0.0);
   Tessellator tessellator;
   const std::vector<int> levels = {2, 7, 3, 4};
   const TriangleMesh& mesh = tessellator.tessellate(tube.patches, tube.topology, levels);
@@ -234,8 +235,7 @@ TEST(Tessellation, ScreenSpaceLevelsFollowDistance) {
   const double focal = camera.viewport_height_pixels / (2.0 * std::tan(0.5 * camera.vertical_fov_radians));
   for (std::size_t p = 0; p < surface.patches.size(); ++p) {
     const BezierPatch& each = surface.patches[p];
-    const Eigen::Vector3d nearest =
-        camera.position.cwiseMax(each.boundingBoxMin()).cwiseMin(each.boundingBoxMax());
+    const Eigen::Vector3d nearest = camera.position.cwiseMax(each.boundingBoxMin()).cwiseMin(each.boundingBoxMax());
     EXPECT_LE(per_patch[p] * focal / (nearest - camera.position).norm(), budget) << p;
   }
   EXPECT_THROW(levelForScreenError(patch, CameraView{Eigen::Vector3d::Zero(), 0.0, 100.0}, 1.0, 8),
@@ -286,8 +286,7 @@ TEST(Tessellation, RejectsInconsistentInput) {
   Tessellator tessellator;
   EXPECT_THROW(tessellator.tessellate(surface.patches, surface.topology, std::vector<int>(3, 4)),
                std::invalid_argument);
-  EXPECT_THROW(tessellator.tessellate(surface.patches, surface.topology,
-                                      std::vector<int>(surface.patches.size(), 0)),
+  EXPECT_THROW(tessellator.tessellate(surface.patches, surface.topology, std::vector<int>(surface.patches.size(), 0)),
                std::invalid_argument);
   // Linking edges that are not the same curve is caught, not silently welded.
   PatchTopology wrong(surface.patches.size());

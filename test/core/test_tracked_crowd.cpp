@@ -109,7 +109,8 @@ struct Follow {
       root_errors.push_back((human.walker->position() - path(render)).norm());
       const Eigen::Vector2d travel = path(render + 0.05) - path(render - 0.05);
       if (travel.norm() > 0.05) {
-        heading_errors.push_back(std::abs(std::remainder(human.walker->heading() - std::atan2(travel.y(), travel.x()), 2 * M_PI)));
+        heading_errors.push_back(
+            std::abs(std::remainder(human.walker->heading() - std::atan2(travel.y(), travel.x()), 2 * M_PI)));
       }
     }
   }

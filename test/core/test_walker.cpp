@@ -118,7 +118,8 @@ TEST(Walker, WalksTheDefaultLoopVisitingEveryWaypointInOrder) {
   for (int i = 0; i < 6000; ++i) {
     w.step(0.01, angles, pose);
     for (std::size_t k = 0; k < route.waypoints.size(); ++k) {
-      if ((w.position() - route.waypoints[k]).norm() <= 0.3 && (visits.empty() || visits.back() != k)) visits.push_back(k);
+      if ((w.position() - route.waypoints[k]).norm() <= 0.3 && (visits.empty() || visits.back() != k))
+        visits.push_back(k);
     }
   }
   ASSERT_GE(visits.size(), 10u) << "fewer than two and a half laps in a minute";
@@ -219,10 +220,12 @@ TEST(SpeedGait, AMotionThatDoesNotWalkIsRefused) {
 
 TEST(NormativeGait, ATableOutOfOrderIsRefusedWithItsPlace) {
   const std::string curve = "{a0: 0.1, a: [0.1], b: [0.0]}";
-  const std::string curves = "curves: {hip_flexion: " + curve + ", knee_flexion: " + curve + ", ankle_dorsiflexion: " + curve + "}";
-  const std::string table = "classes:\n  - {name: A, dimensionless_speed: 0.4, dimensionless_cadence: 0.5, dimensionless_stride: 1.5, " +
-                            curves + "}\n  - {name: B, dimensionless_speed: 0.3, dimensionless_cadence: 0.5, dimensionless_stride: 1.5, " +
-                            curves + "}\n";
+  const std::string curves =
+      "curves: {hip_flexion: " + curve + ", knee_flexion: " + curve + ", ankle_dorsiflexion: " + curve + "}";
+  const std::string table =
+      "classes:\n  - {name: A, dimensionless_speed: 0.4, dimensionless_cadence: 0.5, dimensionless_stride: 1.5, " +
+      curves + "}\n  - {name: B, dimensionless_speed: 0.3, dimensionless_cadence: 0.5, dimensionless_stride: 1.5, " +
+      curves + "}\n";
   try {
     parseNormativeGaitYaml(table, "t.yaml");
     FAIL() << "speeds out of order were accepted";

@@ -147,7 +147,9 @@ TEST(SmoothFolds, SlopesAreTheDerivativeOfTheHeightsAndTheTileWraps) {
   for (int row = 0; row < map.height; ++row) {
     for (int column = 0; column < map.width; ++column) {
       // Central differences across the wrap too: the series is periodic.
-      const auto h = [&](int c, int r) { return map.heights[map.index((c + map.width) % map.width, (r + map.height) % map.height)]; };
+      const auto h = [&](int c, int r) {
+        return map.heights[map.index((c + map.width) % map.width, (r + map.height) % map.height)];
+      };
       const double du = (h(column + 1, row) - h(column - 1, row)) / (2.0 * pixel_u);
       const double dv = (h(column, row + 1) - h(column, row - 1)) / (2.0 * pixel_v);
       worst_u = std::max(worst_u, std::abs(du - map.slope_u[map.index(column, row)]));

@@ -53,7 +53,8 @@ double flexionSign(const char* joint, const char* tip, const Eigen::Vector3d& to
 
 SkeletonPose kneeBent(double radians, const char* joint = "l_knee") {
   JointAngles angles = zeroAngles();
-  angles[dofOf(joint, JointAxis::kY)] = radians * flexionSign(joint, joint[0] == 'l' ? "l_ankle" : "r_ankle", -Eigen::Vector3d::UnitX());
+  angles[dofOf(joint, JointAxis::kY)] =
+      radians * flexionSign(joint, joint[0] == 'l' ? "l_ankle" : "r_ankle", -Eigen::Vector3d::UnitX());
   return poseOf(angles);
 }
 
@@ -102,8 +103,10 @@ TEST(WrinklePlacement, StretchOfAKnownPatchPair) {
   // compression along a diagonal.
   const double gamma = 0.4;
   const PrincipalStretch sheared = measureStretch(rest, {flatPatch(1.0, 1.0, gamma)}, SurfacePoint{0, 0.5, 0.5});
-  EXPECT_NEAR(sheared.smallest, std::sqrt(1.0 + gamma * gamma / 2.0 - gamma * std::sqrt(1.0 + gamma * gamma / 4.0)), 1e-12);
-  EXPECT_NEAR(sheared.largest, std::sqrt(1.0 + gamma * gamma / 2.0 + gamma * std::sqrt(1.0 + gamma * gamma / 4.0)), 1e-12);
+  EXPECT_NEAR(sheared.smallest, std::sqrt(1.0 + gamma * gamma / 2.0 - gamma * std::sqrt(1.0 + gamma * gamma / 4.0)),
+              1e-12);
+  EXPECT_NEAR(sheared.largest, std::sqrt(1.0 + gamma * gamma / 2.0 + gamma * std::sqrt(1.0 + gamma * gamma / 4.0)),
+              1e-12);
   EXPECT_GT(std::abs(sheared.direction.x()), 0.4);
   EXPECT_GT(std::abs(sheared.direction.y()), 0.4);
   // A rigid motion changes nothing.
@@ -159,7 +162,8 @@ TEST(WrinklePlacement, RegionsOfEachGarment) {
     return result;
   };
   using Names = std::vector<std::string>;
-  EXPECT_EQ(names(WrinklePlacement(makeGarment("pants"), skeleton(), body().shape)), (Names{"l_knee_back", "r_knee_back", "waist"}));
+  EXPECT_EQ(names(WrinklePlacement(makeGarment("pants"), skeleton(), body().shape)),
+            (Names{"l_knee_back", "r_knee_back", "waist"}));
   EXPECT_EQ(names(WrinklePlacement(makeGarment("jacket"), skeleton(), body().shape)),
             (Names{"l_elbow_inside", "r_elbow_inside", "waist"}));
   EXPECT_EQ(names(WrinklePlacement(makeGarment("skirt"), skeleton(), body().shape)), (Names{"waist"}));
@@ -174,8 +178,9 @@ TEST(WrinklePlacement, KneeBendCompressesBehindTheKneeOnly) {
   const std::vector<BezierPatch> posed = posedPatches(pants, pose);
   const RegionCompression left = placement.measureRegion(posed, pose, placement.region("l_knee_back"));
   const RegionCompression right = placement.measureRegion(posed, pose, placement.region("r_knee_back"));
-  std::cout << "knee 70 deg: l_knee_back alpha " << left.alpha << " (min " << left.alpha_minimum << ", " << left.wrinkles.chain
-            << ", h1 " << left.wrinkles.amplitude << " m), local " << left.alpha_local << ", r_knee_back " << right.alpha << "\n";
+  std::cout << "knee 70 deg: l_knee_back alpha " << left.alpha << " (min " << left.alpha_minimum << ", "
+            << left.wrinkles.chain << ", h1 " << left.wrinkles.amplitude << " m), local " << left.alpha_local
+            << ", r_knee_back " << right.alpha << "\n";
   EXPECT_LT(left.alpha, 0.9);
   EXPECT_TRUE(left.wrinkles.wrinkled);
   EXPECT_GT(left.wrinkles.amplitude, 0.0);
@@ -192,7 +197,8 @@ TEST(WrinklePlacement, KneeBendCompressesBehindTheKneeOnly) {
     const PrincipalStretch s = placement.stretchAt(posed, at);
     if (s.alpha > WrinklePlacementOptions().alpha_threshold) continue;
     const PatchDerivatives rest = placement.restPatches()[at.patch].derivatives(at.u, at.v);
-    const Eigen::Vector3d rest_direction = (rest.d_du * s.direction_uv.x() + rest.d_dv * s.direction_uv.y()).normalized();
+    const Eigen::Vector3d rest_direction =
+        (rest.d_du * s.direction_uv.x() + rest.d_dv * s.direction_uv.y()).normalized();
     ++compressed;
     if (std::abs(rest_direction.dot(thigh_axis)) > 0.7) ++along_leg;
   }
@@ -225,8 +231,8 @@ TEST(WrinklePlacement, KneeBendCompressesBehindTheKneeOnly) {
       }
     }
   }
-  std::cout << "knee 70 deg: front of thigh min alpha " << front_min << " (" << front_samples << " samples), back of leg far from the knee "
-            << far_back_min << " (" << far_back_samples << ")\n";
+  std::cout << "knee 70 deg: front of thigh min alpha " << front_min << " (" << front_samples
+            << " samples), back of leg far from the knee " << far_back_min << " (" << far_back_samples << ")\n";
   EXPECT_GT(front_samples, 10);
   EXPECT_GT(far_back_samples, 10);
   EXPECT_GT(front_min, 0.9);
@@ -243,7 +249,8 @@ TEST(WrinklePlacement, BehindKneeAlphaFallsMonotonicallyWithFlexion) {
   double previous = 1.0 + 1e-12;
   for (int degrees = 5; degrees <= 120; degrees += 5) {
     const SkeletonPose pose = kneeBent(degrees * kPi / 180.0);
-    const RegionCompression region = placement.measureRegion(posedPatches(pants, pose), pose, placement.region("l_knee_back"));
+    const RegionCompression region =
+        placement.measureRegion(posedPatches(pants, pose), pose, placement.region("l_knee_back"));
     const double alpha = region.alpha;
     std::cout << "knee " << degrees << " deg: l_knee_back alpha " << alpha << " (local " << region.alpha_local << ")\n";
     if (previous > 0.0) {
@@ -265,13 +272,14 @@ TEST(WrinklePlacement, ElbowBendCompressesInsideTheElbow) {
   const std::vector<BezierPatch> posed = posedPatches(jacket, pose);
   const RegionCompression inside = placement.measureRegion(posed, pose, placement.region("l_elbow_inside"));
   const RegionCompression other = placement.measureRegion(posed, pose, placement.region("r_elbow_inside"));
-  std::cout << "elbow 80 deg: l_elbow_inside alpha " << inside.alpha << " (" << inside.wrinkles.chain << "), r_elbow_inside "
-            << other.alpha << "\n";
+  std::cout << "elbow 80 deg: l_elbow_inside alpha " << inside.alpha << " (" << inside.wrinkles.chain
+            << "), r_elbow_inside " << other.alpha << "\n";
   EXPECT_LT(inside.alpha, 0.9);
   EXPECT_GT(other.alpha, 0.999);
   // The outside of the elbow (facing backwards) is stretched, not compressed.
   const std::vector<BezierPatch>& rest = placement.restPatches();
-  const Eigen::Vector3d elbow = poseOf(zeroAngles()).bone_in_world[static_cast<std::size_t>(skeleton().findBone("l_elbow"))].translation;
+  const Eigen::Vector3d elbow =
+      poseOf(zeroAngles()).bone_in_world[static_cast<std::size_t>(skeleton().findBone("l_elbow"))].translation;
   double outside_min = 1.0;
   for (std::uint32_t p = 0; p < rest.size(); ++p) {
     if (jacket.net().patchPiece(p) != "l_sleeve") continue;
@@ -293,8 +301,10 @@ TEST(WrinklePlacement, WaistTwistCompressesTheWaistDiagonally) {
     const WrinklePlacement placement(garment, skeleton(), body().shape);
     JointAngles angles = zeroAngles();
     angles[dofOf("waist", JointAxis::kZ)] = 0.4;
-    const RegionCompression waist = placement.measureRegion(posedPatches(garment, poseOf(angles)), poseOf(angles), placement.region("waist"));
-    std::cout << name << " waist twist 0.4 rad: alpha " << waist.alpha << " direction " << waist.direction.transpose() << "\n";
+    const RegionCompression waist =
+        placement.measureRegion(posedPatches(garment, poseOf(angles)), poseOf(angles), placement.region("waist"));
+    std::cout << name << " waist twist 0.4 rad: alpha " << waist.alpha << " direction " << waist.direction.transpose()
+              << "\n";
     EXPECT_LT(waist.alpha, 0.97);
     EXPECT_TRUE(waist.wrinkles.wrinkled);
     // A shear's compression is diagonal: neither along the body axis nor around it.
@@ -302,7 +312,8 @@ TEST(WrinklePlacement, WaistTwistCompressesTheWaistDiagonally) {
     EXPECT_LT(std::abs(waist.direction.z()), 0.95);
     // Twisting the other way compresses the other diagonal: alpha about the same.
     angles[dofOf("waist", JointAxis::kZ)] = -0.4;
-    const RegionCompression back = placement.measureRegion(posedPatches(garment, poseOf(angles)), poseOf(angles), placement.region("waist"));
+    const RegionCompression back =
+        placement.measureRegion(posedPatches(garment, poseOf(angles)), poseOf(angles), placement.region("waist"));
     EXPECT_LT(back.alpha, 0.97);
   }
 }
@@ -324,8 +335,8 @@ TEST(WrinklePlacement, WalkBehindKneeIsMostCompressedWhenTheKneeBendsMost) {
   const auto most_bent = std::max_element(bend.begin(), bend.end()) - bend.begin();
   const auto least_bent = std::min_element(bend.begin(), bend.end()) - bend.begin();
   std::cout << "walk: lowest l_knee_back alpha " << alpha[lowest] << " at pose " << lowest << ", knee bent most ("
-            << bend[most_bent] * 180.0 / kPi << " deg) at pose " << most_bent << "; least bent " << bend[least_bent] * 180.0 / kPi
-            << " deg, alpha there " << alpha[least_bent] << "\n";
+            << bend[most_bent] * 180.0 / kPi << " deg) at pose " << most_bent << "; least bent "
+            << bend[least_bent] * 180.0 / kPi << " deg, alpha there " << alpha[least_bent] << "\n";
   const long n = static_cast<long>(poses.size());
   const long distance = std::min(std::labs(lowest - most_bent), n - std::labs(lowest - most_bent));
   EXPECT_LE(distance, 2);
@@ -362,7 +373,8 @@ TEST(WrinklePlacement, PoseMapReliefGrowsWithCompression) {
   }
   double bound = 0.0;
   for (std::uint32_t p : patches) {
-    bound = std::max(bound, std::min(placement.layouts()[p].cell.half_width_x, placement.layouts()[p].cell.half_length_y));
+    bound =
+        std::max(bound, std::min(placement.layouts()[p].cell.half_width_x, placement.layouts()[p].cell.half_length_y));
   }
   for (int degrees : {0, 4, 8, 12, 16, 30, 45, 60, 75}) {
     const SkeletonPose pose = kneeBent(degrees * kPi / 180.0);
@@ -379,7 +391,8 @@ TEST(WrinklePlacement, PoseMapReliefGrowsWithCompression) {
         }
       }
     }
-    std::cout << "knee " << degrees << " deg: alpha " << alpha << ", max wrinkle height behind the knee " << height * 1000.0 << " mm\n";
+    std::cout << "knee " << degrees << " deg: alpha " << alpha << ", max wrinkle height behind the knee "
+              << height * 1000.0 << " mm\n";
     if (degrees > 0) {
       EXPECT_LT(alpha, previous_alpha) << degrees;
     }
@@ -437,9 +450,9 @@ TEST(WrinklePlacement, PatternRuleAndAmplitude) {
     for (std::size_t p = 0; p < garment.patches().size(); ++p) {
       const std::string& piece = garment.net().patchPiece(p);
       const PatchWrinkleLayout& layout = placement.layouts()[p];
-      std::cout << name << " patch " << p << " (" << piece << "): " << layout.rows << " x " << layout.cells_around << " cells "
-                << 2000.0 * layout.cell.half_length_y << " x " << 2000.0 * layout.cell.half_width_x << " mm, turn/cell "
-                << layout.turn_per_cell << " rad -> " << layout.chain << "\n";
+      std::cout << name << " patch " << p << " (" << piece << "): " << layout.rows << " x " << layout.cells_around
+                << " cells " << 2000.0 * layout.cell.half_length_y << " x " << 2000.0 * layout.cell.half_width_x
+                << " mm, turn/cell " << layout.turn_per_cell << " rad -> " << layout.chain << "\n";
       if (piece.find("sleeve") != std::string::npos || piece.find("_leg") != std::string::npos) {
         EXPECT_NE(layout.chain, "I") << p;
       }
@@ -492,7 +505,9 @@ TEST(WrinklePlacement, PerVertexApiEqualsTheDirectComputation) {
         }
         EXPECT_LT(worst_tangent, 1e-5);
         EXPECT_LT(worst, 1e-3);  // float: the renderer's precision
-        if (k == 0) std::cout << name << " level " << level << ": " << mesh.vertexCount() << " vertices, lowest alpha " << lowest << "\n";
+        if (k == 0)
+          std::cout << name << " level " << level << ": " << mesh.vertexCount() << " vertices, lowest alpha " << lowest
+                    << "\n";
       }
       // update(): same result, prepares only when the layout changes.
       std::vector<float> updated;
@@ -542,7 +557,8 @@ TEST(WrinklePlacement, ShownStrengthGrowsWithTheKneeBendWithoutJumps) {
     for (const SurfacePoint& at : knee.samples) {
       const PatchDerivatives rest = placement.restPatches()[at.patch].derivatives(at.u, at.v);
       const PatchDerivatives now = posed[at.patch].derivatives(at.u, at.v);
-      sum += vertexStretchAt(inverseRestMetric(rest.d_du, rest.d_dv), now.d_du.cast<float>(), now.d_dv.cast<float>(), constants)
+      sum += vertexStretchAt(inverseRestMetric(rest.d_du, rest.d_dv), now.d_du.cast<float>(), now.d_dv.cast<float>(),
+                             constants)
                  .strength;
     }
     const double mean = sum / static_cast<double>(knee.samples.size());

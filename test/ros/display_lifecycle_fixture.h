@@ -43,8 +43,8 @@ inline long residentKilobytes() {
 // TF of a human standing in the URDF's rest pose at (x, 0, 1), now: every joint of `model` with
 // `suffix` appended to its frame names, except the one whose child link is `left_out`.
 inline std::vector<geometry_msgs::TransformStamped> restPoseTransforms(const urdf::ModelInterface& model,
-                                                                const std::string& suffix, double x,
-                                                                const std::string& left_out = "") {
+                                                                       const std::string& suffix, double x,
+                                                                       const std::string& left_out = "") {
   std::vector<geometry_msgs::TransformStamped> transforms;
   geometry_msgs::TransformStamped root;
   root.header.stamp = ros::Time::now();
@@ -119,12 +119,14 @@ class DisplayLifecycleTest : public ::testing::Test {
   int figurePixels() const {
     Ogre::RenderWindow* window = panel_->getRenderWindow();
     std::vector<unsigned char> rgb(window->getWidth() * window->getHeight() * 3);
-    window->copyContentsToMemory(Ogre::Box(0, 0, window->getWidth(), window->getHeight()),
-                                 Ogre::PixelBox(window->getWidth(), window->getHeight(), 1, Ogre::PF_BYTE_RGB, rgb.data()));
+    window->copyContentsToMemory(
+        Ogre::Box(0, 0, window->getWidth(), window->getHeight()),
+        Ogre::PixelBox(window->getWidth(), window->getHeight(), 1, Ogre::PF_BYTE_RGB, rgb.data()));
     const unsigned char background = rgb[0];
     int figure = 0;
     for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
-      if (std::abs(rgb[i] - background) + std::abs(rgb[i + 1] - background) + std::abs(rgb[i + 2] - background) > 30) ++figure;
+      if (std::abs(rgb[i] - background) + std::abs(rgb[i + 1] - background) + std::abs(rgb[i + 2] - background) > 30)
+        ++figure;
     }
     return figure;
   }
@@ -149,7 +151,9 @@ class DisplayLifecycleTest : public ::testing::Test {
     std::string text;
     for (int i = 0; i < display_->numChildren(); ++i) {
       auto* list = dynamic_cast<rviz::StatusProperty*>(display_->childAt(i));
-      for (int s = 0; list && s < list->numChildren(); ++s) text += list->childAt(s)->getName().toStdString() + " = " + list->childAt(s)->getValue().toString().toStdString() + "\n";
+      for (int s = 0; list && s < list->numChildren(); ++s)
+        text += list->childAt(s)->getName().toStdString() + " = " +
+                list->childAt(s)->getValue().toString().toStdString() + "\n";
     }
     return text;
   }

@@ -65,7 +65,7 @@ TEST_F(DisplayLifecycleTest, ThousandCyclesWithoutGrowth) {
   frames(30);
   const long after = residentKilobytes();
   std::fprintf(stderr, "resident memory: %ld kB before, %ld kB after 1000 cycles (%+.2f %%)\n", before, after,
-              100.0 * static_cast<double>(after - before) / static_cast<double>(before));
+               100.0 * static_cast<double>(after - before) / static_cast<double>(before));
   EXPECT_LE(after, before + before / 20);
   EXPECT_EQ(level(), rviz::StatusProperty::Ok);
 }
@@ -80,7 +80,8 @@ std::vector<std::string> fragmentPrograms() {
     const auto endsWith = [&](const std::string& end) {
       return name.size() > end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
     };
-    if (name.rfind("dressed_human/", 0) != 0 || !(endsWith("/skin") || endsWith("/skirt") || endsWith("/jacket"))) continue;
+    if (name.rfind("dressed_human/", 0) != 0 || !(endsWith("/skin") || endsWith("/skirt") || endsWith("/jacket")))
+      continue;
     auto material = Ogre::static_pointer_cast<Ogre::Material>(resource);
     names.push_back(material->getTechnique(0)->getPass(0)->getFragmentProgramName());
   }
@@ -200,7 +201,8 @@ TEST_F(DisplayLifecycleTest, AutomaticVertexEvaluationPicksTheCpuOnASoftwareRend
 TEST_F(DisplayLifecycleTest, MissingBoneFrameIsReportedAloneAndRecovers) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
   std::string description;
-  ASSERT_TRUE(ros::param::get("missing_bone_description", description)) << "the .test file sets missing_bone_description";
+  ASSERT_TRUE(ros::param::get("missing_bone_description", description))
+      << "the .test file sets missing_bone_description";
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(description);
   ASSERT_TRUE(model != nullptr);
   display_->subProp("Robot Description")->setValue("missing_bone_description");
@@ -221,11 +223,14 @@ TEST_F(DisplayLifecycleTest, MissingBoneFrameIsReportedAloneAndRecovers) {
   };
   const QString knee = "Frame l_knee_9";
   ASSERT_TRUE(runUntil(true, 60.0, [&] { return reported() && level() == rviz::StatusProperty::Ok; }))
-      << "the second human was never drawn:\n" << unexpectedErrors("");
+      << "the second human was never drawn:\n"
+      << unexpectedErrors("");
   // Without the knee's link, exactly one status: the shank's frame. Bones below it (the foot)
   // are still found, relative to the shank.
-  ASSERT_TRUE(runUntil(false, 30.0, [&] { return status(knee) && status(knee)->getLevel() == rviz::StatusProperty::Error; }))
-      << "no error status '" << knee.toStdString() << "':\n" << unexpectedErrors("") << allStatuses();
+  ASSERT_TRUE(
+      runUntil(false, 30.0, [&] { return status(knee) && status(knee)->getLevel() == rviz::StatusProperty::Error; }))
+      << "no error status '" << knee.toStdString() << "':\n"
+      << unexpectedErrors("") << allStatuses();
   runUntil(false, 1.0, [] { return false; });
   EXPECT_EQ(unexpectedErrors(knee), "") << "errors other than the missing frame";
   ASSERT_NE(status(knee), nullptr);
@@ -233,7 +238,8 @@ TEST_F(DisplayLifecycleTest, MissingBoneFrameIsReportedAloneAndRecovers) {
       << status(knee)->getValue().toString().toStdString();
   // The link returns: the error goes by itself.
   EXPECT_TRUE(runUntil(true, 30.0, [&] { return status(knee) == nullptr && level() == rviz::StatusProperty::Ok; }))
-      << "still reported after the frame returned:\n" << unexpectedErrors("");
+      << "still reported after the frame returned:\n"
+      << unexpectedErrors("");
 }
 
 // One display for every human in TF: humans published by this test (body_7, body_8, beside the
@@ -255,7 +261,8 @@ TEST_F(DisplayLifecycleTest, CrowdHumansComeAndGoWithoutGrowth) {
     const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
     do {
       double x = 1.0;
-      for (const std::string& suffix : published) broadcaster.sendTransform(restPoseTransforms(*model, suffix, x += 1.0));
+      for (const std::string& suffix : published)
+        broadcaster.sendTransform(restPoseTransforms(*model, suffix, x += 1.0));
       frames(2);
       ros::WallDuration(0.01).sleep();
       if (done()) return true;
@@ -267,23 +274,26 @@ TEST_F(DisplayLifecycleTest, CrowdHumansComeAndGoWithoutGrowth) {
   };
   const auto statusesOf = [&](const std::string& suffix) {
     std::string found;
-    for (const std::string& line : {"TF body" + suffix, "Pose body" + suffix, "Frame body" + suffix, "Frame waist" + suffix,
-                                    "Model body" + suffix}) {
+    for (const std::string& line : {"TF body" + suffix, "Pose body" + suffix, "Frame body" + suffix,
+                                    "Frame waist" + suffix, "Model body" + suffix}) {
       if (status(QString::fromStdString(line))) found += line + "\n";
     }
     return found;
   };
   ASSERT_TRUE(runUntil(30.0, [&] { return says("Humans", "3 in TF") && says("Surfaces", "3 humans"); }))
-      << "the node's human and two published ones were never all drawn:\n" << allStatuses();
+      << "the node's human and two published ones were never all drawn:\n"
+      << allStatuses();
   EXPECT_EQ(unexpectedErrors(""), "");
 
   published.erase("_8");
   ASSERT_TRUE(runUntil(10.0, [&] { return says("Humans", "2 in TF") && says("Surfaces", "2 humans"); }))
-      << "body_8 stopped but stayed:\n" << allStatuses();
+      << "body_8 stopped but stayed:\n"
+      << allStatuses();
   EXPECT_EQ(statusesOf("_8"), "") << "statuses of a human that left";
   published.insert("_8");
   ASSERT_TRUE(runUntil(10.0, [&] { return says("Humans", "3 in TF") && says("Surfaces", "3 humans"); }))
-      << "body_8 did not come back:\n" << allStatuses();
+      << "body_8 did not come back:\n"
+      << allStatuses();
 
   // A cycle: one frame with this test's TF, and (rebuild) the whole crowd removed and added again.
   const auto cycle = [&](int i, bool rebuild) {
@@ -360,15 +370,18 @@ TEST_F(DisplayLifecycleTest, CrowdTopicHumansComeGoAndBadMessagesAreNamed) {
   dressed_human::Crowd two;
   two.humans = {human("3", 2.0), human("4", 4.0)};
   two.humans[1].stature = 1.1f;
-  ASSERT_TRUE(runUntil(two, 30.0, [&] { return says("Humans", "2 from '/test_crowd'") && says("Surfaces", "2 humans"); }))
-      << "the two humans of the message were never drawn:\n" << allStatuses();
+  ASSERT_TRUE(
+      runUntil(two, 30.0, [&] { return says("Humans", "2 from '/test_crowd'") && says("Surfaces", "2 humans"); }))
+      << "the two humans of the message were never drawn:\n"
+      << allStatuses();
   EXPECT_EQ(unexpectedErrors(""), "");
 
   dressed_human::Crowd one;
   one.humans = {human("3", 2.0)};
   const ros::WallTime dropped = last_sent;  // the last message with human 4
   ASSERT_TRUE(runUntil(one, 5.0, [&] { return says("Humans", "1 from") && says("Surfaces", "1 humans"); }))
-      << "human 4 left the messages but stayed:\n" << allStatuses();
+      << "human 4 left the messages but stayed:\n"
+      << allStatuses();
   // Left out of the crowd message: gone once its last pose is drawn (the render delay, at most
   // 0.5 s), not frozen for the silent topic's timeout.
   const double left_after = (ros::WallTime::now() - dropped).toSec();
@@ -381,24 +394,36 @@ TEST_F(DisplayLifecycleTest, CrowdTopicHumansComeGoAndBadMessagesAreNamed) {
     std::function<void(dressed_human::Crowd&)> spoil;
   };
   const std::vector<Bad> bad = {
-      {"human '5': 47 joint angles, expected 48", [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", 6.0)); m.humans.back().joint_angles.resize(47); }},
-      {"human '5': its root position is not finite", [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", NAN)); }},
-      {"human '5': joint angle 4 is not finite", [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", 6.0)); m.humans.back().joint_angles[4] = INFINITY; }},
+      {"human '5': 47 joint angles, expected 48",
+       [&](dressed_human::Crowd& m) {
+         m.humans.push_back(human("5", 6.0));
+         m.humans.back().joint_angles.resize(47);
+       }},
+      {"human '5': its root position is not finite",
+       [&](dressed_human::Crowd& m) { m.humans.push_back(human("5", NAN)); }},
+      {"human '5': joint angle 4 is not finite",
+       [&](dressed_human::Crowd& m) {
+         m.humans.push_back(human("5", 6.0));
+         m.humans.back().joint_angles[4] = INFINITY;
+       }},
       {"human '3' appears twice", [&](dressed_human::Crowd& m) { m.humans.push_back(human("3", 8.0)); }},
-      {"human id 'a b' is not letters and digits", [&](dressed_human::Crowd& m) { m.humans.push_back(human("a b", 6.0)); }},
+      {"human id 'a b' is not letters and digits",
+       [&](dressed_human::Crowd& m) { m.humans.push_back(human("a b", 6.0)); }},
       {"frame 'nowhere' has no transform", [&](dressed_human::Crowd& m) { m.header.frame_id = "nowhere"; }},
   };
   for (const Bad& b : bad) {
     dressed_human::Crowd message = one;
     b.spoil(message);
     EXPECT_TRUE(runUntil(message, 5.0, [&] { return says("Crowd Message", b.why); }))
-        << "not reported: " << b.why << "\n" << allStatuses();
+        << "not reported: " << b.why << "\n"
+        << allStatuses();
     EXPECT_TRUE(says("Crowd Message", "'/test_crowd'")) << "the topic is not named:\n" << allStatuses();
     EXPECT_TRUE(says("Surfaces", "1 humans")) << b.why << "\n" << allStatuses();
     EXPECT_EQ(unexpectedErrors("Crowd Message"), "") << b.why;
   }
   ASSERT_TRUE(runUntil(one, 5.0, [&] { return status("Crowd Message") == nullptr; }))
-      << "a clean message did not clear the error:\n" << allStatuses();
+      << "a clean message did not clear the error:\n"
+      << allStatuses();
   EXPECT_TRUE(says("Surfaces", "1 humans")) << allStatuses();
   // The topic falls silent: its humans stay for the timeout (a late message is no departure),
   // then leave.
@@ -496,7 +521,8 @@ TEST_F(DisplayLifecycleTest, ADescriptionSetAfterTheDisplayStartedIsPickedUp) {
   const rviz::StatusProperty* urdf = status("URDF");
   ASSERT_NE(urdf, nullptr) << allStatuses();
   EXPECT_EQ(urdf->getLevel(), rviz::StatusProperty::Error);
-  EXPECT_NE(urdf->getValue().toString().toStdString().find("late_robot_description"), std::string::npos) << allStatuses();
+  EXPECT_NE(urdf->getValue().toString().toStdString().find("late_robot_description"), std::string::npos)
+      << allStatuses();
   EXPECT_FALSE(drawnOnScreen()) << "a human drawn without a robot description";
   ros::param::set("late_robot_description", description);
   bool drawn = false;

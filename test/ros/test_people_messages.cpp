@@ -123,13 +123,9 @@ TEST(PeopleMessages, TrackedPersonsAsATrackerWritesThemAreDecodedFieldByField) {
   expectDecodedAsFixtureSays("tracked_persons_tracker");
 }
 
-TEST(PeopleMessages, AgentStatesAreDecodedFieldByFieldWithoutTheRobot) {
-  expectDecodedAsFixtureSays("agent_states");
-}
+TEST(PeopleMessages, AgentStatesAreDecodedFieldByFieldWithoutTheRobot) { expectDecodedAsFixtureSays("agent_states"); }
 
-TEST(PeopleMessages, PeopleAreDecodedFieldByFieldWithTheirNamesAsIds) {
-  expectDecodedAsFixtureSays("people");
-}
+TEST(PeopleMessages, PeopleAreDecodedFieldByFieldWithTheirNamesAsIds) { expectDecodedAsFixtureSays("people"); }
 
 TEST(PeopleMessages, PedsimsTrackedPersonsIsReadAsSpencers) {
   const Fixture fixture = loadFixture("tracked_persons");
@@ -177,7 +173,8 @@ TEST(PeopleMessages, EveryTruncationOfEveryFixtureIsRefusedNamingTheTopic) {
   for (const std::string& name : kFixtures) {
     const Fixture fixture = loadFixture(name);
     for (std::size_t length = 0; length < fixture.bytes.size(); ++length) {
-      const std::vector<std::uint8_t> cut(fixture.bytes.begin(), fixture.bytes.begin() + static_cast<std::ptrdiff_t>(length));
+      const std::vector<std::uint8_t> cut(fixture.bytes.begin(),
+                                          fixture.bytes.begin() + static_cast<std::ptrdiff_t>(length));
       const std::string error = decodingError(fixture, cut);
       ASSERT_NE(error.find(kTopic), std::string::npos) << name << " cut to " << length << " bytes: '" << error << "'";
     }

@@ -11,7 +11,6 @@
 namespace dressed_human {
 namespace {
 
-
 // Off-curve point I (I % 3 != 0) of a Bezier circle of `columns` arcs starting at angle
 // `start`: unit-circle coordinates (cos-like, sin-like). The on-curve points (I % 3 == 0) are
 // the midpoints of their two neighbours: the circle obeys the midpoint rule by construction.
@@ -84,8 +83,9 @@ class Builder {
 
   // Body front and left in a bone frame at rest, made perpendicular to the bone's z axis.
   void axes(int bone, Eigen::Vector3d& front, Eigen::Vector3d& left) const {
-    const Eigen::Matrix3d r = bone == kRootFrame ? Eigen::Matrix3d::Identity()
-                                                 : rest_.bone_in_world[static_cast<std::size_t>(bone)].rotation.toRotationMatrix();
+    const Eigen::Matrix3d r = bone == kRootFrame
+                                  ? Eigen::Matrix3d::Identity()
+                                  : rest_.bone_in_world[static_cast<std::size_t>(bone)].rotation.toRotationMatrix();
     front = r.transpose() * Eigen::Vector3d::UnitX();
     left = r.transpose() * Eigen::Vector3d::UnitY();
     front.z() = 0.0;
@@ -183,7 +183,8 @@ class Builder {
           const auto [a, b] = lat.uNeighbours(i, j);
           lat.idx[j][i] = net_.addMidpoint(ControlPointKind::kBoundaryMidpoint, at(lat, a, j), at(lat, b, j), piece);
         } else if (i % 3 != 0 && rim(j)) {
-          lat.idx[j][i] = net_.addMidpoint(ControlPointKind::kBoundaryMidpoint, at(lat, i, j - 1), at(lat, i, j + 1), piece);
+          lat.idx[j][i] =
+              net_.addMidpoint(ControlPointKind::kBoundaryMidpoint, at(lat, i, j - 1), at(lat, i, j + 1), piece);
         }
       }
     }
@@ -206,8 +207,8 @@ class Builder {
     for (int pr = 0; pr < lat.patch_rows; ++pr) {
       for (int pc = 0; pc < lat.columns; ++pc) {
         GarmentControlNet::PatchIndices p{};
-        for (int a = 0; a < 4; ++a) {      // u: down the garment
-          for (int b = 0; b < 4; ++b) {    // v: around, counter-clockwise from above
+        for (int a = 0; a < 4; ++a) {    // u: down the garment
+          for (int b = 0; b < 4; ++b) {  // v: around, counter-clockwise from above
             p[BezierPatch::index(a, b)] = at(lat, lat.column(pr, pc, b), 3 * pr + a);
           }
         }
@@ -223,8 +224,10 @@ class Builder {
       Lattice lat;
       lat.columns = 2;
       lat.patch_rows = 1;
-      fill(lat, piece, [&](int i, int j) { return ringPoint(d_.sleeve[static_cast<std::size_t>(j)], 2, -M_PI / 2, i, side == 1); },
-           [](int, int) { return std::int64_t{-1}; });
+      fill(
+          lat, piece,
+          [&](int i, int j) { return ringPoint(d_.sleeve[static_cast<std::size_t>(j)], 2, -M_PI / 2, i, side == 1); },
+          [](int, int) { return std::int64_t{-1}; });
       patches(lat, [&](int, int) { return piece; });
     }
   }
@@ -262,7 +265,8 @@ class Builder {
       // some walk poses, and the 8 sectors no longer go once around it: a fold.)
       ShapeAttachment t;
       t.bone = bone;
-      t.local = a.local + scaled(bone, Eigen::Vector3d(radius.x() * std::cos(angle), radius.y() * std::sin(angle), 0.0));
+      t.local =
+          a.local + scaled(bone, Eigen::Vector3d(radius.x() * std::cos(angle), radius.y() * std::sin(angle), 0.0));
       const std::uint32_t source = net_.addShape(t, "crotch");
       crotch_points.push_back({twist[k], net_.addTangentProjection(source, c, bone, "crotch")});
     }
@@ -273,14 +277,29 @@ class Builder {
     const GarmentType type = d_.type;
     Lattice lat;
     lat.columns = 4;
-    std::vector<int> explicit_rows;   // lattice row of rows[k]
-    std::vector<int> leg_rows;        // lattice rows of the leg's inner control rows, then the hem
+    std::vector<int> explicit_rows;  // lattice row of rows[k]
+    std::vector<int> leg_rows;       // lattice rows of the leg's inner control rows, then the hem
     switch (type) {
-      case GarmentType::kJacket: lat.patch_rows = 2; explicit_rows = {0, 1, 2, 4, 5, 6}; break;
-      case GarmentType::kSkirt: lat.patch_rows = 2; explicit_rows = {0, 1, 2}; leg_rows = {4, 5, 6}; break;
+      case GarmentType::kJacket:
+        lat.patch_rows = 2;
+        explicit_rows = {0, 1, 2, 4, 5, 6};
+        break;
+      case GarmentType::kSkirt:
+        lat.patch_rows = 2;
+        explicit_rows = {0, 1, 2};
+        leg_rows = {4, 5, 6};
+        break;
       // Two patch rows per trouser leg: one cubic from crotch to ankle cannot bend with the knee.
-      case GarmentType::kPants: lat.patch_rows = 3; explicit_rows = {0, 1, 2}; leg_rows = {4, 5, 7, 8, 9}; break;
-      case GarmentType::kOnePiece: lat.patch_rows = 4; explicit_rows = {0, 1, 2, 4, 5, 7, 8}; leg_rows = {10, 11, 12}; break;
+      case GarmentType::kPants:
+        lat.patch_rows = 3;
+        explicit_rows = {0, 1, 2};
+        leg_rows = {4, 5, 7, 8, 9};
+        break;
+      case GarmentType::kOnePiece:
+        lat.patch_rows = 4;
+        explicit_rows = {0, 1, 2, 4, 5, 7, 8};
+        leg_rows = {10, 11, 12};
+        break;
     }
     if (d_.rows.size() != explicit_rows.size()) {
       throw GarmentError(d_.name + ": a " + garmentTypeName(type) + " needs " + std::to_string(explicit_rows.size()) +
@@ -290,11 +309,12 @@ class Builder {
     if (!leg_rows.empty()) {
       const std::size_t inner = leg_rows.size() - 1;
       if (fractions.empty()) {
-        for (std::size_t k = 1; k <= inner; ++k) fractions.push_back(static_cast<double>(k) / static_cast<double>(inner + 1));
+        for (std::size_t k = 1; k <= inner; ++k)
+          fractions.push_back(static_cast<double>(k) / static_cast<double>(inner + 1));
       }
       if (fractions.size() != inner) {
-        throw GarmentError(d_.name + ": a " + garmentTypeName(type) + " needs " + std::to_string(inner) + " leg row fractions, got " +
-                           std::to_string(fractions.size()));
+        throw GarmentError(d_.name + ": a " + garmentTypeName(type) + " needs " + std::to_string(inner) +
+                           " leg row fractions, got " + std::to_string(fractions.size()));
       }
       for (std::size_t k = 0; k < inner; ++k) {
         if (!(fractions[k] > (k == 0 ? 0.0 : fractions[k - 1]) && fractions[k] < 1.0)) {
@@ -321,7 +341,9 @@ class Builder {
       }
       return -1;
     };
-    const std::string upper_piece = type == GarmentType::kJacket ? "torso" : type == GarmentType::kOnePiece ? "bodice" : "hips";
+    const std::string upper_piece = type == GarmentType::kJacket     ? "torso"
+                                    : type == GarmentType::kOnePiece ? "bodice"
+                                                                     : "hips";
     auto shape = [&](int i, int j) -> ShapeAttachment {
       const bool right = i > n / 2;
       for (std::size_t k = 0; k < explicit_rows.size(); ++k) {
@@ -361,10 +383,12 @@ class Builder {
 Garment::Garment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape)
     : description_(description) {
   if (description_.type == GarmentType::kJacket && description_.sleeve.size() != 4) {
-    throw GarmentError(description_.name + ": a jacket needs 4 sleeve rows, got " + std::to_string(description_.sleeve.size()));
+    throw GarmentError(description_.name + ": a jacket needs 4 sleeve rows, got " +
+                       std::to_string(description_.sleeve.size()));
   }
   if (!description_.sleeve.empty() && description_.sleeve.size() != 4) {
-    throw GarmentError(description_.name + ": a sleeve needs 4 rows, got " + std::to_string(description_.sleeve.size()));
+    throw GarmentError(description_.name + ": a sleeve needs 4 rows, got " +
+                       std::to_string(description_.sleeve.size()));
   }
   Builder builder(description_, skeleton, shape, net_);
   try {

@@ -10,10 +10,14 @@ namespace dressed_human {
 
 const char* controlPointKindName(ControlPointKind kind) {
   switch (kind) {
-    case ControlPointKind::kShape: return "shape";
-    case ControlPointKind::kBoundaryMidpoint: return "boundary midpoint";
-    case ControlPointKind::kCornerMidpoint: return "corner midpoint";
-    case ControlPointKind::kTangentProjection: return "tangent projection";
+    case ControlPointKind::kShape:
+      return "shape";
+    case ControlPointKind::kBoundaryMidpoint:
+      return "boundary midpoint";
+    case ControlPointKind::kCornerMidpoint:
+      return "corner midpoint";
+    case ControlPointKind::kTangentProjection:
+      return "tangent projection";
   }
   return "?";
 }
@@ -22,10 +26,18 @@ std::array<std::uint32_t, 4> edgeIndices(const GarmentControlNet::PatchIndices& 
   std::array<std::uint32_t, 4> out{};
   for (int t = 0; t < 4; ++t) {
     switch (edge) {
-      case PatchEdge::kV0: out[t] = patch[BezierPatch::index(t, 0)]; break;
-      case PatchEdge::kV1: out[t] = patch[BezierPatch::index(t, 3)]; break;
-      case PatchEdge::kU0: out[t] = patch[BezierPatch::index(0, t)]; break;
-      case PatchEdge::kU1: out[t] = patch[BezierPatch::index(3, t)]; break;
+      case PatchEdge::kV0:
+        out[t] = patch[BezierPatch::index(t, 0)];
+        break;
+      case PatchEdge::kV1:
+        out[t] = patch[BezierPatch::index(t, 3)];
+        break;
+      case PatchEdge::kU0:
+        out[t] = patch[BezierPatch::index(0, t)];
+        break;
+      case PatchEdge::kU1:
+        out[t] = patch[BezierPatch::index(3, t)];
+        break;
     }
   }
   return out;

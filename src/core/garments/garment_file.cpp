@@ -10,30 +10,42 @@ namespace dressed_human {
 
 const char* garmentTypeName(GarmentType type) {
   switch (type) {
-    case GarmentType::kJacket: return "jacket";
-    case GarmentType::kSkirt: return "skirt";
-    case GarmentType::kPants: return "pants";
-    case GarmentType::kOnePiece: return "one_piece";
+    case GarmentType::kJacket:
+      return "jacket";
+    case GarmentType::kSkirt:
+      return "skirt";
+    case GarmentType::kPants:
+      return "pants";
+    case GarmentType::kOnePiece:
+      return "one_piece";
   }
   return "?";
 }
 
 std::size_t garmentRowCount(GarmentType type) {
   switch (type) {
-    case GarmentType::kJacket: return 6;
-    case GarmentType::kSkirt: return 3;
-    case GarmentType::kPants: return 3;
-    case GarmentType::kOnePiece: return 7;
+    case GarmentType::kJacket:
+      return 6;
+    case GarmentType::kSkirt:
+      return 3;
+    case GarmentType::kPants:
+      return 3;
+    case GarmentType::kOnePiece:
+      return 7;
   }
   return 0;
 }
 
 std::size_t legRowFractionCount(GarmentType type) {
   switch (type) {
-    case GarmentType::kJacket: return 0;
-    case GarmentType::kSkirt: return 2;
-    case GarmentType::kPants: return 4;
-    case GarmentType::kOnePiece: return 2;
+    case GarmentType::kJacket:
+      return 0;
+    case GarmentType::kSkirt:
+      return 2;
+    case GarmentType::kPants:
+      return 4;
+    case GarmentType::kOnePiece:
+      return 2;
   }
   return 0;
 }
@@ -66,8 +78,10 @@ class GarmentYamlReader : public YamlReader<GarmentError> {
   std::string frame(const YAML::Node& node, const std::string& key, bool left_only) const {
     const std::string name = text(node, key);
     if (name == "body" && !left_only) return name;
-    if (skeleton_.findBone(name) < 0) fail(node, key, "unknown frame '" + name + "'; expected \"body\" or a bone of the skeleton");
-    if (left_only && name.rfind("l_", 0) != 0) fail(node, key, "expected a left bone (l_...), mirrored to the right, got '" + name + "'");
+    if (skeleton_.findBone(name) < 0)
+      fail(node, key, "unknown frame '" + name + "'; expected \"body\" or a bone of the skeleton");
+    if (left_only && name.rfind("l_", 0) != 0)
+      fail(node, key, "expected a left bone (l_...), mirrored to the right, got '" + name + "'");
     if (name.rfind("l_", 0) == 0 && skeleton_.findBone("r_" + name.substr(2)) < 0) {
       fail(node, key, "left bone '" + name + "' has no mirror 'r_" + name.substr(2) + "'");
     }
@@ -95,13 +109,15 @@ class GarmentYamlReader : public YamlReader<GarmentError> {
     return r;
   }
 
-  std::vector<GarmentRing> rings(const YAML::Node& node, const std::string& key, std::size_t count, bool left_only) const {
+  std::vector<GarmentRing> rings(const YAML::Node& node, const std::string& key, std::size_t count,
+                                 bool left_only) const {
     if (!node.IsSequence()) fail(node, key, "expected a list of rings, got " + describe(node));
     if (node.size() != count) {
       fail(node, key, "expected " + std::to_string(count) + " rings, got " + std::to_string(node.size()));
     }
     std::vector<GarmentRing> out;
-    for (std::size_t i = 0; i < node.size(); ++i) out.push_back(ring(node[i], key + "[" + std::to_string(i) + "]", left_only));
+    for (std::size_t i = 0; i < node.size(); ++i)
+      out.push_back(ring(node[i], key + "[" + std::to_string(i) + "]", left_only));
     return out;
   }
 
@@ -128,7 +144,9 @@ void readCrotch(const GarmentYamlReader& reader, const YAML::Node& crotch, Garme
     const std::string path = std::string("crotch.") + key;
     out = reader.vector<2>(crotch[key], path);
     for (int i = 0; i < 2; ++i) {
-      if (!(out[i] > 0.0)) reader.fail(crotch[key][i], path + "[" + std::to_string(i) + "]", "must be > 0, got " + crotch[key][i].Scalar());
+      if (!(out[i] > 0.0))
+        reader.fail(crotch[key][i], path + "[" + std::to_string(i) + "]",
+                    "must be > 0, got " + crotch[key][i].Scalar());
       reader.numberWithin(crotch[key][i], path + "[" + std::to_string(i) + "]", 0.0, kMaxRadius, " m");
     }
   };
@@ -149,18 +167,24 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
   if (document["name"]) g.name = reader.text(document["name"], "name");
   const YAML::Node type = reader.require(document, "type", "");
   const std::string type_name = reader.text(type, "type");
-  if (type_name == "jacket") g.type = GarmentType::kJacket;
-  else if (type_name == "skirt") g.type = GarmentType::kSkirt;
-  else if (type_name == "pants") g.type = GarmentType::kPants;
-  else if (type_name == "one_piece") g.type = GarmentType::kOnePiece;
-  else reader.fail(type, "type", "unknown garment type '" + type_name + "'; expected jacket, skirt, pants or one_piece");
+  if (type_name == "jacket")
+    g.type = GarmentType::kJacket;
+  else if (type_name == "skirt")
+    g.type = GarmentType::kSkirt;
+  else if (type_name == "pants")
+    g.type = GarmentType::kPants;
+  else if (type_name == "one_piece")
+    g.type = GarmentType::kOnePiece;
+  else
+    reader.fail(type, "type", "unknown garment type '" + type_name + "'; expected jacket, skirt, pants or one_piece");
   if (g.name.empty()) g.name = type_name;
 
   if (document["colour"]) {
     g.colour = reader.vector<3>(document["colour"], "colour");
     for (int i = 0; i < 3; ++i) {
       if (g.colour[i] < 0.0 || g.colour[i] > 1.0) {
-        reader.fail(document["colour"][i], "colour[" + std::to_string(i) + "]", "must lie in [0, 1], got " + document["colour"][i].Scalar());
+        reader.fail(document["colour"][i], "colour[" + std::to_string(i) + "]",
+                    "must lie in [0, 1], got " + document["colour"][i].Scalar());
       }
     }
   }
@@ -187,14 +211,16 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
     if (const YAML::Node rows = legs["rows"]) {
       const std::size_t count = legRowFractionCount(g.type);
       if (!rows.IsSequence() || rows.size() != count) {
-        reader.fail(rows, "legs.rows", "expected a list of " + std::to_string(count) + " fractions for a " + type_name + ", got " +
-                                           reader.describe(rows));
+        reader.fail(rows, "legs.rows",
+                    "expected a list of " + std::to_string(count) + " fractions for a " + type_name + ", got " +
+                        reader.describe(rows));
       }
       double previous = 0.0;
       for (std::size_t i = 0; i < count; ++i) {
         const std::string key = "legs.rows[" + std::to_string(i) + "]";
         const double f = reader.number(rows[i], key);
-        if (!(f > previous && f < 1.0)) reader.fail(rows[i], key, "fractions must increase strictly within (0, 1), got " + rows[i].Scalar());
+        if (!(f > previous && f < 1.0))
+          reader.fail(rows[i], key, "fractions must increase strictly within (0, 1), got " + rows[i].Scalar());
         g.legs.row_fractions.push_back(f);
         previous = f;
       }
@@ -213,12 +239,14 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
     const YAML::Node long_node = reader.require(legs, "long", "legs");
     g.legs.long_hem = reader.ring(long_node, "legs.long", true);
     if (g.legs.top.frame != g.legs.knee.frame) {
-      reader.fail(legs["top"], "legs.top.frame", "must be the knee ring's frame '" + g.legs.knee.frame + "' (both are thigh-frame rings)");
+      reader.fail(legs["top"], "legs.top.frame",
+                  "must be the knee ring's frame '" + g.legs.knee.frame + "' (both are thigh-frame rings)");
     }
     const int upper = skeleton.findBone(g.legs.knee.frame);
     const int lower = skeleton.findBone(g.legs.long_hem.frame);
     if (skeleton.bone(static_cast<std::size_t>(lower)).parent != upper) {
-      reader.fail(long_node["frame"], "legs.long.frame", "must be a child bone of '" + g.legs.knee.frame + "' (Eq. 8: frame j below frame i)");
+      reader.fail(long_node["frame"], "legs.long.frame",
+                  "must be a child bone of '" + g.legs.knee.frame + "' (Eq. 8: frame j below frame i)");
     }
   } else if (document["legs"]) {
     reader.fail(document["legs"], "legs", "a jacket has no legs part");
@@ -230,7 +258,8 @@ GarmentDescription parseGarmentYaml(const std::string& yaml_text, const Skeleton
   }
   for (std::size_t i = 0; i < g.rows.size(); ++i) {
     if (g.rows[i].frame.rfind("r_", 0) == 0) {
-      reader.fail(document["rows"][i]["frame"], "rows[" + std::to_string(i) + "].frame", "use the left bone; the right half is mirrored");
+      reader.fail(document["rows"][i]["frame"], "rows[" + std::to_string(i) + "].frame",
+                  "use the left bone; the right half is mirrored");
     }
   }
   return g;

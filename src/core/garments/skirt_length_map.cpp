@@ -8,8 +8,7 @@
 namespace dressed_human {
 
 double kneeLength(double upper_length, double lower_length) {
-  if (!(std::isfinite(upper_length) && std::isfinite(lower_length) && upper_length > 0.0 &&
-        lower_length > 0.0)) {
+  if (!(std::isfinite(upper_length) && std::isfinite(lower_length) && upper_length > 0.0 && lower_length > 0.0)) {
     throw std::invalid_argument("skirt length map: bone lengths must be finite and > 0, got d_i = " +
                                 std::to_string(upper_length) + ", d_j = " + std::to_string(lower_length));
   }
@@ -19,8 +18,7 @@ double kneeLength(double upper_length, double lower_length) {
 SkirtLengthWeights skirtLengthWeights(double c, double upper_length, double lower_length) {
   const double knee = kneeLength(upper_length, lower_length);
   if (!(std::isfinite(c) && c >= 0.0 && c <= 1.0)) {
-    throw std::invalid_argument("skirt length map: normalized length c must lie in [0, 1], got " +
-                                std::to_string(c));
+    throw std::invalid_argument("skirt length map: normalized length c must lie in [0, 1], got " + std::to_string(c));
   }
   SkirtLengthWeights w{};
   w.ai = c < knee ? c / knee : 1.0;

@@ -80,7 +80,8 @@ std::size_t splitFields(std::string_view line, std::array<std::string_view, N>& 
 
 // A number in C notation whatever the locale (from_chars), finite.
 double finiteNumber(std::string_view field, const char* column, const Location& where) {
-  if (!field.empty() && field.front() == '+') field.remove_prefix(1);  // from_chars takes no '+'; printf("%+e") writes it
+  if (!field.empty() && field.front() == '+')
+    field.remove_prefix(1);  // from_chars takes no '+'; printf("%+e") writes it
   double value = 0.0;
   const auto [end, status] = std::from_chars(field.data(), field.data() + field.size(), value);
   if (status == std::errc::result_out_of_range) {
@@ -89,7 +90,8 @@ double finiteNumber(std::string_view field, const char* column, const Location& 
   if (status != std::errc() || end != field.data() + field.size()) {
     throw Error(where.text() + "column " + column + " is not a number: '" + std::string(field) + "'");
   }
-  if (!std::isfinite(value)) throw Error(where.text() + "column " + column + " is not finite: '" + std::string(field) + "'");
+  if (!std::isfinite(value))
+    throw Error(where.text() + "column " + column + " is not finite: '" + std::string(field) + "'");
   return value;
 }
 
@@ -131,7 +133,8 @@ void readUnitStatement(const std::string& comment, const Location& where, Header
     std::string_view unit = unitOfAxisLabel(words[i]);
     if (unit.empty() && (words[i] == "unit:" || words[i] == "units:") && i + 1 < count) {
       unit = words[i + 1];
-      if (metresPer(unit) == 0.0) throw Error(where.text() + "the unit '" + std::string(unit) + "' is none of m, cm, mm");
+      if (metresPer(unit) == 0.0)
+        throw Error(where.text() + "the unit '" + std::string(unit) + "' is none of m, cm, mm");
     }
     if (unit.empty()) continue;
     if (header.unit_line != 0 && unit != header.unit) {
@@ -186,7 +189,8 @@ TrajectoryFormat formatOfFirstRow(std::size_t columns, TrajectoryFormat given, c
   if (given != TrajectoryFormat::kAuto) return given;
   if (juelich) return TrajectoryFormat::kJuelich;
   if (obsmat) return TrajectoryFormat::kObsmat;
-  throw Error(where.text() + count + ": neither the Jülich format (id frame x y [z], 4 or 5) nor obsmat "
+  throw Error(where.text() + count +
+              ": neither the Jülich format (id frame x y [z], 4 or 5) nor obsmat "
               "(frame id x z y vx vz vy, 8)");
 }
 
@@ -251,7 +255,8 @@ ParsedText readLines(std::string_view text, const std::string& source, Trajector
     parsed.rows.push_back(readRow(fields, columns, parsed.format, where));
   }
   if (parsed.rows.empty()) {
-    throw Error(source + ": no trajectory rows (" + (text.empty() ? "an empty file" : "only comments and blank lines") + ")");
+    throw Error(source + ": no trajectory rows (" + (text.empty() ? "an empty file" : "only comments and blank lines") +
+                ")");
   }
   return parsed;
 }
@@ -268,7 +273,8 @@ void frameGrid(const std::vector<Row>& rows, const std::string& source, Pedestri
   result.last_frame = frames.back();
   result.frame_step = std::max<std::int64_t>(step, 1);
   if (result.sampleCount() > kMaxTrajectorySamples) {
-    const auto last = std::find_if(rows.begin(), rows.end(), [&](const Row& row) { return row.frame == frames.back(); });
+    const auto last =
+        std::find_if(rows.begin(), rows.end(), [&](const Row& row) { return row.frame == frames.back(); });
     throw Error(Location{source, last->line}.text() + "frame " + std::to_string(frames.back()) + " is " +
                 std::to_string(result.sampleCount() - 1) + " samples after the first (frame " +
                 std::to_string(frames.front()) + "): more than the " + std::to_string(kMaxTrajectorySamples) +
@@ -278,10 +284,12 @@ void frameGrid(const std::vector<Row>& rows, const std::string& source, Pedestri
 
 double sampleRate(const ParsedText& parsed, const TrajectoryReadOptions& options, std::int64_t frame_step,
                   const std::string& source) {
-  if (parsed.format == TrajectoryFormat::kObsmat) return options.frame_rate > 0.0 ? options.frame_rate : kObsmatSampleRate;
+  if (parsed.format == TrajectoryFormat::kObsmat)
+    return options.frame_rate > 0.0 ? options.frame_rate : kObsmatSampleRate;
   const double frames_per_second = options.frame_rate > 0.0 ? options.frame_rate : parsed.header.frame_rate;
   if (frames_per_second == 0.0) {
-    throw Error(source + ": the header states no frame rate (a line such as '# framerate: 25 fps'): give the "
+    throw Error(source +
+                ": the header states no frame rate (a line such as '# framerate: 25 fps'): give the "
                 "recording's frames per second (frame_rate)");
   }
   return frames_per_second / static_cast<double>(frame_step);
@@ -299,7 +307,8 @@ std::vector<PersonTrajectory> people(std::vector<Row>& rows, const PedestrianTra
     const Row& row = rows[i];
     if (i > 0 && row.id == rows[i - 1].id && row.frame == rows[i - 1].frame) {
       throw Error(Location{source, row.line}.text() + "person " + std::to_string(row.id) + " at frame " +
-                  std::to_string(row.frame) + " a second time (first at line " + std::to_string(rows[i - 1].line) + ")");
+                  std::to_string(row.frame) + " a second time (first at line " + std::to_string(rows[i - 1].line) +
+                  ")");
     }
     if (result.empty() || result.back().id != row.id) result.push_back(PersonTrajectory{row.id, {}});
     TrajectorySample sample;
@@ -322,16 +331,20 @@ TrajectoryFormat trajectoryFormatNamed(const std::string& name) {
 
 const char* trajectoryFormatName(TrajectoryFormat format) {
   switch (format) {
-    case TrajectoryFormat::kJuelich: return "juelich";
-    case TrajectoryFormat::kObsmat: return "obsmat";
-    default: return "auto";
+    case TrajectoryFormat::kJuelich:
+      return "juelich";
+    case TrajectoryFormat::kObsmat:
+      return "obsmat";
+    default:
+      return "auto";
   }
 }
 
 PedestrianTrajectories parsePedestrianTrajectories(std::string_view text, const std::string& source_name,
                                                    const TrajectoryReadOptions& options) {
   if (!std::isfinite(options.frame_rate) || options.frame_rate < 0.0) {
-    throw Error(source_name + ": the given frame rate must be > 0 Hz (or 0: the file's), got " + shown(options.frame_rate));
+    throw Error(source_name + ": the given frame rate must be > 0 Hz (or 0: the file's), got " +
+                shown(options.frame_rate));
   }
   ParsedText parsed = readLines(text, source_name, options.format);
   PedestrianTrajectories result;

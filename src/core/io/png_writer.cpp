@@ -58,8 +58,8 @@ std::vector<std::uint8_t> zlibStored(const std::vector<std::uint8_t>& raw) {
   return out;
 }
 
-void writePngFile(const std::string& path, int width, int height, std::uint8_t bit_depth,
-                  std::uint8_t colour_type, const std::vector<std::uint8_t>& scanlines) {
+void writePngFile(const std::string& path, int width, int height, std::uint8_t bit_depth, std::uint8_t colour_type,
+                  const std::vector<std::uint8_t>& scanlines) {
   std::vector<std::uint8_t> file{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   std::vector<std::uint8_t> header;
   appendBigEndian(header, static_cast<std::uint32_t>(width));
@@ -132,7 +132,8 @@ void writePng16Grey(const std::string& path, int width, int height, const std::v
   for (int row = 0; row < height; ++row) {
     scanlines.push_back(0);
     for (int column = 0; column < width; ++column) {
-      const std::uint16_t value = pixels[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)];
+      const std::uint16_t value =
+          pixels[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)];
       scanlines.push_back(static_cast<std::uint8_t>(value >> 8));
       scanlines.push_back(static_cast<std::uint8_t>(value & 0xFF));
     }

@@ -9,7 +9,8 @@ namespace dressed_human {
 
 LegIk::LegIk(const ForwardKinematics& kinematics) : kinematics_(kinematics) {
   const Skeleton& skeleton = kinematics.skeleton();
-  const std::array<std::array<const char*, 3>, 2> names = {{{"l_hip", "l_knee", "l_ankle"}, {"r_hip", "r_knee", "r_ankle"}}};
+  const std::array<std::array<const char*, 3>, 2> names = {
+      {{"l_hip", "l_knee", "l_ankle"}, {"r_hip", "r_knee", "r_ankle"}}};
   for (std::size_t side = 0; side < 2; ++side) {
     for (std::size_t k = 0; k < 3; ++k) {
       const int bone = skeleton.findBone(names[side][k]);
@@ -24,7 +25,8 @@ LegIk::LegIk(const ForwardKinematics& kinematics) : kinematics_(kinematics) {
 void LegIk::setJointRotation(std::size_t bone, const Eigen::Quaterniond& wanted, JointAngles& angles,
                              const SkeletonPose& pose) const {
   const Bone& b = kinematics_.skeleton().bone(bone);
-  const Eigen::Quaterniond& parent = b.parent < 0 ? pose.root.rotation : pose.bone_in_world[static_cast<std::size_t>(b.parent)].rotation;
+  const Eigen::Quaterniond& parent =
+      b.parent < 0 ? pose.root.rotation : pose.bone_in_world[static_cast<std::size_t>(b.parent)].rotation;
   // World = parent * rest * Ry(y) Rx(x) Rz(z); solved for y, x, z with x in [-pi/2, pi/2].
   const Eigen::Matrix3d r = (b.rest_rotation.conjugate() * parent.conjugate() * wanted).toRotationMatrix();
   const std::size_t first = static_cast<std::size_t>(b.joint) * kDofsPerJoint;
@@ -48,8 +50,10 @@ void LegIk::shiftFoot(std::size_t side, const Eigen::Vector3d& shift, JointAngle
   const Eigen::Vector3d normal = to_hip.cross(to_ankle);
   if (normal.norm() > 1e-9) {
     const double now = std::acos(std::clamp(to_hip.dot(to_ankle), -1.0, 1.0));
-    const double wanted = std::acos(std::clamp((thigh_length * thigh_length + shank_length * shank_length - reach * reach) /
-                                                   (2.0 * thigh_length * shank_length), -1.0, 1.0));
+    const double wanted =
+        std::acos(std::clamp((thigh_length * thigh_length + shank_length * shank_length - reach * reach) /
+                                 (2.0 * thigh_length * shank_length),
+                             -1.0, 1.0));
     const Eigen::Quaterniond open(Eigen::AngleAxisd(wanted - now, normal.normalized()));
     setJointRotation(shank, open * pose.bone_in_world[shank].rotation, angles, pose);
     kinematics_.compute(pose.root, angles, pose);

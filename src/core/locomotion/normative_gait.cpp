@@ -18,10 +18,12 @@ FourierSeries readCurve(const Reader& reader, const YAML::Node& node, const std:
   s.a0 = reader.numberWithin(reader.require(node, "a0", key), key + ".a0", -2.0 * M_PI, 2.0 * M_PI, " rad");
   s.a = reader.numbers(reader.require(node, "a", key), key + ".a", 0, "", 1);
   s.b = reader.numbers(reader.require(node, "b", key), key + ".b", s.a.size(), "(as many as in a)", 1);
-  if (s.a.size() > MotionLimits::kMaxOrder) reader.fail(node, key, "more harmonics than " + std::to_string(MotionLimits::kMaxOrder));
+  if (s.a.size() > MotionLimits::kMaxOrder)
+    reader.fail(node, key, "more harmonics than " + std::to_string(MotionLimits::kMaxOrder));
   double reach = 0.5 * std::abs(s.a0);
   for (std::size_t n = 0; n < s.a.size(); ++n) reach += std::hypot(s.a[n], s.b[n]);
-  if (reach > MotionLimits::kMaxAngle) reader.fail(node, key, "reaches beyond a full turn: not a joint angle in radians");
+  if (reach > MotionLimits::kMaxAngle)
+    reader.fail(node, key, "reaches beyond a full turn: not a joint angle in radians");
   return s;
 }
 
@@ -38,14 +40,18 @@ NormativeGait parseNormativeGaitYaml(const std::string& yaml_text, const std::st
     const std::string key = "classes[" + std::to_string(i) + "]";
     const YAML::Node entry = classes[i];
     reader.requireMap(entry, key);
-    reader.rejectUnknownKeys(entry, key, {"name", "dimensionless_speed", "dimensionless_cadence", "dimensionless_stride",
-                                          "speed_range", "foot_off_percent", "curves"});
+    reader.rejectUnknownKeys(entry, key,
+                             {"name", "dimensionless_speed", "dimensionless_cadence", "dimensionless_stride",
+                              "speed_range", "foot_off_percent", "curves"});
     NormativeGaitClass c;
     c.name = reader.text(reader.require(entry, "name", key), key + ".name");
     // Dimensionless walking: 0.05 is a shuffle, 1.0 the walk-run transition (Froude number 1).
-    c.speed = reader.numberWithin(reader.require(entry, "dimensionless_speed", key), key + ".dimensionless_speed", 0.05, 1.0, "");
-    c.cadence = reader.numberWithin(reader.require(entry, "dimensionless_cadence", key), key + ".dimensionless_cadence", 0.05, 2.0, "");
-    c.stride = reader.numberWithin(reader.require(entry, "dimensionless_stride", key), key + ".dimensionless_stride", 0.1, 4.0, "");
+    c.speed = reader.numberWithin(reader.require(entry, "dimensionless_speed", key), key + ".dimensionless_speed", 0.05,
+                                  1.0, "");
+    c.cadence = reader.numberWithin(reader.require(entry, "dimensionless_cadence", key), key + ".dimensionless_cadence",
+                                    0.05, 2.0, "");
+    c.stride = reader.numberWithin(reader.require(entry, "dimensionless_stride", key), key + ".dimensionless_stride",
+                                   0.1, 4.0, "");
     if (!gait.classes.empty() && c.speed <= gait.classes.back().speed) {
       reader.fail(entry, key + ".dimensionless_speed", "the classes must be listed by increasing speed");
     }

@@ -52,7 +52,8 @@ Eigen::Vector3d PlantedFeet::place(const SkeletonPose& pose_at_origin, double dt
       const bool from_held_foot = isLeft(lowest) != isLeft(anchor_);
       Eigen::Vector2d shown = Eigen::Vector2d::Zero();  // how far the hold moves that foot, now
       if (from_held_foot) {
-        shown = held_ ? Eigen::Vector2d(held_xy_ - root_xy - relative_[held_point_].head<2>()) : Eigen::Vector2d(shift_.head<2>());
+        shown = held_ ? Eigen::Vector2d(held_xy_ - root_xy - relative_[held_point_].head<2>())
+                      : Eigen::Vector2d(shift_.head<2>());
       }
       anchor_ = lowest;
       anchor_xy_ = root_xy + relative_[lowest].head<2>() + shown;

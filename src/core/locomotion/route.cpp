@@ -84,7 +84,8 @@ double RouteFollower::cornerSpeed(std::size_t corner) const {
   if (!route_.closed && (corner == 0 || corner + 1 >= count())) return std::numeric_limits<double>::infinity();
   const Eigen::Vector2d in = waypoint(corner) - waypoint(corner + count() - 1);
   const Eigen::Vector2d out = waypoint(corner + 1) - waypoint(corner);
-  if (in.norm() < RouteLimits::kMinLeg || out.norm() < RouteLimits::kMinLeg) return std::numeric_limits<double>::infinity();
+  if (in.norm() < RouteLimits::kMinLeg || out.norm() < RouteLimits::kMinLeg)
+    return std::numeric_limits<double>::infinity();
   const double turn = std::abs(wrapAngle(std::atan2(out.y(), out.x()) - std::atan2(in.y(), in.x())));
   if (turn < kGentleTurn) return std::numeric_limits<double>::infinity();
   return settings_.max_turn_rate * settings_.corner_radius * (0.5 * M_PI) / turn;
@@ -119,7 +120,8 @@ RouteFollower::Steering RouteFollower::steer(const Eigen::Vector2d& position, do
   // Slow for what is ahead: the corner at the target (or the end), reached after decelerating.
   const double distance = (waypoint(target_) - position).norm();
   const double end_speed = isLastLeg() ? 0.0 : cornerSpeed(target_);
-  steering.speed_limit = std::sqrt(end_speed * end_speed + 2.0 * settings_.deceleration * std::max(0.0, distance - lookahead));
+  steering.speed_limit =
+      std::sqrt(end_speed * end_speed + 2.0 * settings_.deceleration * std::max(0.0, distance - lookahead));
   if (isLastLeg()) steering.speed_limit = std::sqrt(2.0 * settings_.deceleration * std::max(0.0, distance));
   // Facing well away from the route (a start, a sharp corner): turn almost on the spot.
   if (std::abs(error) > M_PI / 3.0) {

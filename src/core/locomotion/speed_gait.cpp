@@ -9,9 +9,9 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kGravity = 9.81;                 // m/s^2
-constexpr int kSamplesPerCycle = 100;             // when measuring strides and heel strikes
-constexpr int kStridesPerKnot = 4;                // strides measured per interval between knots
+constexpr double kGravity = 9.81;      // m/s^2
+constexpr int kSamplesPerCycle = 100;  // when measuring strides and heel strikes
+constexpr int kStridesPerKnot = 4;     // strides measured per interval between knots
 constexpr std::array<const char*, 2> kSides = {"l_", "r_"};
 constexpr std::array<const char*, 3> kSagittalJoints = {"hip", "knee", "ankle"};
 const std::array<const char*, 6> kLegJoints = {"l_hip", "l_knee", "l_ankle", "r_hip", "r_knee", "r_ankle"};
@@ -42,7 +42,8 @@ Motion walkInCycles(const Motion& walk) {
 
 }  // namespace
 
-SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const Skeleton& skeleton, const BodyShape& shape)
+SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const Skeleton& skeleton,
+                     const BodyShape& shape)
     : kinematics_(std::make_shared<const ForwardKinematics>(skeleton, shape)) {
   walk.validate();
   if (normative.classes.empty()) throw LocomotionError("the gait table has no speed classes");
@@ -69,7 +70,8 @@ SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const S
     feet.place(pose, 0.0);
     if (i > 0 && was_right && PlantedFeet::isLeft(feet.carryingPoint())) left_heel_strike_ = std::fmod(phase, 1.0);
   }
-  if (left_heel_strike_ < 0.0) throw LocomotionError("motion '" + walk.name + "' never sets the left foot down after the right");
+  if (left_heel_strike_ < 0.0)
+    throw LocomotionError("motion '" + walk.name + "' never sets the left foot down after the right");
 
   const double root_gl = std::sqrt(kGravity * leg_length_);
   for (const NormativeGaitClass& c : normative.classes) {
@@ -83,8 +85,9 @@ SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const S
   // Strides measured on a grid finer than the knots: a mixed gait's stride is not the mix of theirs.
   for (std::size_t k = 0; k < knots_.size(); ++k) {
     for (int sub = 0; sub < (k + 1 < knots_.size() ? kStridesPerKnot : 1); ++sub) {
-      const double v = k + 1 < knots_.size() ? knots_[k].speed + (knots_[k + 1].speed - knots_[k].speed) * sub / kStridesPerKnot
-                                             : knots_[k].speed;
+      const double v = k + 1 < knots_.size()
+                           ? knots_[k].speed + (knots_[k + 1].speed - knots_[k].speed) * sub / kStridesPerKnot
+                           : knots_[k].speed;
       const double stride = measuredStride(v);
       if (!(stride > 0.05)) {
         throw LocomotionError("motion '" + walk.name + "' at " + std::to_string(v) + " m/s makes strides of " +
@@ -134,16 +137,17 @@ void SpeedGait::measureLeg(const Skeleton& skeleton, const BodyShape& shape) {
     for (int i = 0; i < 60; ++i) ((tilt(0.5 * (low + high)) > 0.0) == rising ? high : low) = 0.5 * (low + high);
     standing_[ankle] = 0.5 * (low + high);
     // Signs: hip flexion brings the knee forward (+x), knee flexion the ankle back, dorsiflexion the toe up.
-    const std::array<Eigen::Vector3d, 3> base = {bonePosition(at(standing_), s + "knee"), bonePosition(pose, s + "ankle"),
-                                                 feet.solePoint(pose, toe)};
+    const std::array<Eigen::Vector3d, 3> base = {bonePosition(at(standing_), s + "knee"),
+                                                 bonePosition(pose, s + "ankle"), feet.solePoint(pose, toe)};
     for (std::size_t c = 0; c < 3; ++c) {
       JointAngles a = standing_;
       a[sagittal_dof_[side][c]] += 0.1;
       const SkeletonPose& p = at(a);
-      const double moved = c == 0 ? bonePosition(p, s + "knee").x() - base[0].x()
-                         : c == 1 ? base[1].x() - bonePosition(p, s + "ankle").x()
-                                  : feet.solePoint(p, toe).z() - base[2].z();
-      if (std::abs(moved) < 1e-4) throw LocomotionError("joint " + s + kSagittalJoints[c] + " y does not move its limb forward or back");
+      const double moved = c == 0   ? bonePosition(p, s + "knee").x() - base[0].x()
+                           : c == 1 ? base[1].x() - bonePosition(p, s + "ankle").x()
+                                    : feet.solePoint(p, toe).z() - base[2].z();
+      if (std::abs(moved) < 1e-4)
+        throw LocomotionError("joint " + s + kSagittalJoints[c] + " y does not move its limb forward or back");
       sagittal_sign_[side][c] = moved > 0.0 ? 1.0 : -1.0;
     }
   }
@@ -155,7 +159,8 @@ void SpeedGait::measureLeg(const Skeleton& skeleton, const BodyShape& shape) {
 }
 
 // The walk changed as the normative curves change from the walk's own speed to `dimensionless_speed`.
-Motion SpeedGait::gaitAt(const Motion& walk_in_cycles, const NormativeGait& normative, double dimensionless_speed) const {
+Motion SpeedGait::gaitAt(const Motion& walk_in_cycles, const NormativeGait& normative,
+                         double dimensionless_speed) const {
   Motion m = walk_in_cycles;
   const double own = walk_speed_ / std::sqrt(kGravity * leg_length_);
   for (std::size_t side = 0; side < 2; ++side) {

@@ -19,7 +19,8 @@ double angleBetween(double to, double from) { return std::remainder(to - from, 2
 }  // namespace
 
 TrackedCrowd::TrackedCrowd(WalkerFactory make_walker, TrackedCrowdSettings settings)
-    : make_walker_(std::move(make_walker)), settings_(settings),
+    : make_walker_(std::move(make_walker)),
+      settings_(settings),
       delay_(std::clamp(settings.track.smoothing, settings.min_delay, settings.max_delay)) {}
 
 std::vector<std::string> TrackedCrowd::observe(double time, const std::vector<PersonSighting>& people) {
@@ -98,9 +99,9 @@ void TrackedCrowd::steer(Human& human, double render_time) {
     // it goes next (the samples up to the newest are known already).
     const Eigen::Vector2d next = human.track.at(human.track.newestTime()).position - target.position;
     const double heading = target_speed > settings_.moving_speed ? std::atan2(target.velocity.y(), target.velocity.x())
-                           : target.yaw                           ? *target.yaw
-                           : next.norm() > 0.1                    ? std::atan2(next.y(), next.x())
-                                                                  : walker.heading();
+                           : target.yaw                          ? *target.yaw
+                           : next.norm() > 0.1                   ? std::atan2(next.y(), next.x())
+                                                                 : walker.heading();
     walker.place(target.position, heading, walker.phase(), std::min(target_speed, WalkerSettings::kMaxSpeed));
     human.moving = target_speed > settings_.moving_speed;
     human.place = false;
@@ -124,7 +125,8 @@ void TrackedCrowd::steer(Human& human, double render_time) {
   // must go turns before it walks, and never backs up.
   const Eigen::Vector2d facing(std::cos(walker.heading()), std::sin(walker.heading()));
   // Standing, it stays put for what is jitter.
-  const double speed = human.moving || wanted.norm() > settings_.standing_speed ? std::max(0.0, wanted.dot(facing)) : 0.0;
+  const double speed =
+      human.moving || wanted.norm() > settings_.standing_speed ? std::max(0.0, wanted.dot(facing)) : 0.0;
   walker.drive(speed, settings_.heading_gain * heading_error);
 }
 

@@ -8,9 +8,9 @@ namespace {
 
 constexpr double kGravity = 9.81;
 // Standing is never a frozen pose: the trunk sways and breathes a little (~4 s cycle).
-constexpr double kIdleRate = 0.25;         // Hz
-constexpr double kIdleSway = 0.015;        // rad, the waist side to side
-constexpr double kIdleBreath = 0.008;      // rad, the torso forward and back
+constexpr double kIdleRate = 0.25;     // Hz
+constexpr double kIdleSway = 0.015;    // rad, the waist side to side
+constexpr double kIdleBreath = 0.008;  // rad, the torso forward and back
 // Of the slowest gait's speed: from here down to standing the steps shrink (and the cadence
 // stays); above it they keep the slowest gait's length and only the cadence drops.
 constexpr double kFullStrides = 0.12;
@@ -19,10 +19,16 @@ constexpr double kStrideChange = 0.4;  // s from standing to full steps and back
 }  // namespace
 
 Walker::Walker(const Skeleton& skeleton, const BodyShape& shape, SpeedGait gait, WalkerSettings settings)
-    : gait_(std::move(gait)), settings_(settings), kinematics_(skeleton, shape), feet_(skeleton, shape),
-      leg_ik_(kinematics_), follower_(settings.route) {
-  waist_ = static_cast<std::size_t>(skeleton.findJoint("waist")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kX);
-  torso_ = static_cast<std::size_t>(skeleton.findJoint("torso")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kY);
+    : gait_(std::move(gait)),
+      settings_(settings),
+      kinematics_(skeleton, shape),
+      feet_(skeleton, shape),
+      leg_ik_(kinematics_),
+      follower_(settings.route) {
+  waist_ =
+      static_cast<std::size_t>(skeleton.findJoint("waist")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kX);
+  torso_ =
+      static_cast<std::size_t>(skeleton.findJoint("torso")) * kDofsPerJoint + static_cast<std::size_t>(JointAxis::kY);
 }
 
 void Walker::place(const Eigen::Vector2d& position, double heading, double phase, double speed) {
@@ -90,7 +96,8 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   const Eigen::Vector3d root = feet_.place(pose, dt);
   pose.root.translation = root;
   for (RigidTransform& bone : pose.bone_in_world) bone.translation += root;
-  if (feet_.otherFootShift().squaredNorm() > 0.0) leg_ik_.shiftFoot(feet_.otherFoot(), feet_.otherFootShift(), angles, pose);
+  if (feet_.otherFootShift().squaredNorm() > 0.0)
+    leg_ik_.shiftFoot(feet_.otherFoot(), feet_.otherFootShift(), angles, pose);
   position_ = root.head<2>();
 }
 

@@ -84,12 +84,14 @@ std::map<std::string, HumanAppearance> loadCrowdFile(const std::string& path) {
   for (const auto& entry : humans) {
     const std::string id = entry.first.Scalar();
     const std::string key = "humans." + id;
-    if (!isHumanId(id)) reader.fail(entry.first, key, "a human id is the letters and digits after 'body_' in its frames");
+    if (!isHumanId(id))
+      reader.fail(entry.first, key, "a human id is the letters and digits after 'body_' in its frames");
     const YAML::Node& fields = entry.second;
     reader.requireMap(fields, key);
     // How the human walks is the crowd publisher's (crowd_walks.h): one file describes the crowd.
-    reader.rejectUnknownKeys(fields, key, {"outfit", "skin_colour", "upper_colour", "lower_colour", "route", "route_end",
-                                           "speed", "stature", "start_phase", "treadmill"});
+    reader.rejectUnknownKeys(fields, key,
+                             {"outfit", "skin_colour", "upper_colour", "lower_colour", "route", "route_end", "speed",
+                              "stature", "start_phase", "treadmill"});
     HumanAppearance appearance;
     if (fields["outfit"]) {
       try {
@@ -108,7 +110,8 @@ std::map<std::string, HumanAppearance> loadCrowdFile(const std::string& path) {
                       "must lie in [0, 1], got " + fields[name][i].Scalar());
         }
       }
-      target = Eigen::Vector4f(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]), 1.0f);
+      target =
+          Eigen::Vector4f(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]), 1.0f);
     };
     colour("skin_colour", appearance.skin_colour);
     colour("upper_colour", appearance.upper_colour);

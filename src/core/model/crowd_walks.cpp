@@ -12,7 +12,7 @@
 namespace dressed_human {
 namespace {
 
-constexpr double kLoopSpacing = 0.7;      // m between nested loops
+constexpr double kLoopSpacing = 0.7;       // m between nested loops
 constexpr double kSpacingAlongLoop = 2.5;  // m of loop per human
 
 struct Loop {
@@ -31,13 +31,14 @@ Loop loop(std::size_t ring) {
 CrowdWalk walkOnLoop(std::size_t index, std::size_t ring, std::size_t place, std::size_t on_ring) {
   const Loop l = loop(ring);
   // Corners in walking order: counter-clockwise from (+x, -y) on even loops, clockwise on odd.
-  std::array<Eigen::Vector2d, 4> corners = {{{l.half_x, -l.half_y}, {l.half_x, l.half_y}, {-l.half_x, l.half_y},
-                                             {-l.half_x, -l.half_y}}};
+  std::array<Eigen::Vector2d, 4> corners = {
+      {{l.half_x, -l.half_y}, {l.half_x, l.half_y}, {-l.half_x, l.half_y}, {-l.half_x, -l.half_y}}};
   if (ring % 2 == 1) std::swap(corners[1], corners[3]);
   // Evenly along the loop, each loop's humans shifted by half a spacing against the last loop's.
   const double perimeter = 4.0 * (l.half_x + l.half_y);
-  double along = std::fmod((static_cast<double>(place) + 0.5 * static_cast<double>(ring % 2)) * perimeter /
-                               static_cast<double>(on_ring), perimeter);
+  double along = std::fmod(
+      (static_cast<double>(place) + 0.5 * static_cast<double>(ring % 2)) * perimeter / static_cast<double>(on_ring),
+      perimeter);
   std::size_t edge = 0;
   for (; edge < 3; ++edge) {
     const double length = (corners[(edge + 1) % 4] - corners[edge]).norm();
@@ -63,7 +64,8 @@ std::vector<CrowdWalk> defaultCrowdWalks(std::size_t count) {
   std::vector<CrowdWalk> walks;
   for (std::size_t ring = 0; walks.size() < count; ++ring) {
     const std::size_t on_ring = std::min(loop(ring).capacity, count - walks.size());
-    for (std::size_t place = 0; place < on_ring; ++place) walks.push_back(walkOnLoop(walks.size(), ring, place, on_ring));
+    for (std::size_t place = 0; place < on_ring; ++place)
+      walks.push_back(walkOnLoop(walks.size(), ring, place, on_ring));
   }
   return walks;
 }
@@ -91,7 +93,8 @@ std::vector<CrowdWalk> loadCrowdWalks(const std::string& path) {
     }
     if (fields["route_end"]) {
       const std::string end = reader.text(fields["route_end"], key + ".route_end");
-      if (end != "loop" && end != "stand") reader.fail(fields["route_end"], key + ".route_end", "expected loop or stand");
+      if (end != "loop" && end != "stand")
+        reader.fail(fields["route_end"], key + ".route_end", "expected loop or stand");
       walk.route.closed = end == "loop";
     }
     try {
@@ -100,12 +103,15 @@ std::vector<CrowdWalk> loadCrowdWalks(const std::string& path) {
       throw CrowdFileError(error.what());
     }
     if (fields["route"]) walk.start = walk.route.closed ? walk.route.waypoints.back() : walk.route.waypoints.front();
-    if (fields["speed"]) walk.speed = reader.numberWithin(fields["speed"], key + ".speed", 0.0, WalkerSettings::kMaxSpeed, " m/s");
+    if (fields["speed"])
+      walk.speed = reader.numberWithin(fields["speed"], key + ".speed", 0.0, WalkerSettings::kMaxSpeed, " m/s");
     if (fields["stature"]) walk.stature = reader.numberWithin(fields["stature"], key + ".stature", 0.8, 1.2, "");
-    if (fields["start_phase"]) walk.start_phase = reader.numberWithin(fields["start_phase"], key + ".start_phase", 0.0, 1.0, " cycles");
+    if (fields["start_phase"])
+      walk.start_phase = reader.numberWithin(fields["start_phase"], key + ".start_phase", 0.0, 1.0, " cycles");
     if (fields["treadmill"]) walk.treadmill = reader.boolean(fields["treadmill"], key + ".treadmill");
     if (walk.treadmill && walk.route.waypoints.size() < 2) {
-      reader.fail(fields["treadmill"], key + ".treadmill", "needs a route of two waypoints: where it walks and which way");
+      reader.fail(fields["treadmill"], key + ".treadmill",
+                  "needs a route of two waypoints: where it walks and which way");
     }
     walks.push_back(walk);
   }

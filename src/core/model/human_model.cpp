@@ -71,7 +71,8 @@ std::shared_ptr<const std::vector<std::vector<bool>>> sharedCoveredPatches(
   return cache.obtain(rest, [&] {
     auto covered = std::make_shared<std::vector<std::vector<bool>>>();
     for (std::size_t p = 0; p < rest.size(); ++p) {
-      const std::vector<const std::vector<BezierPatch>*> outer(rest.begin() + static_cast<std::ptrdiff_t>(p) + 1, rest.end());
+      const std::vector<const std::vector<BezierPatch>*> outer(rest.begin() + static_cast<std::ptrdiff_t>(p) + 1,
+                                                               rest.end());
       covered->push_back(patchesCoveredBy(*rest[p], outer));
     }
     return std::shared_ptr<const std::vector<std::vector<bool>>>(std::move(covered));
@@ -90,10 +91,14 @@ Outfit outfitFromName(const std::string& name) {
 
 std::vector<std::string> garmentFileNames(Outfit outfit) {
   switch (outfit) {
-    case Outfit::kNone: return {};
-    case Outfit::kOnePiece: return {"one_piece"};
-    case Outfit::kJacketSkirt: return {"skirt", "jacket"};
-    case Outfit::kJacketPants: return {"pants", "jacket"};
+    case Outfit::kNone:
+      return {};
+    case Outfit::kOnePiece:
+      return {"one_piece"};
+    case Outfit::kJacketSkirt:
+      return {"skirt", "jacket"};
+    case Outfit::kJacketPants:
+      return {"pants", "jacket"};
   }
   return {};
 }
@@ -115,11 +120,11 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     }
     garments_.emplace_back(description, skeleton, body.shape);
     const auto colour = settings_.garment_colours.find(name);
-    const Eigen::Vector4f rgba = colour != settings_.garment_colours.end()
-                                     ? colour->second
-                                     : Eigen::Vector4f(static_cast<float>(description.colour.x()),
-                                                       static_cast<float>(description.colour.y()),
-                                                       static_cast<float>(description.colour.z()), 1.0f);
+    const Eigen::Vector4f rgba =
+        colour != settings_.garment_colours.end()
+            ? colour->second
+            : Eigen::Vector4f(static_cast<float>(description.colour.x()), static_cast<float>(description.colour.y()),
+                              static_cast<float>(description.colour.z()), 1.0f);
     parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
   corner_splits_.resize(parts_.size());
@@ -285,8 +290,9 @@ void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMa
   Displacement displacement{std::move(map), std::move(folds), nullptr, nullptr,
                             ReliefDisplacement{nullptr, tiling, height_to_tile, amplitude}};
   if (displacement.map) {  // the chains again only for another map (a few ms at 512 x 512)
-    displacement.map_mips = displacement.map == current.map ? current.map_mips
-                                                           : std::make_shared<const std::vector<ReliefMap>>(buildMipChain(*displacement.map));
+    displacement.map_mips = displacement.map == current.map
+                                ? current.map_mips
+                                : std::make_shared<const std::vector<ReliefMap>>(buildMipChain(*displacement.map));
   }
   if (displacement.map && displacement.folds) {
     displacement.fold_mips = displacement.folds == current.folds

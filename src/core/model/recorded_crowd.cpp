@@ -38,7 +38,8 @@ RecordedCrowd::RecordedCrowd(const PedestrianTrajectories& trajectories, const S
       placed.id = person.id;
       placed.position = rotation * person.samples[i].position.head<2>() + placement.offset;
       placed.velocity = rotation * velocityAt(person.samples, i);
-      if (placed.velocity.norm() > kHeadingMinSpeed) placed.heading = std::atan2(placed.velocity.y(), placed.velocity.x());
+      if (placed.velocity.norm() > kHeadingMinSpeed)
+        placed.heading = std::atan2(placed.velocity.y(), placed.velocity.x());
     }
   }
 }

@@ -57,9 +57,9 @@ std::shared_ptr<ReliefMapJobs::SharedBuild> obtain(ReliefKind kind, const SkinRe
 
 bool sameSkinParameters(const SkinReliefParameters& a, const SkinReliefParameters& b) {
   return a.levels == b.levels && a.cell_size == b.cell_size && a.seed == b.seed &&
-         a.direction_angle == b.direction_angle && a.direction_stretch == b.direction_stretch &&
-         a.wobble == b.wobble && a.jitter == b.jitter && a.roundness == b.roundness &&
-         a.profile.first_inner == b.profile.first_inner && a.profile.second_inner == b.profile.second_inner;
+         a.direction_angle == b.direction_angle && a.direction_stretch == b.direction_stretch && a.wobble == b.wobble &&
+         a.jitter == b.jitter && a.roundness == b.roundness && a.profile.first_inner == b.profile.first_inner &&
+         a.profile.second_inner == b.profile.second_inner;
 }
 
 ReliefMap transposed(const ReliefMap& map) {

@@ -3,8 +3,8 @@
 namespace dressed_human {
 
 VertexEvaluationChoice chooseVertexEvaluation(VertexSource asked, const HumanModel& model,
-                                              const std::string& renderer_problem,
-                                              const std::string& software_renderer, std::size_t max_patches) {
+                                              const std::string& renderer_problem, const std::string& software_renderer,
+                                              std::size_t max_patches) {
   VertexEvaluationChoice choice;
   if (asked == VertexSource::kAutomatic && !software_renderer.empty()) {
     choice.status = "CPU (Automatic): " + software_renderer +

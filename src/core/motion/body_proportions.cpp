@@ -61,7 +61,9 @@ struct RestSource {
   const Eigen::Vector3d& position(int joint) const {
     return rest.position[static_cast<std::size_t>(clip.findJoint(map.joints[static_cast<std::size_t>(joint)]))];
   }
-  std::size_t boneOf(int joint) const { return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone); }
+  std::size_t boneOf(int joint) const {
+    return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone);
+  }
   double checked(double factor, const std::string& what) const {
     if (!(factor >= kMinShapeScale && factor <= kMaxShapeScale)) {
       throw MotionError(source_name + ": " + what + " is " + factorText(factor) + " times ours, outside [" +
@@ -83,7 +85,8 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
   const auto boneOf = [&](int joint) { return read.boneOf(joint); };
   const auto check = [&](double factor, const std::string& what) { return read.checked(factor, what); };
   BodyProportions proportions;
-  const double stature = check(bvhRestStature(clip) * metres_per_unit / skeletonStature(skeleton), "the rest pose's stature");
+  const double stature =
+      check(bvhRestStature(clip) * metres_per_unit / skeletonStature(skeleton), "the rest pose's stature");
 
   // Lengths of the bones between two mapped joints, and of the feet (their length sets where the
   // sole meets the ground). Head and hands end in markers placed differently by every capture
@@ -96,16 +99,18 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
     const int distal = kDistalJoint[static_cast<std::size_t>(j)];
     const bool joint_to_joint = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty();
     if (!joint_to_joint && j != kLeftAnkle && j != kRightAnkle) continue;
-    const double source_units = joint_to_joint ? (source(distal) - source(j)).norm()
-                                               : bvhFarthestBelow(clip, rest, static_cast<std::size_t>(clip.findJoint(name))).norm();
-    const std::string segment =
-        joint_to_joint ? "the segment " + name + " to " + map.joints[static_cast<std::size_t>(distal)]
-                       : "the segment below " + name;
+    const double source_units =
+        joint_to_joint ? (source(distal) - source(j)).norm()
+                       : bvhFarthestBelow(clip, rest, static_cast<std::size_t>(clip.findJoint(name))).norm();
+    const std::string segment = joint_to_joint
+                                    ? "the segment " + name + " to " + map.joints[static_cast<std::size_t>(distal)]
+                                    : "the segment below " + name;
     if (!(source_units > 1e-9)) {
       throw MotionError(source_name + ": " + segment + " has no length at rest (zero OFFSETs): the " +
                         skeleton.bone(bone).anatomical + "'s proportion cannot be read");
     }
-    const double ours = joint_to_joint ? skeleton.bone(boneOf(distal)).rest_translation.norm() : skeleton.bone(bone).length;
+    const double ours =
+        joint_to_joint ? skeleton.bone(boneOf(distal)).rest_translation.norm() : skeleton.bone(bone).length;
     proportions.source_length[bone] = source_units * metres_per_unit;
     proportions.shape.scale[bone].z() = check(proportions.source_length[bone] / ours, segment + "'s length");
     measured[bone] = true;
@@ -115,11 +120,13 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
   // The fixed bones set the widths: each one's c moves the joints it carries along its axis, so
   // the distance between the left and right joint is linear in c; two evaluations solve for it.
   const auto fitWidth = [&](int left, int right, const char* fixed_left, const char* fixed_right, const char* what) {
-    if (map.joints[static_cast<std::size_t>(left)].empty() || map.joints[static_cast<std::size_t>(right)].empty()) return;
+    if (map.joints[static_cast<std::size_t>(left)].empty() || map.joints[static_cast<std::size_t>(right)].empty())
+      return;
     const double target = (source(left) - source(right)).norm() * metres_per_unit;
     const auto width = [&](double c) {
       BodyShape shape = proportions.shape;
-      for (const char* bone : {fixed_left, fixed_right}) shape.scale[static_cast<std::size_t>(skeleton.findBone(bone))].z() = c;
+      for (const char* bone : {fixed_left, fixed_right})
+        shape.scale[static_cast<std::size_t>(skeleton.findBone(bone))].z() = c;
       const auto positions = restPositions(skeleton, shape);
       return (positions[boneOf(left)] - positions[boneOf(right)]).norm();
     };
@@ -150,11 +157,14 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
     SkeletonPose pose;
     kinematics.compute(RigidTransform(), JointAngles{}, pose);
     const auto at = [&](int joint) -> const RigidTransform& { return pose.bone_in_world[boneOf(joint)]; };
-    const Eigen::Matrix3d frame = turn_with_anchor ? at(anchor).rotation.toRotationMatrix() : Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d frame =
+        turn_with_anchor ? at(anchor).rotation.toRotationMatrix() : Eigen::Matrix3d::Identity();
     const Eigen::Matrix3d laid =
-        turn_with_anchor ? Eigen::Quaterniond::FromTwoVectors(frame.col(2), to_ours * (source(anchor_distal) - source(anchor)))
-                               .toRotationMatrix() * frame
-                         : frame;
+        turn_with_anchor
+            ? Eigen::Quaterniond::FromTwoVectors(frame.col(2), to_ours * (source(anchor_distal) - source(anchor)))
+                      .toRotationMatrix() *
+                  frame
+            : frame;
     const Eigen::Vector3d target =
         metres_per_unit * (laid.transpose() * (to_ours * (0.5 * (source(left) + source(right)) - source(anchor))));
     const Eigen::Vector3d ours =
@@ -162,20 +172,22 @@ BodyProportions fitBodyProportions(const BvhClip& clip, const BvhJointMap& map, 
     // In the frame of both fixed bones' parent: the anchor's when turned with it, else from the body frame.
     const int parent = skeleton.bone(static_cast<std::size_t>(skeleton.findBone(fixed_left))).parent;
     Eigen::Matrix3d to_parent = Eigen::Matrix3d::Identity();
-    if (!turn_with_anchor && parent >= 0) to_parent = pose.bone_in_world[static_cast<std::size_t>(parent)].rotation.toRotationMatrix().transpose();
+    if (!turn_with_anchor && parent >= 0)
+      to_parent = pose.bone_in_world[static_cast<std::size_t>(parent)].rotation.toRotationMatrix().transpose();
     const Eigen::Vector3d shift = to_parent * (target - ours);
     if (shift.cwiseAbs().maxCoeff() > kMaxShapeOffset) {
       throw MotionError(source_name + ": the " + what + " lie " + factorText(shift.norm()) +
                         " m from ours: a wrong joint map?");
     }
-    for (const char* bone : {fixed_left, fixed_right}) proportions.shape.offset[static_cast<std::size_t>(skeleton.findBone(bone))] += shift;
+    for (const char* bone : {fixed_left, fixed_right})
+      proportions.shape.offset[static_cast<std::size_t>(skeleton.findBone(bone))] += shift;
   };
   placePair(kLeftHip, kRightHip, kWaist, kTorso, false, "l_pelvis", "r_pelvis", "hip joints");
   // A source whose chest is one rigid piece from the low back up (OpenSim's torso) has no chest
   // joint: the shoulders are placed relative to the waist joint, in the body frame.
   const bool chest = !map.joints[kTorso].empty();
-  placePair(kLeftShoulder, kRightShoulder, chest ? kTorso : kWaist, chest ? kNeck : kTorso, chest, "l_clavicle", "r_clavicle",
-            "shoulder joints");
+  placePair(kLeftShoulder, kRightShoulder, chest ? kTorso : kWaist, chest ? kNeck : kTorso, chest, "l_clavicle",
+            "r_clavicle", "shoulder joints");
   return proportions;
 }
 

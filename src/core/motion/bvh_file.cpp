@@ -77,7 +77,8 @@ class BvhReader {
     errno = 0;
     char* end = nullptr;
     const double value = std::strtod(token.text.c_str(), &end);
-    if (end == token.text.c_str() || *end != '\0') fail(token, "expected a number (" + what + "), got '" + token.text + "'");
+    if (end == token.text.c_str() || *end != '\0')
+      fail(token, "expected a number (" + what + "), got '" + token.text + "'");
     if (!std::isfinite(value)) fail(token, what + " must be a finite number, got '" + token.text + "'");
     return value;
   }
@@ -87,9 +88,11 @@ class BvhReader {
     std::size_t value = 0;
     if (token.text.empty()) fail(token, "expected " + what);
     for (const char c : token.text) {
-      if (c < '0' || c > '9') fail(token, "expected a non-negative whole number (" + what + "), got '" + token.text + "'");
+      if (c < '0' || c > '9')
+        fail(token, "expected a non-negative whole number (" + what + "), got '" + token.text + "'");
       value = value * 10 + static_cast<std::size_t>(c - '0');
-      if (value > maximum) fail(token, what + " " + token.text + " is more than the supported " + std::to_string(maximum));
+      if (value > maximum)
+        fail(token, what + " " + token.text + " is more than the supported " + std::to_string(maximum));
     }
     return value;
   }
@@ -138,7 +141,8 @@ class BvhReader {
   }
 
   int startJoint(int parent) {
-    if (clip_.joints.size() >= kMaxJoints) fail(tokens_[at_ - 1], "more than " + std::to_string(kMaxJoints) + " joints");
+    if (clip_.joints.size() >= kMaxJoints)
+      fail(tokens_[at_ - 1], "more than " + std::to_string(kMaxJoints) + " joints");
     BvhJoint joint;
     const Token& name = next("a joint name");
     if (name.text == "{") fail(name, "the joint has no name");
@@ -297,7 +301,10 @@ BvhPoint bvhFarthestPointBelow(const BvhClip& clip, const BvhPose& pose, std::si
 
 Eigen::Vector3d bvhPointPosition(const BvhClip& clip, const BvhPose& pose, const BvhPoint& point) {
   const Eigen::Vector3d& at = pose.position[point.joint];
-  return point.end_site < 0 ? at : Eigen::Vector3d(at + pose.rotation[point.joint] * clip.joints[point.joint].end_sites[static_cast<std::size_t>(point.end_site)]);
+  return point.end_site < 0
+             ? at
+             : Eigen::Vector3d(at + pose.rotation[point.joint] *
+                                        clip.joints[point.joint].end_sites[static_cast<std::size_t>(point.end_site)]);
 }
 
 Eigen::Vector3d bvhFarthestBelow(const BvhClip& clip, const BvhPose& pose, std::size_t joint) {

@@ -64,8 +64,9 @@ double bvhRestStature(const BvhClip& clip) {
 CaptureUnits detectBvhUnits(const BvhClip& clip, const std::string& source_name) {
   const double stature = bvhRestStature(clip);
   if (!(stature > 1e-9)) {
-    throw MotionError(source_name + ": the rest pose has no height (every OFFSET is zero or horizontal): the body's "
-                                    "proportions cannot be read from it");
+    throw MotionError(source_name +
+                      ": the rest pose has no height (every OFFSET is zero or horizontal): the body's "
+                      "proportions cannot be read from it");
   }
   const KnownUnit* best = nullptr;
   for (const KnownUnit& unit : kKnownUnits) {
@@ -75,12 +76,11 @@ CaptureUnits detectBvhUnits(const BvhClip& clip, const std::string& source_name)
   }
   if (!best) {
     throw MotionError(source_name + ": the rest pose is " + formatted("%.4g", stature) +
-                      " units tall, a human height in none of " + knownUnitNames() +
-                      ": give the unit with --units");
+                      " units tall, a human height in none of " + knownUnitNames() + ": give the unit with --units");
   }
   return {best->metres, best->name,
-          "the rest pose is " + formatted("%.4g", stature) + " units tall: " +
-              formatted("%.2f", stature * best->metres) + " m in " + best->name};
+          "the rest pose is " + formatted("%.4g", stature) +
+              " units tall: " + formatted("%.2f", stature * best->metres) + " m in " + best->name};
 }
 
 }  // namespace dressed_human

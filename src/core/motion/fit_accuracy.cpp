@@ -9,7 +9,6 @@
 namespace dressed_human {
 namespace {
 
-
 class ErrorAccumulator {
  public:
   void add(const Eigen::Vector3d& a, const Eigen::Vector3d& b, std::size_t frame = 0, int joint = -1) {
@@ -56,7 +55,8 @@ void addStanceFeet(const ForwardKinematics& kinematics, const RigidTransform& ro
     const auto foot = static_cast<std::size_t>(skeleton.findBone(side == 0 ? "l_ankle" : "r_ankle"));
     const RigidTransform& frame = pose.bone_in_world[foot];
     const double length = kinematics.shape().scale[foot].z() * skeleton.bone(foot).length;
-    const double ours = std::min(frame.translation.z(), (frame.translation + frame.rotation * Eigen::Vector3d(0, 0, length)).z());
+    const double ours =
+        std::min(frame.translation.z(), (frame.translation + frame.rotation * Eigen::Vector3d(0, 0, length)).z());
     feet.add(Eigen::Vector3d(0, 0, ours), Eigen::Vector3d(0, 0, capture_lowest[side]));
   }
 }
@@ -94,8 +94,9 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
     const Eigen::Vector3d sampled_root(fit.samples[kDofCount][f], fit.samples[kDofCount + 1][f],
                                        fit.samples[kDofCount + 2][f]);
     root.add(fitted_root.translation, sampled_root);
-    if (has_feet) addStanceFeet(kinematics, fitted_root, fitted_angles, sampled.reference_lowest_foot[first + f],
-                                lowest_in_window, fitted_pose, feet);
+    if (has_feet)
+      addStanceFeet(kinematics, fitted_root, fitted_angles, sampled.reference_lowest_foot[first + f], lowest_in_window,
+                    fitted_pose, feet);
     fitted_root.translation.setZero();
 
     JointAngles sampled_angles{};

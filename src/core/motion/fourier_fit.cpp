@@ -6,10 +6,7 @@
 #include <Eigen/QR>
 
 namespace dressed_human {
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<double> unwrapAngles(const std::vector<double>& wrapped) {
   std::vector<double> unwrapped(wrapped.size());

@@ -27,7 +27,8 @@ std::vector<double> withoutStraightLine(const std::vector<double>& values) {
   }
   const double slope = variance > 0.0 ? covariance / variance : 0.0;
   std::vector<double> residual(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) residual[i] = values[i] - mean_v - slope * (static_cast<double>(i) - mean_i);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    residual[i] = values[i] - mean_v - slope * (static_cast<double>(i) - mean_i);
   return residual;
 }
 
@@ -42,7 +43,8 @@ std::string seconds(double value) {
 
 PeriodEstimate estimateGaitPeriod(const std::vector<std::vector<double>>& channels, double frame_time,
                                   const PeriodOptions& options) {
-  if (!std::isfinite(frame_time) || frame_time <= 0.0) throw MotionError("period estimation: the frame time must be > 0");
+  if (!std::isfinite(frame_time) || frame_time <= 0.0)
+    throw MotionError("period estimation: the frame time must be > 0");
   if (channels.empty()) throw MotionError("period estimation: no channels");
   const std::size_t frames = channels.front().size();
   std::vector<std::vector<double>> detrended;
@@ -67,7 +69,8 @@ PeriodEstimate estimateGaitPeriod(const std::vector<std::vector<double>>& channe
     }
     energy += residual_energy;
   }
-  const std::size_t min_lag = std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(options.min_period / frame_time)));
+  const std::size_t min_lag =
+      std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(options.min_period / frame_time)));
   std::size_t max_lag = frames / 2;
   if (options.max_period > 0.0) {
     max_lag = std::min(max_lag, static_cast<std::size_t>(std::floor(options.max_period / frame_time)));

@@ -50,10 +50,10 @@ BvhJointMap humanIkMap() {
 BvhJointMap unityHumanoidMap() {
   return {"Unity humanoid / Bandai",
           "Hips",
-          {"Spine", "Chest|UpperChest", "Neck", "Head", "LeftUpperArm|UpperArm_L", "LeftLowerArm|LowerArm_L", "LeftHand|Hand_L",
-           "RightUpperArm|UpperArm_R", "RightLowerArm|LowerArm_R", "RightHand|Hand_R", "LeftUpperLeg|UpperLeg_L",
-           "LeftLowerLeg|LowerLeg_L", "LeftFoot|Foot_L", "RightUpperLeg|UpperLeg_R", "RightLowerLeg|LowerLeg_R",
-           "RightFoot|Foot_R"}};
+          {"Spine", "Chest|UpperChest", "Neck", "Head", "LeftUpperArm|UpperArm_L", "LeftLowerArm|LowerArm_L",
+           "LeftHand|Hand_L", "RightUpperArm|UpperArm_R", "RightLowerArm|LowerArm_R", "RightHand|Hand_R",
+           "LeftUpperLeg|UpperLeg_L", "LeftLowerLeg|LowerLeg_L", "LeftFoot|Foot_L", "RightUpperLeg|UpperLeg_R",
+           "RightLowerLeg|LowerLeg_R", "RightFoot|Foot_R"}};
 }
 
 BvhJointMap unrealMap() {
@@ -74,9 +74,10 @@ BvhJointMap openSimFullBodyMap() {
 }
 
 BvhJointMap openSimGaitBodyMap() {
-  return {"OpenSim gait2392 bodies",
-          "pelvis",
-          {"torso", "", "", "", "", "", "", "", "", "", "femur_l", "tibia_l", "talus_l", "femur_r", "tibia_r", "talus_r"}};
+  return {
+      "OpenSim gait2392 bodies",
+      "pelvis",
+      {"torso", "", "", "", "", "", "", "", "", "", "femur_l", "tibia_l", "talus_l", "femur_r", "tibia_r", "talus_r"}};
 }
 
 CoordinateRotation about(const char* column, double x, double y, double z) {
@@ -111,7 +112,8 @@ int findNamed(const BvhClip& clip, const std::string& name) {
   for (std::size_t j = 0; j < clip.joints.size(); ++j) {
     const std::string& joint = clip.joints[j].name;
     const std::size_t colon = joint.rfind(':');
-    if (same(joint, name) || (colon != std::string::npos && same(joint.substr(colon + 1), name))) return static_cast<int>(j);
+    if (same(joint, name) || (colon != std::string::npos && same(joint.substr(colon + 1), name)))
+      return static_cast<int>(j);
   }
   return -1;
 }
@@ -155,8 +157,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<BvhJointMap>& builtinBvhJointMaps() {
-  static const std::vector<BvhJointMap> maps = {cmuBvhMap(),         asfMap(),    humanIkMap(),        unityHumanoidMap(),
-                                                unrealMap(),         openSimFullBodyMap(), openSimGaitBodyMap()};
+  static const std::vector<BvhJointMap> maps = {
+      cmuBvhMap(), asfMap(), humanIkMap(), unityHumanoidMap(), unrealMap(), openSimFullBodyMap(), openSimGaitBodyMap()};
   return maps;
 }
 

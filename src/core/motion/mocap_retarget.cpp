@@ -45,8 +45,9 @@ Eigen::Vector3d firstDistinctDescendant(const BvhClip& clip, const BvhPose& rest
   for (const int child : clip.joints[static_cast<std::size_t>(joint)].children) {
     branches.push_back(rest.position[static_cast<std::size_t>(child)] - origin);
   }
-  branches.erase(std::remove_if(branches.begin(), branches.end(), [](const Eigen::Vector3d& d) { return d.norm() < 1e-9; }),
-                 branches.end());
+  branches.erase(
+      std::remove_if(branches.begin(), branches.end(), [](const Eigen::Vector3d& d) { return d.norm() < 1e-9; }),
+      branches.end());
   if (branches.size() > 1) {
     Eigen::Vector3d middle = Eigen::Vector3d::Zero();
     for (const Eigen::Vector3d& d : branches) middle += d / static_cast<double>(branches.size());
@@ -93,7 +94,8 @@ JointAngles solveJointAngles(const Skeleton& skeleton, const Eigen::Matrix3d& bo
     const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * *target[j], yxzOf(near, j));
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) angles[j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
     world[b] = rest * Eigen::AngleAxisd(yxz[0], Eigen::Vector3d::UnitY()) *
-               Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ());
+               Eigen::AngleAxisd(yxz[1], Eigen::Vector3d::UnitX()) *
+               Eigen::AngleAxisd(yxz[2], Eigen::Vector3d::UnitZ());
   }
   return angles;
 }
@@ -151,8 +153,9 @@ void levelFloor(SampledMotion& motion) {
 // pelvis frame; it is the mean of their differences, turned into the body frame, over every
 // driven joint and frame (least squares).
 void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
-                     const Eigen::Matrix3d& to_ours, std::size_t root, const std::array<std::size_t, kJointCount>& source_joint,
-                     const std::string& units, SampledMotion& motion) {
+                     const Eigen::Matrix3d& to_ours, std::size_t root,
+                     const std::array<std::size_t, kJointCount>& source_joint, const std::string& units,
+                     SampledMotion& motion) {
   motion.units = units.empty() ? detectBvhUnits(clip, motion.source) : unitsByName(units);
   motion.proportions = fitBodyProportions(clip, map, skeleton, motion.units.metres_per_unit, motion.source);
   motion.body_fitted = true;
@@ -171,7 +174,8 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
     const Eigen::Matrix3d to_body = toMatrix(body.rotation).transpose();
     for (std::size_t j = 0; j < kJointCount; ++j) {
       if (!motion.driven[j]) continue;
-      const Eigen::Vector3d source = metres * (to_ours * (poses[f].position[source_joint[j]] - poses[f].position[root]));
+      const Eigen::Vector3d source =
+          metres * (to_ours * (poses[f].position[source_joint[j]] - poses[f].position[root]));
       sum += to_body * (source - ours.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation);
       ++count;
     }
@@ -357,7 +361,8 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     const std::size_t bone = static_cast<std::size_t>(skeleton.joint(j).bone);
     Eigen::Matrix3d offset = our_rest.rotation[bone];
     if (direction.norm() > 1e-9) {
-      const Eigen::Quaterniond swing = Eigen::Quaterniond::FromTwoVectors(our_rest.rotation[bone].col(2), to_ours * direction);
+      const Eigen::Quaterniond swing =
+          Eigen::Quaterniond::FromTwoVectors(our_rest.rotation[bone].col(2), to_ours * direction);
       offset = toMatrix(swing) * offset;
     }
     rest_offset[j] = offset;
@@ -373,7 +378,9 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
     const std::size_t ankle = sourceIndex(map.joints[kLeftAnkle]);
     source_leg = (source_rest.position[knee] - source_rest.position[source_hip]).norm() +
                  (source_rest.position[ankle] - source_rest.position[knee]).norm();
-    const auto bone = [&](int joint) { return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone); };
+    const auto bone = [&](int joint) {
+      return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone);
+    };
     our_leg = (our_rest.position[bone(kLeftKnee)] - our_rest.position[bone(kLeftHip)]).norm() +
               (our_rest.position[bone(kLeftAnkle)] - our_rest.position[bone(kLeftKnee)]).norm();
   }
@@ -470,18 +477,20 @@ SampledMotion retargetCoordinates(const OpenSimTable& table, const CoordinateJoi
       if (!motion.driven[j]) continue;
       // A joint rotation between segments that are parallel at rest, in our body axes, turned
       // into our bone's frame: R_joint = R0^T D R0 (R0: our bone's rest orientation).
-      const Eigen::Matrix3d relative = to_ours * chainRotation(map.joints[j], joint_columns[j], row, angle_unit) *
-                                       to_ours.transpose();
+      const Eigen::Matrix3d relative =
+          to_ours * chainRotation(map.joints[j], joint_columns[j], row, angle_unit) * to_ours.transpose();
       const Eigen::Matrix3d& rest = our_rest.rotation[static_cast<std::size_t>(skeleton.joint(j).bone)];
       const Eigen::Vector3d before = f > 0 ? yxzOf(motion.angles[f - 1], j) : Eigen::Vector3d::Zero();
       const Eigen::Vector3d yxz = decomposeYxzNear(rest.transpose() * relative * rest, before);
-      for (std::size_t d = 0; d < kDofsPerJoint; ++d) motion.angles[f][j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
+      for (std::size_t d = 0; d < kDofsPerJoint; ++d)
+        motion.angles[f][j * kDofsPerJoint + d] = yxz[static_cast<int>(d)];
     }
     const Eigen::Matrix3d body =
         to_ours * chainRotation(map.root_rotation, root_columns, row, angle_unit) * to_ours.transpose();
     Eigen::Vector3d translation = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k) {
-      if (translation_columns[k] >= 0) translation[static_cast<int>(k)] = row[static_cast<std::size_t>(translation_columns[k])];
+      if (translation_columns[k] >= 0)
+        translation[static_cast<int>(k)] = row[static_cast<std::size_t>(translation_columns[k])];
     }
     motion.root[f].translation = to_ours * translation;
     motion.root[f].rotation = Eigen::Quaterniond(body).normalized();

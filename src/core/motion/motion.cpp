@@ -32,8 +32,8 @@ double FourierSeries::derivativeBySummation(double time) const {
 
 const std::array<const char*, kJointCount>& humanJointNames() {
   static const std::array<const char*, kJointCount> names = {
-      "waist",   "torso",  "neck",  "head",    "l_shoulder", "l_elbow", "l_wrist", "r_shoulder",
-      "r_elbow", "r_wrist", "l_hip", "l_knee", "l_ankle",   "r_hip",   "r_knee",  "r_ankle"};
+      "waist",   "torso",   "neck",  "head",   "l_shoulder", "l_elbow", "l_wrist", "r_shoulder",
+      "r_elbow", "r_wrist", "l_hip", "l_knee", "l_ankle",    "r_hip",   "r_knee",  "r_ankle"};
   return names;
 }
 
@@ -84,7 +84,8 @@ void Motion::validate() const {
   for (std::size_t i = 0; i < kSeriesCount; ++i) {
     const FourierSeries& s = series(i);
     const std::string name = seriesName(i);
-    if (!std::isfinite(s.period)) throw MotionError(name + ": period must be a finite number, got " + formatted(s.period));
+    if (!std::isfinite(s.period))
+      throw MotionError(name + ": period must be a finite number, got " + formatted(s.period));
     requireWithin(s.period, MotionLimits::kMinPeriod, MotionLimits::kMaxPeriod, name + ": period", " s");
     if (!std::isfinite(s.phase)) throw MotionError(name + ": phase must be finite");
     requireWithin(s.phase, -MotionLimits::kMaxPhase, MotionLimits::kMaxPhase, name + ": phase", " rad");

@@ -25,8 +25,9 @@ FourierSeries readSeries(const Reader& reader, const YAML::Node& node, const std
   if (node["a"]) s.a = reader.numbers(node["a"], key + ".a", 0, "", 1);
   if (node["b"]) s.b = reader.numbers(node["b"], key + ".b", 0, "", 1);
   if (s.a.size() != s.b.size()) {
-    reader.fail(node, key, "wrong coefficient counts: " + std::to_string(s.a.size()) + " in a but " +
-                               std::to_string(s.b.size()) + " in b; both must list a_1..a_m and b_1..b_m");
+    reader.fail(node, key,
+                "wrong coefficient counts: " + std::to_string(s.a.size()) + " in a but " + std::to_string(s.b.size()) +
+                    " in b; both must list a_1..a_m and b_1..b_m");
   }
   if (node["period"]) {
     s.period = reader.number(node["period"], key + ".period");
@@ -73,7 +74,8 @@ Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_n
     reader.rejectUnknownKeys(joint, joint_key, namesOf(kDofNames));
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) {
       const std::string dof_key = joint_key + "." + kDofNames[d];
-      motion.dofs[j * kDofsPerJoint + d] = readSeries(reader, reader.require(joint, kDofNames[d], joint_key), dof_key, motion.period);
+      motion.dofs[j * kDofsPerJoint + d] =
+          readSeries(reader, reader.require(joint, kDofNames[d], joint_key), dof_key, motion.period);
     }
   }
 
@@ -88,10 +90,11 @@ Motion parseMotionYaml(const std::string& yaml_text, const std::string& source_n
   reader.requireMap(rotation, "root.rotation");
   reader.rejectUnknownKeys(rotation, "root.rotation", namesOf(kRootRotationNames));
   for (std::size_t k = 0; k < 3; ++k) {
-    motion.root.translation[k] = readSeries(reader, reader.require(translation, kRootTranslationNames[k], "root.translation"),
-                                               std::string("root.translation.") + kRootTranslationNames[k], motion.period);
+    motion.root.translation[k] =
+        readSeries(reader, reader.require(translation, kRootTranslationNames[k], "root.translation"),
+                   std::string("root.translation.") + kRootTranslationNames[k], motion.period);
     motion.root.rotation[k] = readSeries(reader, reader.require(rotation, kRootRotationNames[k], "root.rotation"),
-                                            std::string("root.rotation.") + kRootRotationNames[k], motion.period);
+                                         std::string("root.rotation.") + kRootRotationNames[k], motion.period);
   }
   try {
     motion.validate();
@@ -166,11 +169,11 @@ void writeMotionYaml(const Motion& motion, std::ostream& out, const std::string&
   text << "  rotation:\n";
   for (std::size_t k = 0; k < 3; ++k) {
     text << "    " << kRootRotationNames[k] << ": ";
-    writeSeries(text, motion.root.rotation[k], motion.period, note(kDofCount + 3 + k),
-                residual(kDofCount + 3 + k));
+    writeSeries(text, motion.root.rotation[k], motion.period, note(kDofCount + 3 + k), residual(kDofCount + 3 + k));
   }
   if (motion.body_shape) {
-    text << "body_shape:  # the person's proportions (Eq. 5 [a, b, c] per bone, then the joint's offset in metres if any):\n"
+    text << "body_shape:  # the person's proportions (Eq. 5 [a, b, c] per bone, then the joint's offset in metres if "
+            "any):\n"
          << "             # robot_description must carry them (human_urdf)\n";
     text << std::setprecision(6);
     for (std::size_t b = 0; b < kBoneCount; ++b) {

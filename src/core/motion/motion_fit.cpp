@@ -11,9 +11,9 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 constexpr std::size_t kMinSamplesPerCycle = 8;
-constexpr std::size_t kRootX = kDofCount;          // series index of the root's forward translation
+constexpr std::size_t kRootX = kDofCount;  // series index of the root's forward translation
 constexpr std::size_t kFirstRootRotation = kDofCount + 3;
-constexpr double kWalkingSpeedThreshold = 0.05;    // m/s: slower counts as walking in place
+constexpr double kWalkingSpeedThreshold = 0.05;  // m/s: slower counts as walking in place
 
 std::string number(double value) {
   std::ostringstream text;
@@ -61,7 +61,7 @@ void requireUniformSampling(const SampledMotion& sampled) {
 
 void fitSeries(MotionFit& fit, std::size_t index, const MotionFitOptions& options) {
   SeriesFitReport& report = fit.reports[index];
-  FourierSeries& series = index < kDofCount ? fit.motion.dofs[index]
+  FourierSeries& series = index < kDofCount            ? fit.motion.dofs[index]
                           : index < kFirstRootRotation ? fit.motion.root.translation[index - kDofCount]
                                                        : fit.motion.root.rotation[index - kFirstRootRotation];
   const double period = fit.motion.period;
@@ -73,10 +73,10 @@ void fitSeries(MotionFit& fit, std::size_t index, const MotionFitOptions& option
   }
   const bool linear = index == kRootX;
   const double tolerance = report.is_angle ? options.tolerance_degrees * kDegree : options.tolerance_metres;
-  const FourierFit result =
-      options.fixed_order > 0
-          ? fitFourierSeries(fit.times, fit.samples[index], period, options.fixed_order, linear)
-          : fitFourierSeriesToTolerance(fit.times, fit.samples[index], period, tolerance, fit.max_order_allowed, linear);
+  const FourierFit result = options.fixed_order > 0
+                                ? fitFourierSeries(fit.times, fit.samples[index], period, options.fixed_order, linear)
+                                : fitFourierSeriesToTolerance(fit.times, fit.samples[index], period, tolerance,
+                                                              fit.max_order_allowed, linear);
   series = result.series;
   if (linear) fit.motion.root.forward_speed = result.linear_rate;
   report.order = result.series.order();
@@ -89,7 +89,8 @@ double largestStep(const SampledMotion& sampled, std::size_t frame) {
   double step = 0.0;
   for (std::size_t i = 0; i < kDofCount; ++i) {
     if (!sampled.driven[i / kDofsPerJoint]) continue;
-    step = std::max(step, std::abs(std::remainder(sampled.angles[frame + 1][i] - sampled.angles[frame][i], 2.0 * M_PI)));
+    step =
+        std::max(step, std::abs(std::remainder(sampled.angles[frame + 1][i] - sampled.angles[frame][i], 2.0 * M_PI)));
   }
   return step;
 }
@@ -126,8 +127,8 @@ std::size_t countLeadingOutlierFrames(const SampledMotion& sampled) {
 
 MotionFit fitMotion(const SampledMotion& untrimmed, const MotionFitOptions& options) {
   validateSamples(untrimmed);
-  const std::size_t skip = options.skip_frames >= 0 ? static_cast<std::size_t>(options.skip_frames)
-                                                    : countLeadingOutlierFrames(untrimmed);
+  const std::size_t skip =
+      options.skip_frames >= 0 ? static_cast<std::size_t>(options.skip_frames) : countLeadingOutlierFrames(untrimmed);
   if (skip + 2 > untrimmed.times.size()) {
     throw MotionError(untrimmed.source + ": too few frames: skipping " + std::to_string(skip) + " of " +
                       std::to_string(untrimmed.times.size()) + " leaves nothing to fit");
@@ -188,8 +189,8 @@ MotionFit fitMotion(const SampledMotion& untrimmed, const MotionFitOptions& opti
   fit.max_order_allowed = std::min(options.max_order, sampling_limit);
   if (options.fixed_order > sampling_limit) {
     throw MotionError(sampled.source + ": order " + std::to_string(options.fixed_order) + " needs more than " +
-                      number(samples_per_cycle) + " samples per cycle (at most order " + std::to_string(sampling_limit) +
-                      ")");
+                      number(samples_per_cycle) + " samples per cycle (at most order " +
+                      std::to_string(sampling_limit) + ")");
   }
 
   const std::size_t n = fit.frames_used;
@@ -238,7 +239,8 @@ MotionFit fitMotion(const SampledMotion& untrimmed, const MotionFitOptions& opti
 
 MotionFit refitWithOrder(const MotionFit& fit, std::size_t order) {
   if (order > (fit.times.size() - 1) / 2) {
-    throw MotionError("order " + std::to_string(order) + " needs more than " + std::to_string(fit.times.size()) + " samples");
+    throw MotionError("order " + std::to_string(order) + " needs more than " + std::to_string(fit.times.size()) +
+                      " samples");
   }
   MotionFit refit = fit;
   MotionFitOptions options;

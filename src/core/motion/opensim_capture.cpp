@@ -26,8 +26,8 @@ void checkEvenTimes(const OpenSimTable& table, const std::string& source_name) {
 }
 
 // The model's coordinate values in one row, in model units.
-std::vector<double> rowCoordinates(const OpenSimModel& model, const OpenSimTable& table, const std::vector<int>& columns,
-                                   std::size_t row) {
+std::vector<double> rowCoordinates(const OpenSimModel& model, const OpenSimTable& table,
+                                   const std::vector<int>& columns, std::size_t row) {
   std::vector<double> values(model.coordinates.size());
   for (std::size_t c = 0; c < values.size(); ++c) {
     const OpenSimCoordinate& coordinate = model.coordinates[c];
@@ -90,7 +90,8 @@ OpenSimScale estimateOpenSimScale(const OpenSimModel& model, const OpenSimTable&
   }
   std::vector<double> factors;
   for (std::size_t r = 1; r + 1 < rows; ++r) {
-    const double speed = (pelvis[r + 1] + drop[r + 1] - pelvis[r - 1] - drop[r - 1]) / (table.times[r + 1] - table.times[r - 1]);
+    const double speed =
+        (pelvis[r + 1] + drop[r + 1] - pelvis[r - 1] - drop[r - 1]) / (table.times[r + 1] - table.times[r - 1]);
     if (std::abs(speed) < 0.05 && standing - drop[r] > 0.0) factors.push_back(pelvis[r] / (standing - drop[r]));
   }
   if (factors.size() < 10) {
@@ -106,7 +107,8 @@ OpenSimScale estimateOpenSimScale(const OpenSimModel& model, const OpenSimTable&
   }
   scale.factor = factor;
   scale.estimated = true;
-  scale.why = "scaled by " + number(factor) + " so that the resting feet stand on the floor (y = 0) as in the model's default pose";
+  scale.why = "scaled by " + number(factor) +
+              " so that the resting feet stand on the floor (y = 0) as in the model's default pose";
   return scale;
 }
 
@@ -115,7 +117,8 @@ BvhClip openSimMotionClip(const OpenSimModel& model, const OpenSimTable& table, 
   checkEvenTimes(table, source_name);
   const std::vector<int> columns = tableColumns(model, table);
   const bool any = std::any_of(columns.begin(), columns.end(), [](int column) { return column >= 0; });
-  if (!any) throw OpenSimModelError(where + ": the motion has none of the model's coordinates (a motion of another model?)");
+  if (!any)
+    throw OpenSimModelError(where + ": the motion has none of the model's coordinates (a motion of another model?)");
 
   BvhClip clip;
   std::vector<int> joint_of_body(model.bodies.size(), -1);

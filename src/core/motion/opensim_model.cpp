@@ -137,7 +137,8 @@ class ModelReader {
 
   Eigen::Vector3d vector3(const XMLElement* element, const std::string& what) const {
     const std::vector<double> v = numbers(element);
-    if (v.size() != 3 || !std::isfinite(v[0])) fail(what + " must be three finite numbers, got '" + words(element) + "'");
+    if (v.size() != 3 || !std::isfinite(v[0]))
+      fail(what + " must be three finite numbers, got '" + words(element) + "'");
     const Eigen::Vector3d vector(v[0], v[1], v[2]);
     if (vector.cwiseAbs().maxCoeff() > kMaxNumber) fail(what + " '" + words(element) + "' is beyond " + kMaxNumberText);
     return vector;
@@ -158,13 +159,16 @@ class ModelReader {
     const std::string target = words(joint.FirstChildElement(socket));
     if (target.empty()) fail(where + " is missing");
     offset = Eigen::Isometry3d::Identity();
-    for (const XMLElement* f = path(&joint, {"frames", "PhysicalOffsetFrame"}); f; f = f->NextSiblingElement("PhysicalOffsetFrame")) {
+    for (const XMLElement* f = path(&joint, {"frames", "PhysicalOffsetFrame"}); f;
+         f = f->NextSiblingElement("PhysicalOffsetFrame")) {
       if (name(f) != target) continue;
       body = bodyAt(words(f->FirstChildElement("socket_parent")), where + " frame '" + target + "' socket_parent");
-      const Eigen::Vector3d angles = f->FirstChildElement("orientation") ? vector3(f->FirstChildElement("orientation"), where + " orientation")
-                                                                          : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d angles = f->FirstChildElement("orientation")
+                                         ? vector3(f->FirstChildElement("orientation"), where + " orientation")
+                                         : Eigen::Vector3d::Zero();
       offset.translate(vector3(f->FirstChildElement("translation"), where + " frame '" + target + "' translation"));
-      offset.rotate(Eigen::AngleAxisd(angles.x(), Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(angles.y(), Eigen::Vector3d::UnitY()) *
+      offset.rotate(Eigen::AngleAxisd(angles.x(), Eigen::Vector3d::UnitX()) *
+                    Eigen::AngleAxisd(angles.y(), Eigen::Vector3d::UnitY()) *
                     Eigen::AngleAxisd(angles.z(), Eigen::Vector3d::UnitZ()));
       return;
     }
@@ -185,11 +189,13 @@ class ModelReader {
   // settled by the axes that use them.
   std::vector<int> declareCoordinates(const XMLElement& joint) {
     std::vector<int> declared;
-    for (const XMLElement* c = path(&joint, {"coordinates", "Coordinate"}); c; c = c->NextSiblingElement("Coordinate")) {
+    for (const XMLElement* c = path(&joint, {"coordinates", "Coordinate"}); c;
+         c = c->NextSiblingElement("Coordinate")) {
       const int index = coordinate(name(c), false);
       model_.coordinates[static_cast<std::size_t>(index)].rotational = false;
       const std::vector<double> value = numbers(c->FirstChildElement("default_value"));
-      if (value.size() == 1 && std::isfinite(value[0])) model_.coordinates[static_cast<std::size_t>(index)].default_value = value[0];
+      if (value.size() == 1 && std::isfinite(value[0]))
+        model_.coordinates[static_cast<std::size_t>(index)].default_value = value[0];
       declared.push_back(index);
     }
     return declared;
@@ -212,9 +218,8 @@ class ModelReader {
     const auto count = [&](const char* child, std::size_t least) {
       std::vector<double> v = numbers(element->FirstChildElement(child));
       if (v.size() < least || !std::all_of(v.begin(), v.end(), [](double x) { return std::abs(x) <= kMaxNumber; })) {
-        fail(where + " " + kind + " <" + child + "> needs at least " + std::to_string(least) + " finite numbers within " +
-             kMaxNumberText + ", got '" +
-             words(element->FirstChildElement(child)) + "'");
+        fail(where + " " + kind + " <" + child + "> needs at least " + std::to_string(least) +
+             " finite numbers within " + kMaxNumberText + ", got '" + words(element->FirstChildElement(child)) + "'");
       }
       return v;
     };
@@ -231,9 +236,11 @@ class ModelReader {
       f.kind = OpenSimFunction::Kind::kSpline;
       f.x = count("x", 2);
       f.y = count("y", 2);
-      if (f.x.size() != f.y.size()) fail(where + " SimmSpline has " + std::to_string(f.x.size()) + " x and " + std::to_string(f.y.size()) + " y");
+      if (f.x.size() != f.y.size())
+        fail(where + " SimmSpline has " + std::to_string(f.x.size()) + " x and " + std::to_string(f.y.size()) + " y");
       for (std::size_t i = 1; i < f.x.size(); ++i) {
-        if (!(f.x[i] > f.x[i - 1])) fail(where + " SimmSpline x must increase, it does not at knot " + std::to_string(i + 1));
+        if (!(f.x[i] > f.x[i - 1]))
+          fail(where + " SimmSpline x must increase, it does not at knot " + std::to_string(i + 1));
       }
       fitSimmSpline(f);
       for (const std::vector<double>* c : {&f.b, &f.c, &f.d}) {
@@ -242,8 +249,9 @@ class ModelReader {
         }
       }
     } else {
-      fail(where + " uses a " + kind + ", which is not read (LinearFunction, Constant, PolynomialFunction, SimmSpline, "
-                   "MultiplierFunction are)");
+      fail(where + " uses a " + kind +
+           ", which is not read (LinearFunction, Constant, PolynomialFunction, SimmSpline, "
+           "MultiplierFunction are)");
     }
     return f;
   }
@@ -251,7 +259,8 @@ class ModelReader {
   OpenSimTransformAxis readAxis(const XMLElement& element, bool rotation, const std::string& where) {
     OpenSimTransformAxis axis;
     const std::string names = words(element.FirstChildElement("coordinates"));
-    if (names.find(' ') != std::string::npos) fail(where + " depends on several coordinates (" + names + "), which is not read");
+    if (names.find(' ') != std::string::npos)
+      fail(where + " depends on several coordinates (" + names + "), which is not read");
     if (!names.empty()) axis.coordinate = coordinate(names, rotation);
     axis.axis = vector3(element.FirstChildElement("axis"), where + " axis");
     if (axis.axis.norm() < 1e-12) fail(where + " axis has no length");
@@ -291,12 +300,14 @@ class ModelReader {
     if (type == "CustomJoint") {
       const XMLElement* transform = element.FirstChildElement("SpatialTransform");
       if (!transform) fail(where + " has no <SpatialTransform>");
-      for (const XMLElement* axis = transform->FirstChildElement("TransformAxis"); axis; axis = axis->NextSiblingElement("TransformAxis")) {
+      for (const XMLElement* axis = transform->FirstChildElement("TransformAxis"); axis;
+           axis = axis->NextSiblingElement("TransformAxis")) {
         const std::string axis_name = name(axis);
         const bool rotation = axis_name.rfind("rotation", 0) == 0;
         const bool translation = axis_name.rfind("translation", 0) == 0;
         const int k = axis_name.empty() ? 0 : axis_name.back() - '1';
-        if ((!rotation && !translation) || k < 0 || k > 2) fail(where + " has a TransformAxis named '" + axis_name + "'");
+        if ((!rotation && !translation) || k < 0 || k > 2)
+          fail(where + " has a TransformAxis named '" + axis_name + "'");
         (rotation ? joint.rotations : joint.translations)[static_cast<std::size_t>(k)] =
             readAxis(*axis, rotation, where + " " + axis_name);
       }
@@ -320,8 +331,9 @@ class ModelReader {
     for (std::size_t j = 0; j < unordered.size(); ++j) {
       int& by = placed_by[static_cast<std::size_t>(unordered[j].child_body)];
       if (by >= 0) {
-        fail("body '" + model_.bodies[static_cast<std::size_t>(unordered[j].child_body)] + "' is the child of two joints ('" +
-             unordered[static_cast<std::size_t>(by)].name + "', '" + unordered[j].name + "'): a closed loop is not read");
+        fail("body '" + model_.bodies[static_cast<std::size_t>(unordered[j].child_body)] +
+             "' is the child of two joints ('" + unordered[static_cast<std::size_t>(by)].name + "', '" +
+             unordered[j].name + "'): a closed loop is not read");
       }
       by = static_cast<int>(j);
     }
@@ -392,7 +404,8 @@ int OpenSimModel::findCoordinate(const std::string& coordinate) const {
 Eigen::Isometry3d OpenSimModel::jointTransform(std::size_t joint, const std::vector<double>& coordinate_values) const {
   const OpenSimJoint& j = joints.at(joint);
   const auto value = [&](const OpenSimTransformAxis& axis) {
-    return axis.function.value(axis.coordinate < 0 ? 0.0 : coordinate_values[static_cast<std::size_t>(axis.coordinate)]);
+    return axis.function.value(axis.coordinate < 0 ? 0.0
+                                                   : coordinate_values[static_cast<std::size_t>(axis.coordinate)]);
   };
   Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();
   for (const OpenSimTransformAxis& axis : j.translations) moved.translation() += value(axis) * axis.axis;
@@ -423,7 +436,8 @@ OpenSimModel OpenSimModel::scaled(double factor) const {
     joint.parent_offset.translation() *= factor;
     joint.child_offset.translation() *= factor;
     for (OpenSimTransformAxis& axis : joint.translations) {
-      if (axis.coordinate < 0 || coordinates[static_cast<std::size_t>(axis.coordinate)].rotational) axis.function.scale *= factor;
+      if (axis.coordinate < 0 || coordinates[static_cast<std::size_t>(axis.coordinate)].rotational)
+        axis.function.scale *= factor;
     }
   }
   return model;

@@ -129,7 +129,8 @@ class MotReader {
         }
       }
       if (!table_.times.empty() && !(row[0] > table_.times.back())) {
-        fail(at_, "time " + fields[0] + " does not increase (previous row: " + std::to_string(table_.times.back()) + ")");
+        fail(at_,
+             "time " + fields[0] + " does not increase (previous row: " + std::to_string(table_.times.back()) + ")");
       }
       table_.times.push_back(row[0]);
       table_.rows.push_back(std::move(row));

@@ -8,20 +8,25 @@ namespace {
 
 PatternKind parseKind(char letter, std::size_t position) {
   switch (letter) {
-    case 'I': case 'i': return PatternKind::I;
-    case 'Y': case 'y': return PatternKind::Y;
-    case 'X': case 'x': return PatternKind::X;
-    default: break;
+    case 'I':
+    case 'i':
+      return PatternKind::I;
+    case 'Y':
+    case 'y':
+      return PatternKind::Y;
+    case 'X':
+    case 'x':
+      return PatternKind::X;
+    default:
+      break;
   }
   std::ostringstream message;
-  message << "chain pattern string: character '" << letter << "' at position " << position
-          << " is not one of I, Y, X";
+  message << "chain pattern string: character '" << letter << "' at position " << position << " is not one of I, Y, X";
   throw std::invalid_argument(message.str());
 }
 
 // Left-to-right propagation; a Y takes whatever its left neighbour offers.
-bool orientFrom(const std::vector<PatternKind>& kinds, bool first_y_split_left,
-                std::vector<ChainCell>& cells) {
+bool orientFrom(const std::vector<PatternKind>& kinds, bool first_y_split_left, std::vector<ChainCell>& cells) {
   cells.assign(kinds.size(), ChainCell{});
   for (std::size_t index = 0; index < kinds.size(); ++index) {
     ChainCell& cell = cells[index];
@@ -82,8 +87,8 @@ BucklingChain buildBucklingChain(const std::string& kinds, double alpha, const B
         throw std::domain_error(message.str());
       }
       const double bend = previous.splitRight() ? previous.solution().bend_angle : 0.0;
-      to_world = to_world * Eigen::Translation3d(lx, 0.0, 0.0) *
-                 Eigen::AngleAxisd(bend, Eigen::Vector3d::UnitY()) * Eigen::Translation3d(lx, 0.0, 0.0);
+      to_world = to_world * Eigen::Translation3d(lx, 0.0, 0.0) * Eigen::AngleAxisd(bend, Eigen::Vector3d::UnitY()) *
+                 Eigen::Translation3d(lx, 0.0, 0.0);
       chain.joint_bend_angles.push_back(bend);
     }
     chain.cell_to_world.push_back(to_world);

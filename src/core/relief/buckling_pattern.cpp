@@ -7,17 +7,19 @@
 
 namespace dressed_human {
 
-BucklingPattern::BucklingPattern(PatternKind kind, double alpha, const BucklingCell& cell,
-                                 OutOfDomainPolicy policy, bool split_on_right)
+BucklingPattern::BucklingPattern(PatternKind kind, double alpha, const BucklingCell& cell, OutOfDomainPolicy policy,
+                                 bool split_on_right)
     : cell_(cell), solution_(solveBuckling(kind, alpha, cell, policy)) {
   if (!(solution_.alpha > 0.0)) {
     std::ostringstream message;
     message << "BucklingPattern: effective alpha = 0 folds the cell onto a line (footprint of zero "
-               "area); use alpha > 0 (requested alpha = " << alpha << ")";
+               "area); use alpha > 0 (requested alpha = "
+            << alpha << ")";
     throw std::invalid_argument(message.str());
   }
   switch (solution_.kind) {
-    case PatternKind::I: break;
+    case PatternKind::I:
+      break;
     case PatternKind::Y:
       split_left_ = !split_on_right;
       split_right_ = split_on_right;
@@ -43,9 +45,8 @@ BucklingPattern::BucklingPattern(PatternKind kind, double alpha, const BucklingC
   folded_points_[7] = {0.0, 0.0, h1};
 
   const std::array<Eigen::Vector2d, 8> rest = {
-      Eigen::Vector2d::Zero(),   Eigen::Vector2d(-lx, -ly), Eigen::Vector2d(lx, -ly),
-      Eigen::Vector2d(lx, ly),   Eigen::Vector2d(-lx, ly),  Eigen::Vector2d(-lx, 0.0),
-      Eigen::Vector2d(lx, 0.0),  Eigen::Vector2d(0.0, 0.0)};
+      Eigen::Vector2d::Zero(),  Eigen::Vector2d(-lx, -ly), Eigen::Vector2d(lx, -ly), Eigen::Vector2d(lx, ly),
+      Eigen::Vector2d(-lx, ly), Eigen::Vector2d(-lx, 0.0), Eigen::Vector2d(lx, 0.0), Eigen::Vector2d(0.0, 0.0)};
   // One triangulation serves all three patterns: for an I edge the two side triangles are
   // coplanar with the centre ones, for a split edge they are the tucked-in faces.
   const int triangles[6][3] = {{1, 2, 7}, {7, 3, 4}, {1, 7, 5}, {5, 7, 4}, {2, 6, 7}, {7, 6, 3}};
@@ -78,8 +79,7 @@ BucklingPattern::BucklingPattern(PatternKind kind, double alpha, const BucklingC
   addProjectedFace(p2, Eigen::Vector3d(lx, 0.0, h1), p7);
 }
 
-void BucklingPattern::addProjectedFace(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c) {
+void BucklingPattern::addProjectedFace(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   ProjectedFace face;
   face.origin = a.head<2>();
   face.edge_u = (b - a).head<2>();

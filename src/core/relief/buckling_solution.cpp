@@ -77,12 +77,10 @@ SplitDisplacement solveSplitDisplacement(double h1, double half_width_x) {
 
 Eigen::Vector2d equation10Residual(double w, double h1, double h2, double half_width_x) {
   const double lx = half_width_x;
-  return Eigen::Vector2d(w * w - h1 * h1 + h2 * h2,
-                         (w - lx) * (w - lx) + (h1 + h2) * (h1 + h2) - lx * lx);
+  return Eigen::Vector2d(w * w - h1 * h1 + h2 * h2, (w - lx) * (w - lx) + (h1 + h2) * (h1 + h2) - lx * lx);
 }
 
-BucklingSolution solveBuckling(PatternKind kind, double alpha, const BucklingCell& cell,
-                               OutOfDomainPolicy policy) {
+BucklingSolution solveBuckling(PatternKind kind, double alpha, const BucklingCell& cell, OutOfDomainPolicy policy) {
   requireValidCell(cell);
   requireValidAlpha(alpha);
   BucklingSolution solution;
@@ -103,9 +101,8 @@ BucklingSolution solveBuckling(PatternKind kind, double alpha, const BucklingCel
           break;
         case OutOfDomainPolicy::throwError: {
           std::ostringstream message;
-          message << "alpha = " << alpha << " is below alpha_min = " << alpha_min << " where the "
-                  << patternName(kind) << " pattern exists for L_x = " << cell.half_width_x
-                  << ", L_y = " << cell.half_length_y;
+          message << "alpha = " << alpha << " is below alpha_min = " << alpha_min << " where the " << patternName(kind)
+                  << " pattern exists for L_x = " << cell.half_width_x << ", L_y = " << cell.half_length_y;
           throw std::domain_error(message.str());
         }
       }
@@ -126,9 +123,12 @@ BucklingSolution solveBuckling(PatternKind kind, double alpha, const BucklingCel
 
 const char* patternName(PatternKind kind) {
   switch (kind) {
-    case PatternKind::I: return "I";
-    case PatternKind::Y: return "Y";
-    case PatternKind::X: return "X";
+    case PatternKind::I:
+      return "I";
+    case PatternKind::Y:
+      return "Y";
+    case PatternKind::X:
+      return "X";
   }
   return "?";
 }

@@ -81,7 +81,8 @@ ReliefMap lowPassRelief(const ReliefMap& tile, int harmonics_u, int harmonics_v,
     for (int ku = 0; ku < ku_count; ++ku) {
       Complex value = 0.0, dv = 0.0;
       for (int kv = -harmonics_v; kv <= harmonics_v; ++kv) {
-        const Complex term = coefficients[static_cast<std::size_t>(kv + harmonics_v) * ku_count + ku] * std::conj(v_twiddle(kv, r));
+        const Complex term =
+            coefficients[static_cast<std::size_t>(kv + harmonics_v) * ku_count + ku] * std::conj(v_twiddle(kv, r));
         value += term;
         dv += term * Complex(0.0, 2.0 * M_PI * kv / height);
       }

@@ -39,8 +39,8 @@ GaussianFoldApproximation fitGaussians(const BucklingPattern& pattern, int term_
   }
   if (options.samples_per_axis < 4 || options.centres_per_axis < 2) {
     std::ostringstream message;
-    message << "fitGaussians: samples_per_axis must be >= 4 and centres_per_axis >= 2, got "
-            << options.samples_per_axis << " and " << options.centres_per_axis;
+    message << "fitGaussians: samples_per_axis must be >= 4 and centres_per_axis >= 2, got " << options.samples_per_axis
+            << " and " << options.centres_per_axis;
     throw std::invalid_argument(message.str());
   }
   const double lx = pattern.cell().half_width_x;

@@ -6,8 +6,8 @@
 
 namespace dressed_human {
 
-double lambertIntensity(const Eigen::Vector3d& light, const Eigen::Vector3d& normal,
-                        double incident_intensity, double diffuse_coefficient) {
+double lambertIntensity(const Eigen::Vector3d& light, const Eigen::Vector3d& normal, double incident_intensity,
+                        double diffuse_coefficient) {
   const double light_norm = light.norm();
   const double normal_norm = normal.norm();
   if (!(light_norm > 0.0)) throw std::invalid_argument("lambertIntensity: light vector L must be non-zero");
@@ -16,8 +16,8 @@ double lambertIntensity(const Eigen::Vector3d& light, const Eigen::Vector3d& nor
   return incident_intensity * diffuse_coefficient * std::max(0.0, cosine);
 }
 
-std::vector<std::uint8_t> shadeReliefMap(const ReliefMap& map, const Eigen::Vector3d& light,
-                                         double incident_intensity, double diffuse_coefficient) {
+std::vector<std::uint8_t> shadeReliefMap(const ReliefMap& map, const Eigen::Vector3d& light, double incident_intensity,
+                                         double diffuse_coefficient) {
   if (!(light.norm() > 0.0)) throw std::invalid_argument("shadeReliefMap: light vector must be non-zero");
   const Eigen::Vector3d unit_light = light.normalized();
   std::vector<std::uint8_t> grey(map.heights.size());

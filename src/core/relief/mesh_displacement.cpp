@@ -137,16 +137,16 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
       relief = displacement.fold_mips ? orientedFolds(*displacement.fold_mips, uv, axis, weight, uv_spacing)
                                       : orientedFolds(*displacement.folds, uv, axis, weight);
     } else {
-      relief = displacement.map_mips
-                   ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiling, uv.y() * tiling, uv_spacing * tiling * map->width)
-                   : sampleReliefMap(*map, uv.x() * tiling, uv.y() * tiling);
+      relief = displacement.map_mips ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiling, uv.y() * tiling,
+                                                          uv_spacing * tiling * map->width)
+                                     : sampleReliefMap(*map, uv.x() * tiling, uv.y() * tiling);
     }
     const double lu = fu.norm(), lv = fv.norm();
     // At a pole one derivative vanishes: the tile has no size there and nothing moves.
     const double metres_per_tile = std::sqrt(lu * lv) / tiling;
-    out.positions[i] =
-        (base.positions[i].cast<double>() + normal * (amplitude * displacement.height_to_tile * relief.height * metres_per_tile))
-            .cast<float>();
+    out.positions[i] = (base.positions[i].cast<double>() +
+                        normal * (amplitude * displacement.height_to_tile * relief.height * metres_per_tile))
+                           .cast<float>();
     Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
     if (lu > 1e-12 && lv > 1e-12) {
       const double scale = amplitude * std::sqrt(lu * lv);

@@ -74,9 +74,9 @@ float strongPatternWeight(float strength) {
 FoldTiles::FoldTiles(ReliefMap slight_tile, ReliefMap strong_tile)
     : slight(std::move(slight_tile)), strong(std::move(strong_tile)) {
   if (slight.width <= 0 || slight.height <= 0 || slight.width != strong.width || slight.height != strong.height) {
-    throw std::invalid_argument("fold tiles of " + std::to_string(slight.width) + " x " + std::to_string(slight.height) +
-                                " and " + std::to_string(strong.width) + " x " + std::to_string(strong.height) +
-                                " pixels: they must be one non-empty size");
+    throw std::invalid_argument("fold tiles of " + std::to_string(slight.width) + " x " +
+                                std::to_string(slight.height) + " and " + std::to_string(strong.width) + " x " +
+                                std::to_string(strong.height) + " pixels: they must be one non-empty size");
   }
 }
 
@@ -90,7 +90,8 @@ ReliefSample blendOrientations(const Eigen::Vector2d& uv, const Eigen::Vector2f&
   const FoldBlend blend = foldOrientationBlend(fold_axis);
   const double strong = strongPatternWeight(strength);
   ReliefSample sum;
-  for (const auto& [k, weight] : {std::make_pair(blend.first, blend.first_weight), std::make_pair(blend.second, blend.second_weight)}) {
+  for (const auto& [k, weight] :
+       {std::make_pair(blend.first, blend.first_weight), std::make_pair(blend.second, blend.second_weight)}) {
     if (weight <= 0.0f) continue;
     const Eigen::Vector2d at = foldTileCoordinate(k, uv);
     ReliefSample slight, strong_sample;
@@ -112,10 +113,11 @@ ReliefSample blendOrientations(const Eigen::Vector2d& uv, const Eigen::Vector2f&
 
 ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
                            float strength) {
-  return blendOrientations(uv, fold_axis, strength, [&](int, const Eigen::Vector2d& at, ReliefSample* slight, ReliefSample* strong) {
-    *slight = sampleReliefMap(tiles.slight, at.x(), at.y());
-    *strong = sampleReliefMap(tiles.strong, at.x(), at.y());
-  });
+  return blendOrientations(uv, fold_axis, strength,
+                           [&](int, const Eigen::Vector2d& at, ReliefSample* slight, ReliefSample* strong) {
+                             *slight = sampleReliefMap(tiles.slight, at.x(), at.y());
+                             *strong = sampleReliefMap(tiles.strong, at.x(), at.y());
+                           });
 }
 
 FoldTileMips buildFoldTileMips(const FoldTiles& tiles) {
@@ -125,16 +127,17 @@ FoldTileMips buildFoldTileMips(const FoldTiles& tiles) {
 ReliefSample orientedFolds(const FoldTileMips& mips, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
                            float strength, double uv_spacing) {
   if (mips.slight.empty() || mips.slight.size() != mips.strong.size()) {
-    throw std::invalid_argument("orientedFolds: fold tile mip chains of " + std::to_string(mips.slight.size()) + " and " +
-                                std::to_string(mips.strong.size()) + " levels");
+    throw std::invalid_argument("orientedFolds: fold tile mip chains of " + std::to_string(mips.slight.size()) +
+                                " and " + std::to_string(mips.strong.size()) + " levels");
   }
-  return blendOrientations(uv, fold_axis, strength, [&](int k, const Eigen::Vector2d& at, ReliefSample* slight, ReliefSample* strong) {
-    // The lookup scale * [[q, -p], [p, q]] stretches patch coordinates by scale * |(p, q)|.
-    const FoldOrientation& o = foldOrientations()[static_cast<std::size_t>(k)];
-    const double texels = uv_spacing * o.scale * std::hypot(o.p, o.q) * mips.slight.front().width;
-    *slight = sampleReliefLevels(mips.slight, at.x(), at.y(), texels);
-    *strong = sampleReliefLevels(mips.strong, at.x(), at.y(), texels);
-  });
+  return blendOrientations(
+      uv, fold_axis, strength, [&](int k, const Eigen::Vector2d& at, ReliefSample* slight, ReliefSample* strong) {
+        // The lookup scale * [[q, -p], [p, q]] stretches patch coordinates by scale * |(p, q)|.
+        const FoldOrientation& o = foldOrientations()[static_cast<std::size_t>(k)];
+        const double texels = uv_spacing * o.scale * std::hypot(o.p, o.q) * mips.slight.front().width;
+        *slight = sampleReliefLevels(mips.slight, at.x(), at.y(), texels);
+        *strong = sampleReliefLevels(mips.strong, at.x(), at.y(), texels);
+      });
 }
 
 std::vector<std::uint8_t> encodeFoldTilesRgba(const FoldTiles& tiles) {
@@ -159,7 +162,8 @@ EncodedNormalMap encodeFoldTilesMips(const FoldTiles& tiles) {
   encoded.channels = 4;
   FoldTileMips mips = buildFoldTileMips(tiles);
   for (std::size_t level = 0; level < mips.slight.size(); ++level) {
-    encoded.levels.push_back(encodeFoldTilesRgba(FoldTiles(std::move(mips.slight[level]), std::move(mips.strong[level]))));
+    encoded.levels.push_back(
+        encodeFoldTilesRgba(FoldTiles(std::move(mips.slight[level]), std::move(mips.strong[level]))));
   }
   return encoded;
 }

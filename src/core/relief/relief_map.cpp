@@ -35,8 +35,9 @@ float ReliefMap::maximumHeight() const {
 
 double rmsHeightDifference(const ReliefMap& a, const ReliefMap& b) {
   if (a.width != b.width || a.height != b.height) {
-    throw std::invalid_argument("rmsHeightDifference: maps of " + std::to_string(a.width) + " x " + std::to_string(a.height) +
-                                " and " + std::to_string(b.width) + " x " + std::to_string(b.height) + " pixels");
+    throw std::invalid_argument("rmsHeightDifference: maps of " + std::to_string(a.width) + " x " +
+                                std::to_string(a.height) + " and " + std::to_string(b.width) + " x " +
+                                std::to_string(b.height) + " pixels");
   }
   double squares = 0.0;
   for (std::size_t i = 0; i < a.heights.size(); ++i) {

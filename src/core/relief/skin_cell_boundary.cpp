@@ -14,7 +14,8 @@ double wallParameter(const Wall& wall, const Eigen::Vector2d& point) {
 }
 
 // Knots of a wall's polyline strictly between u_from and u_to, in that order.
-void appendKnots(const CellLevel& level, const Wall& wall, double u_from, double u_to, std::vector<Eigen::Vector2d>& chain) {
+void appendKnots(const CellLevel& level, const Wall& wall, double u_from, double u_to,
+                 std::vector<Eigen::Vector2d>& chain) {
   if (level.subdivisions == 0 || wall.wobble < 0) return;
   const int segments = 1 << level.subdivisions;
   if (u_from < u_to) {
@@ -39,7 +40,7 @@ Eigen::Vector2d junctionOnParentWall(const CellLevel& level, const Wall& wall, c
                                      const Eigen::Vector2d& outward) {
   const double u0 = wallParameter(wall, junction);
   const double h0 = (junction - wall.start).dot(wall.normal);
-  const double rise = outward.dot(wall.normal);  // height gain per unit along `outward`
+  const double rise = outward.dot(wall.normal);                  // height gain per unit along `outward`
   const double drift = outward.dot(wall.tangent) / wall.length;  // u per unit along `outward`
   const double f0 = h0 - outwardWobble(level, wall, u0);
   if (!(f0 < 0.0) || !(rise > 0.0) || level.subdivisions == 0) return wallPoint(level, wall, u0);
@@ -47,7 +48,8 @@ Eigen::Vector2d junctionOnParentWall(const CellLevel& level, const Wall& wall, c
   const int segments = 1 << level.subdivisions;
   const auto f = [&](double t) { return h0 + rise * t - outwardWobble(level, wall, u0 + drift * t); };
   double t_previous = 0.0, f_previous = f0;
-  int knot = drift > 0.0 ? static_cast<int>(std::floor(u0 * segments)) + 1 : static_cast<int>(std::ceil(u0 * segments)) - 1;
+  int knot =
+      drift > 0.0 ? static_cast<int>(std::floor(u0 * segments)) + 1 : static_cast<int>(std::ceil(u0 * segments)) - 1;
   for (int step = 0; step <= segments + 1 && drift != 0.0; ++step) {
     const double u_knot = static_cast<double>(knot) / segments;
     const double t_knot = (u_knot - u0) / drift;
@@ -96,7 +98,8 @@ Eigen::Vector2d fanGradient(const std::vector<Eigen::Vector2d>& relative, std::s
 // Folded somewhere: split the circle at every vertex direction and keep, per piece, the nearest
 // boundary crossing (largest s); the pockets behind a fold are left to the per-pixel path
 // (nothing here claims them).
-void foldedBoundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors, BoundaryFanScratch& scratch) {
+void foldedBoundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors,
+                       BoundaryFanScratch& scratch) {
   const std::size_t n = relative.size();
   scratch.angles.resize(n);
   scratch.order.resize(n);
@@ -167,7 +170,8 @@ void foldedBoundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector
 // wall's polyline between the cell's corners. Where a finer furrow ends on a coarser (inherited)
 // one, the boundary follows the finer furrow's straight line on to the coarser one's wobble
 // (junctionOnParentWall) -- the same point on both sides and on every level below.
-std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels, std::size_t level_index, const Cell& cell) {
+std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels, std::size_t level_index,
+                                           const Cell& cell) {
   const CellLevel& level = levels[level_index];
   std::vector<Eigen::Vector2d> chain;
   const std::size_t count = cell.polygon.size();
@@ -189,7 +193,8 @@ std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels,
       first = junctionOnParentWall(level, wall, from, (from - cell.polygon[before]).normalized());
       chain.push_back(first);
     }
-    if (junction_last) last = junctionOnParentWall(level, wall, to, (to - cell.polygon[(edge + 2) % count]).normalized());
+    if (junction_last)
+      last = junctionOnParentWall(level, wall, to, (to - cell.polygon[(edge + 2) % count]).normalized());
     const double u_from = wallParameter(wall, from), u_to = wallParameter(wall, to);
     double u_first = wallParameter(wall, first), u_last = wallParameter(wall, last);
     // Keep the junction points inside the edge's own u range order.
@@ -200,7 +205,8 @@ std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels,
   return chain;
 }
 
-void boundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors, BoundaryFanScratch& scratch) {
+void boundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors,
+                 BoundaryFanScratch& scratch) {
   sectors.clear();
   const std::size_t n = relative.size();
   bool monotone = n >= 3;

@@ -83,9 +83,7 @@ std::vector<Eigen::Vector2d> latticeSeeds(const Lattice& lattice, double jitter,
   return seeds;
 }
 
-int floorDivide(int value, int divisor) {
-  return value >= 0 ? value / divisor : -((-value + divisor - 1) / divisor);
-}
+int floorDivide(int value, int divisor) { return value >= 0 ? value / divisor : -((-value + divisor - 1) / divisor); }
 
 // Midpoint displacement of a wall of `length`: 2^subdivisions segments, zero at both ends.
 // The profile is scaled so it never comes closer than half way to either seed (`clearance` is the
@@ -137,9 +135,11 @@ void finishWall(Wall& wall, const Eigen::Vector2d& centre) {
 double maximumWobble(const CellLevel& level, const Wall& wall) {
   if (wall.wobble < 0) return 0.0;
   const std::size_t samples = (static_cast<std::size_t>(1) << level.subdivisions) + 1;
-  const auto begin = level.wobble_samples.begin() + static_cast<std::ptrdiff_t>(samples * static_cast<std::size_t>(wall.wobble));
+  const auto begin =
+      level.wobble_samples.begin() + static_cast<std::ptrdiff_t>(samples * static_cast<std::size_t>(wall.wobble));
   double largest = 0.0;
-  for (auto it = begin; it != begin + static_cast<std::ptrdiff_t>(samples); ++it) largest = std::max(largest, std::abs(*it));
+  for (auto it = begin; it != begin + static_cast<std::ptrdiff_t>(samples); ++it)
+    largest = std::max(largest, std::abs(*it));
   return largest;
 }
 
@@ -149,7 +149,8 @@ double maximumWobble(const CellLevel& level, const Wall& wall) {
 void buildBuckets(CellLevel& level, const Lattice& lattice) {
   level.buckets_x = 3 * lattice.columns;
   level.buckets_y = 3 * lattice.rows;
-  const std::size_t bucket_count = static_cast<std::size_t>(level.buckets_x) * static_cast<std::size_t>(level.buckets_y);
+  const std::size_t bucket_count =
+      static_cast<std::size_t>(level.buckets_x) * static_cast<std::size_t>(level.buckets_y);
   std::vector<std::vector<std::pair<int, Eigen::Vector2i>>> buckets(bucket_count);
   for (std::size_t index = 0; index < level.cells.size(); ++index) {
     const Cell& cell = level.cells[index];
@@ -171,7 +172,8 @@ void buildBuckets(CellLevel& level, const Lattice& lattice) {
         const int y1 = std::min(level.buckets_y - 1, static_cast<int>(std::floor(b.y() * level.buckets_y)));
         for (int by = y0; by <= y1; ++by)
           for (int bx = x0; bx <= x1; ++bx)
-            buckets[static_cast<std::size_t>(by) * static_cast<std::size_t>(level.buckets_x) + static_cast<std::size_t>(bx)]
+            buckets[static_cast<std::size_t>(by) * static_cast<std::size_t>(level.buckets_x) +
+                    static_cast<std::size_t>(bx)]
                 .emplace_back(static_cast<int>(index), Eigen::Vector2i(-ox, -oy));
       }
     }
@@ -196,7 +198,10 @@ void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, dou
   std::map<WallKey, int> wobble_of_wall;
   std::vector<Eigen::Vector2d> polygon, scratch_polygon;
   std::vector<int> tags, scratch_tags;
-  struct Candidate { int cell; Eigen::Vector2i offset; };
+  struct Candidate {
+    int cell;
+    Eigen::Vector2i offset;
+  };
   std::vector<Candidate> candidates;
   const double cell_width = 1.0 / lattice.columns, cell_height = 1.0 / lattice.rows;
   for (int row = 0; row < lattice.rows; ++row) {
@@ -222,16 +227,20 @@ void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, dou
                    centre + Eigen::Vector2d(box, box), centre + Eigen::Vector2d(-box, box)};
         tags.assign(4, kBoxTag);
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-          const Eigen::Vector2d other = seeds[static_cast<std::size_t>(candidates[k].cell)] + candidates[k].offset.cast<double>();
+          const Eigen::Vector2d other =
+              seeds[static_cast<std::size_t>(candidates[k].cell)] + candidates[k].offset.cast<double>();
           const Eigen::Vector2d normal = level.metric * (other - centre);
-          clipPolygon(polygon, tags, normal, normal.dot(0.5 * (other + centre)), static_cast<int>(k), scratch_polygon, scratch_tags);
+          clipPolygon(polygon, tags, normal, normal.dot(0.5 * (other + centre)), static_cast<int>(k), scratch_polygon,
+                      scratch_tags);
         }
         // Every seed outside the window is at least this far (metric) from the centre; the
         // smallest metric eigenvalue is 1 / stretch^2.
         const double outside = std::min((window + 0.5 - 2.0 * parameters.jitter) * cell_width,
-                                        (window + 1.0 - 2.0 * parameters.jitter) * cell_height) / stretch;
+                                        (window + 1.0 - 2.0 * parameters.jitter) * cell_height) /
+                               stretch;
         double radius_squared = 0.0;
-        for (const auto& vertex : polygon) radius_squared = std::max(radius_squared, metricDistanceSquared(level.metric, vertex - centre));
+        for (const auto& vertex : polygon)
+          radius_squared = std::max(radius_squared, metricDistanceSquared(level.metric, vertex - centre));
         const bool box_left = std::find(tags.begin(), tags.end(), kBoxTag) != tags.end();
         if (!box_left && outside * outside > 4.0 * radius_squared) break;
         if (window > 64) throw std::logic_error("SkinRelief: Voronoi neighbour window did not converge");
@@ -245,14 +254,18 @@ void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, dou
         const WallKey theirs{candidate.cell, self, -candidate.offset.x(), -candidate.offset.y()};
         const bool canonical = mine < theirs;
         const Eigen::Vector2d other = seeds[static_cast<std::size_t>(candidate.cell)] + candidate.offset.cast<double>();
-        Wall wall = makeWall(polygon[edge], polygon[(edge + 1) % polygon.size()], (level.metric * (other - centre)).normalized(), canonical);
+        Wall wall = makeWall(polygon[edge], polygon[(edge + 1) % polygon.size()],
+                             (level.metric * (other - centre)).normalized(), canonical);
         wall.neighbour = candidate.cell;
         wall.neighbour_offset = candidate.offset;
         const WallKey key = canonical ? mine : theirs;
         auto found = wobble_of_wall.find(key);
         if (found == wobble_of_wall.end()) {
-          const double clearance = std::min(std::abs((wall.start - centre).dot(wall.normal)), std::abs((wall.start - other).dot(wall.normal)));
-          found = wobble_of_wall.emplace(key, addWobbleProfile(level, parameters, wall.length, clearance, wobble_random)).first;
+          const double clearance = std::min(std::abs((wall.start - centre).dot(wall.normal)),
+                                            std::abs((wall.start - other).dot(wall.normal)));
+          found =
+              wobble_of_wall.emplace(key, addWobbleProfile(level, parameters, wall.length, clearance, wobble_random))
+                  .first;
         }
         wall.wobble = found->second;
         wall.wobble_extent = maximumWobble(level, wall);
@@ -271,14 +284,16 @@ std::pair<int, Eigen::Vector2i> straightCellAt(const std::vector<CellLevel>& lev
   const CellLevel& top = levels.front();
   const int bx = std::clamp(static_cast<int>(point.x() * top.buckets_x), 0, top.buckets_x - 1);
   const int by = std::clamp(static_cast<int>(point.y() * top.buckets_y), 0, top.buckets_y - 1);
-  const std::size_t bucket = static_cast<std::size_t>(by) * static_cast<std::size_t>(top.buckets_x) + static_cast<std::size_t>(bx);
+  const std::size_t bucket =
+      static_cast<std::size_t>(by) * static_cast<std::size_t>(top.buckets_x) + static_cast<std::size_t>(bx);
   int best = -1;
   Eigen::Vector2i best_offset = Eigen::Vector2i::Zero();
   double best_distance = INFINITY;
   for (int k = top.bucket_start[bucket]; k < top.bucket_start[bucket + 1]; ++k) {
     const auto at = static_cast<std::size_t>(k);
     const Eigen::Vector2d local = point + top.bucket_offset[at].cast<double>();
-    const double distance = metricDistanceSquared(top.metric, local - top.cells[static_cast<std::size_t>(top.bucket_cell[at])].centre);
+    const double distance =
+        metricDistanceSquared(top.metric, local - top.cells[static_cast<std::size_t>(top.bucket_cell[at])].centre);
     if (distance < best_distance) {
       best_distance = distance;
       best = top.bucket_cell[at];
@@ -291,7 +306,8 @@ std::pair<int, Eigen::Vector2i> straightCellAt(const std::vector<CellLevel>& lev
     best_distance = INFINITY;
     int child_best = -1;
     for (int child : parent.children) {
-      const double distance = metricDistanceSquared(levels[level].metric, local - levels[level].cells[static_cast<std::size_t>(child)].centre);
+      const double distance = metricDistanceSquared(
+          levels[level].metric, local - levels[level].cells[static_cast<std::size_t>(child)].centre);
       if (distance < best_distance) {
         best_distance = distance;
         child_best = child;
@@ -333,8 +349,8 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
     seed -= seed.array().floor().matrix();
     const auto [parent, offset] = straightCellAt(levels, level_index - 1, seed);
     Cell child;
-    child.centre = pushedAwayFromWalls(parents, parents.cells[static_cast<std::size_t>(parent)], seed + offset.cast<double>(),
-                                       0.15 * level.spacing);
+    child.centre = pushedAwayFromWalls(parents, parents.cells[static_cast<std::size_t>(parent)],
+                                       seed + offset.cast<double>(), 0.15 * level.spacing);
     // Two seeds of a parent too small to push them clear both land on its centre. Coincident
     // seeds have no bisector: both would get the whole polygon and each its own (different)
     // wobbled walls to the same neighbours, and the nearest-seed tie would leave the second one
@@ -372,7 +388,8 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
         if (sibling == self) continue;
         const Eigen::Vector2d& other = level.cells[static_cast<std::size_t>(sibling)].centre;
         const Eigen::Vector2d normal = level.metric * (other - cell.centre);
-        clipPolygon(polygon, tags, normal, normal.dot(0.5 * (other + cell.centre)), sibling, scratch_polygon, scratch_tags);
+        clipPolygon(polygon, tags, normal, normal.dot(0.5 * (other + cell.centre)), sibling, scratch_polygon,
+                    scratch_tags);
       }
       cell.polygon = polygon;
       cell.first_wall = static_cast<int>(level.walls.size());
@@ -390,9 +407,11 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
             auto copied = inherited_wobble.find(wall.wobble);
             if (copied == inherited_wobble.end()) {
               const std::size_t samples = (static_cast<std::size_t>(1) << level.subdivisions) + 1;
-              const auto begin = parents.wobble_samples.begin() + static_cast<std::ptrdiff_t>(samples * static_cast<std::size_t>(wall.wobble));
+              const auto begin = parents.wobble_samples.begin() +
+                                 static_cast<std::ptrdiff_t>(samples * static_cast<std::size_t>(wall.wobble));
               const int index = static_cast<int>(level.wobble_samples.size() / samples);
-              level.wobble_samples.insert(level.wobble_samples.end(), begin, begin + static_cast<std::ptrdiff_t>(samples));
+              level.wobble_samples.insert(level.wobble_samples.end(), begin,
+                                          begin + static_cast<std::ptrdiff_t>(samples));
               copied = inherited_wobble.emplace(wall.wobble, index).first;
             }
             wall.wobble = copied->second;
@@ -401,13 +420,17 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
           const int sibling = tags[edge];
           const bool canonical = self < sibling;
           const Eigen::Vector2d& other = level.cells[static_cast<std::size_t>(sibling)].centre;
-          wall = makeWall(polygon[edge], polygon[(edge + 1) % polygon.size()], (level.metric * (other - cell.centre)).normalized(), canonical);
+          wall = makeWall(polygon[edge], polygon[(edge + 1) % polygon.size()],
+                          (level.metric * (other - cell.centre)).normalized(), canonical);
           wall.neighbour = sibling;
           const WallKey key{std::min(self, sibling), std::max(self, sibling), 0, 0};
           auto found = wobble_of_wall.find(key);
           if (found == wobble_of_wall.end()) {
-            const double clearance = std::min(std::abs((wall.start - cell.centre).dot(wall.normal)), std::abs((wall.start - other).dot(wall.normal)));
-            found = wobble_of_wall.emplace(key, addWobbleProfile(level, parameters, wall.length, clearance, wobble_random)).first;
+            const double clearance = std::min(std::abs((wall.start - cell.centre).dot(wall.normal)),
+                                              std::abs((wall.start - other).dot(wall.normal)));
+            found =
+                wobble_of_wall.emplace(key, addWobbleProfile(level, parameters, wall.length, clearance, wobble_random))
+                    .first;
           }
           wall.wobble = found->second;
           wall.wobble_extent = maximumWobble(level, wall);
@@ -424,21 +447,29 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
 void validateParameters(const SkinReliefParameters& p) {
   if (!(p.cell_size > 0.0 && p.cell_size <= 1.0)) fail("cell_size", "must be in (0, 1] (tile units)", p.cell_size);
   if (p.levels < 1 || p.levels > 3) fail("levels", "must be 1, 2 or 3", p.levels);
-  if (!(p.child_cell_ratio >= 0.1 && p.child_cell_ratio <= 0.8)) fail("child_cell_ratio", "must be in [0.1, 0.8]", p.child_cell_ratio);
-  if (!(p.jitter >= 0.0 && p.jitter <= 0.5)) fail("jitter", "must be in [0, 0.5] (fraction of the seed spacing)", p.jitter);
-  if (!(p.wobble >= 0.0 && p.wobble <= 0.3)) fail("wobble", "must be in [0, 0.3] (fraction of the wall length)", p.wobble);
-  if (p.wobble_subdivisions < 0 || p.wobble_subdivisions > 6) fail("wobble_subdivisions", "must be in 0..6", p.wobble_subdivisions);
-  if (!(p.wobble_roughness >= 0.0 && p.wobble_roughness <= 1.0)) fail("wobble_roughness", "must be in [0, 1]", p.wobble_roughness);
+  if (!(p.child_cell_ratio >= 0.1 && p.child_cell_ratio <= 0.8))
+    fail("child_cell_ratio", "must be in [0.1, 0.8]", p.child_cell_ratio);
+  if (!(p.jitter >= 0.0 && p.jitter <= 0.5))
+    fail("jitter", "must be in [0, 0.5] (fraction of the seed spacing)", p.jitter);
+  if (!(p.wobble >= 0.0 && p.wobble <= 0.3))
+    fail("wobble", "must be in [0, 0.3] (fraction of the wall length)", p.wobble);
+  if (p.wobble_subdivisions < 0 || p.wobble_subdivisions > 6)
+    fail("wobble_subdivisions", "must be in 0..6", p.wobble_subdivisions);
+  if (!(p.wobble_roughness >= 0.0 && p.wobble_roughness <= 1.0))
+    fail("wobble_roughness", "must be in [0, 1]", p.wobble_roughness);
   if (!(p.roundness >= 0.0 && p.roundness <= 1.0)) fail("roundness", "must be in [0, 1]", p.roundness);
   if (!std::isfinite(p.direction_angle)) fail("direction_angle", "must be finite", p.direction_angle);
-  if (!(p.direction_stretch >= 1.0 && p.direction_stretch <= 10.0)) fail("direction_stretch", "must be in [1, 10]", p.direction_stretch);
-  if (p.directional_levels < 0 || p.directional_levels > 3) fail("directional_levels", "must be in 0..3", p.directional_levels);
+  if (!(p.direction_stretch >= 1.0 && p.direction_stretch <= 10.0))
+    fail("direction_stretch", "must be in [1, 10]", p.direction_stretch);
+  if (p.directional_levels < 0 || p.directional_levels > 3)
+    fail("directional_levels", "must be in 0..3", p.directional_levels);
   for (double depth : p.level_depth) {
     if (!(depth >= 0.0) || !std::isfinite(depth)) fail("level_depth", "entries must be finite and >= 0", depth);
   }
   // Level 3 spacing must still span a few pixels of a sensible map and a tractable cell count.
   const double finest = p.cell_size * std::pow(p.child_cell_ratio, p.levels - 1);
-  if (finest < 1.0 / 512.0) fail("cell_size", "times child_cell_ratio^(levels-1) must be >= 1/512 (too many cells)", finest);
+  if (finest < 1.0 / 512.0)
+    fail("cell_size", "times child_cell_ratio^(levels-1) must be >= 1/512 (too many cells)", finest);
   BezierProfileTable check(p.profile, 16);  // throws with the profile's own message
   (void)check;
 }
@@ -469,7 +500,8 @@ std::vector<CellLevel> buildCellHierarchy(const SkinReliefParameters& parameters
 
 }  // namespace skin_detail
 
-SkinCellHierarchy::SkinCellHierarchy(const SkinReliefParameters& parameters) : levels_(skin_detail::buildCellHierarchy(parameters)) {}
+SkinCellHierarchy::SkinCellHierarchy(const SkinReliefParameters& parameters)
+    : levels_(skin_detail::buildCellHierarchy(parameters)) {}
 
 // The messages name SkinRelief: callers meet the hierarchy through it.
 const skin_detail::CellLevel& SkinCellHierarchy::levelAt(int level) const {
@@ -483,13 +515,15 @@ const skin_detail::CellLevel& SkinCellHierarchy::levelAt(int level) const {
 
 int SkinCellHierarchy::parentOf(int level, int cell) const {
   const skin_detail::CellLevel& cells = levelAt(level);
-  if (cell < 0 || static_cast<std::size_t>(cell) >= cells.cells.size()) throw std::out_of_range("SkinRelief::parentOf: cell index out of range");
+  if (cell < 0 || static_cast<std::size_t>(cell) >= cells.cells.size())
+    throw std::out_of_range("SkinRelief::parentOf: cell index out of range");
   return cells.cells[static_cast<std::size_t>(cell)].parent;
 }
 
 const std::vector<int>& SkinCellHierarchy::childrenOf(int level, int cell) const {
   const skin_detail::CellLevel& cells = levelAt(level);
-  if (cell < 0 || static_cast<std::size_t>(cell) >= cells.cells.size()) throw std::out_of_range("SkinRelief::childrenOf: cell index out of range");
+  if (cell < 0 || static_cast<std::size_t>(cell) >= cells.cells.size())
+    throw std::out_of_range("SkinRelief::childrenOf: cell index out of range");
   return cells.cells[static_cast<std::size_t>(cell)].children;
 }
 

@@ -41,7 +41,7 @@ struct CellRows {
 
 struct LevelRows {
   std::vector<CellRows> cells;
-  std::vector<int> spans;  // first and last column per row; first > last: no pixel centre
+  std::vector<int> spans;       // first and last column per row; first > last: no pixel centre
   std::vector<int> band_start;  // band b's cells: band_cells[band_start[b] .. band_start[b + 1])
   std::vector<int> band_cells;  // in index order within each band
 };
@@ -88,7 +88,8 @@ void appendCellSpans(const RasterLevel& level, const RasterCell& cell, int width
   const Eigen::Vector2d* vertices = level.vertices.data() + cell.first_vertex;
   // Each vertex's pixel-space row coordinate once, not once per edge it ends.
   vertex_rows.resize(static_cast<std::size_t>(cell.vertex_count));
-  for (int k = 0; k < cell.vertex_count; ++k) vertex_rows[static_cast<std::size_t>(k)] = (cell.centre_y + vertices[k].y()) * height - 0.5;
+  for (int k = 0; k < cell.vertex_count; ++k)
+    vertex_rows[static_cast<std::size_t>(k)] = (cell.centre_y + vertices[k].y()) * height - 0.5;
   for (int k = 0; k < cell.vertex_count; ++k) {
     const int k_next = k + 1 == cell.vertex_count ? 0 : k + 1;
     const Eigen::Vector2d& a = vertices[k];
@@ -125,7 +126,8 @@ void appendCellSpans(const RasterLevel& level, const RasterCell& cell, int width
 }
 
 // The level's cells' rows and spans, and per band the cells that have rows in it.
-void planLevelRows(const RasterLevel& level, int width, int height, int band_count, LevelRows& rows_out, RenderScratch& scratch) {
+void planLevelRows(const RasterLevel& level, int width, int height, int band_count, LevelRows& rows_out,
+                   RenderScratch& scratch) {
   rows_out.cells.assign(level.cells.size(), CellRows());
   rows_out.spans.clear();
   rows_out.band_start.assign(static_cast<std::size_t>(band_count) + 1, 0);
@@ -165,7 +167,8 @@ void planLevelRows(const RasterLevel& level, int width, int height, int band_cou
   rows_out.band_cells.resize(cell_bands.size() / 2);
   scratch.band_fill.assign(rows_out.band_start.begin(), rows_out.band_start.end() - 1);
   for (std::size_t at = 0; at < cell_bands.size(); at += 2)
-    rows_out.band_cells[static_cast<std::size_t>(scratch.band_fill[static_cast<std::size_t>(cell_bands[at])]++)] = cell_bands[at + 1];
+    rows_out.band_cells[static_cast<std::size_t>(scratch.band_fill[static_cast<std::size_t>(cell_bands[at])]++)] =
+        cell_bands[at + 1];
 }
 
 // Where one band's pixels of one level go, and what the level needs to know of the others.
@@ -173,8 +176,8 @@ struct BandLevel {
   int band_first, band_last;
   int width, height;
   int code_base, parent_code_base;  // owner codes of this level's and the parent level's cells
-  bool masked;      // a child level: a cell claims only its parent's pixels
-  bool accumulate;  // the level's heights count (else it only decides ownership)
+  bool masked;                      // a child level: a cell claims only its parent's pixels
+  bool accumulate;                  // the level's heights count (else it only decides ownership)
   double depth;
   double inverse_width, inverse_height;
   double profile_last;
@@ -230,7 +233,8 @@ void rasteriseBandLevel(const RasterLevel& level, LevelRows& rows_in, int band, 
   RowRun* const runs = target.runs;
   int* const run_ends = target.run_ends;
   const int* band_cells = rows_in.band_cells.data();
-  for (int listed = rows_in.band_start[static_cast<std::size_t>(band)]; listed < rows_in.band_start[static_cast<std::size_t>(band) + 1]; ++listed) {
+  for (int listed = rows_in.band_start[static_cast<std::size_t>(band)];
+       listed < rows_in.band_start[static_cast<std::size_t>(band) + 1]; ++listed) {
     const auto cell_index = static_cast<std::size_t>(band_cells[listed]);
     const RasterCell& cell = level.cells[cell_index];
     CellRows& cell_rows = rows_in.cells[cell_index];
@@ -243,11 +247,13 @@ void rasteriseBandLevel(const RasterLevel& level, LevelRows& rows_in, int band, 
       const int row_low = std::max(cell_rows.row_first, band_first + wrap * height);
       const int row_high = std::min(cell_rows.row_last, band_last + wrap * height);
       for (int row = row_low; row <= row_high; ++row) {
-        const int* span = rows_in.spans.data() + cell_rows.first_span + 2 * static_cast<std::size_t>(row - cell_rows.row_first);
+        const int* span =
+            rows_in.spans.data() + cell_rows.first_span + 2 * static_cast<std::size_t>(row - cell_rows.row_first);
         if (span[0] == std::numeric_limits<int>::max()) continue;
         const int column_first = span[0];
         const int column_last = span[1];
-        const std::size_t row_base = static_cast<std::size_t>(row - wrap * height - band_first) * static_cast<std::size_t>(width);
+        const std::size_t row_base =
+            static_cast<std::size_t>(row - wrap * height - band_first) * static_cast<std::size_t>(width);
         const double dy = (row + 0.5) * inverse_height - cell.centre_y;
         sector = sectorHolding(sectors, sector_count, sector, (column_first + 0.5) * inverse_width - cell.centre_x, dy);
         // Unwrapped columns map to row_base + column + shift; the shift drops by width from
@@ -306,7 +312,8 @@ void rasteriseBandLevel(const RasterLevel& level, LevelRows& rows_in, int band, 
           const std::ptrdiff_t at = shift + pixel_column - (pixel_column >= wrap_column ? width : 0);
           // The usual sector has the winning wall's own segment as its boundary: then
           // boundary == gradient and this is s, with the same operations.
-          if (!(run.boundary_x * qx + run.boundary_dy < 1.0) || owners[at] != expected) continue;  // outside, taken, another parent's
+          if (!(run.boundary_x * qx + run.boundary_dy < 1.0) || owners[at] != expected)
+            continue;  // outside, taken, another parent's
           owners[at] = code;
           const double s = run.gradient_x * qx + run.gradient_dy;
           if (!accumulate || !(s < 1.0)) continue;  // on or past the furrow line: height 0, flat
@@ -326,8 +333,9 @@ void rasteriseBandLevel(const RasterLevel& level, LevelRows& rows_in, int band, 
 }
 
 // What no cell claimed goes through the per-pixel path (same model as the reference).
-void fillUnclaimedPixels(const SkinReliefSampler& sampler, int level_index, std::size_t band_pixels, std::size_t band_base,
-                         const BandLevel& target, SkinReliefSampler::FastCache& unclaimed_cache) {
+void fillUnclaimedPixels(const SkinReliefSampler& sampler, int level_index, std::size_t band_pixels,
+                         std::size_t band_base, const BandLevel& target,
+                         SkinReliefSampler::FastCache& unclaimed_cache) {
   int* owners = target.owners;
   const int code_base = target.code_base;
   const int width = target.width;
@@ -346,9 +354,9 @@ void fillUnclaimedPixels(const SkinReliefSampler& sampler, int level_index, std:
       const std::size_t pixel = band_base + at;
       const int row = static_cast<int>(pixel / static_cast<std::size_t>(width));
       const int column = static_cast<int>(pixel - static_cast<std::size_t>(row) * static_cast<std::size_t>(width));
-      const ReliefSample sample = sampler.evaluateFast((column + 0.5) * target.inverse_width, (row + 0.5) * target.inverse_height,
-                                                       target.accumulate ? level_index : level_index + 1, level_index + 1, &unclaimed_cache,
-                                                       cells_out);
+      const ReliefSample sample = sampler.evaluateFast(
+          (column + 0.5) * target.inverse_width, (row + 0.5) * target.inverse_height,
+          target.accumulate ? level_index : level_index + 1, level_index + 1, &unclaimed_cache, cells_out);
       owners[at] = cells_out[level_index] + code_base;
       target.sums[at] += sample.height;
       target.slope_u[at] += sample.slope.x();
@@ -366,7 +374,8 @@ ReliefMap SkinReliefRasterizer::render(const SkinReliefSampler& sampler, int wid
   const int band_count = (height + kBandRows - 1) / kBandRows;
   const std::size_t band_capacity = static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
   thread_local RenderScratch scratch;
-  if (scratch.level_rows.size() < static_cast<std::size_t>(end)) scratch.level_rows.resize(static_cast<std::size_t>(end));
+  if (scratch.level_rows.size() < static_cast<std::size_t>(end))
+    scratch.level_rows.resize(static_cast<std::size_t>(end));
   for (int level_index = 0; level_index < end; ++level_index)
     planLevelRows(levels_[static_cast<std::size_t>(level_index)], width, height, band_count,
                   scratch.level_rows[static_cast<std::size_t>(level_index)], scratch);
@@ -376,7 +385,8 @@ ReliefMap SkinReliefRasterizer::render(const SkinReliefSampler& sampler, int wid
   if (scratch.owner.size() < band_capacity) scratch.owner.resize(band_capacity);
   std::size_t most_sectors = 0;
   for (int level_index = 0; level_index < end; ++level_index)
-    most_sectors = std::max(most_sectors, static_cast<std::size_t>(levels_[static_cast<std::size_t>(level_index)].most_sectors));
+    most_sectors =
+        std::max(most_sectors, static_cast<std::size_t>(levels_[static_cast<std::size_t>(level_index)].most_sectors));
   if (scratch.run_buffer.size() < most_sectors + 1) scratch.run_buffer.resize(most_sectors + 1);
   // Rows are narrower than the tile; zero between rows (each row clears what it marked).
   scratch.run_end_buffer.assign(static_cast<std::size_t>(width) + 2, 0);
@@ -398,7 +408,8 @@ ReliefMap SkinReliefRasterizer::render(const SkinReliefSampler& sampler, int wid
     target.band_first = band * kBandRows;
     target.band_last = std::min(height, target.band_first + kBandRows) - 1;
     const std::size_t band_base = static_cast<std::size_t>(target.band_first) * static_cast<std::size_t>(width);
-    const std::size_t band_pixels = static_cast<std::size_t>(target.band_last - target.band_first + 1) * static_cast<std::size_t>(width);
+    const std::size_t band_pixels =
+        static_cast<std::size_t>(target.band_last - target.band_first + 1) * static_cast<std::size_t>(width);
     std::fill(scratch.heights.begin(), scratch.heights.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);
     std::fill(scratch.slopes_u.begin(), scratch.slopes_u.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);
     std::fill(scratch.slopes_v.begin(), scratch.slopes_v.begin() + static_cast<std::ptrdiff_t>(band_pixels), 0.0);

@@ -36,16 +36,16 @@
 
 namespace dressed_human {
 
+using skin_detail::BoundarySector;
 using skin_detail::Cell;
 using skin_detail::CellLevel;
-using skin_detail::RasterCell;
-using skin_detail::RasterLevel;
-using skin_detail::RasterSector;
-using skin_detail::BoundarySector;
-using skin_detail::Wall;
 using skin_detail::cross;
 using skin_detail::diamondAngle;
 using skin_detail::diamondDirection;
+using skin_detail::RasterCell;
+using skin_detail::RasterLevel;
+using skin_detail::RasterSector;
+using skin_detail::Wall;
 using skin_detail::wallPoint;
 
 namespace {
@@ -58,9 +58,9 @@ bool sameGradient(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 }
 
 struct CriticalDirection {
-  double angle;  // diamondAngle, in [0, 4)
+  double angle;               // diamondAngle, in [0, 4)
   Eigen::Vector2d direction;  // unit
-  int wall;  // whose decision can change here (-1: none, a piece boundary only)
+  int wall;                   // whose decision can change here (-1: none, a piece boundary only)
 };
 
 struct PrunedDirection {
@@ -83,7 +83,8 @@ struct SectorEmitter {
     const Eigen::Vector2d boundary =
         (sector.boundary - gradient).squaredNorm() <= 1e-24 * gradient.squaredNorm() ? gradient : sector.boundary;
     if (!started) {
-      sectors.push_back({sector.direction.x(), sector.direction.y(), gradient.x(), gradient.y(), boundary.x(), boundary.y(), 0.0, 0.0});
+      sectors.push_back({sector.direction.x(), sector.direction.y(), gradient.x(), gradient.y(), boundary.x(),
+                         boundary.y(), 0.0, 0.0});
       started = true;
     } else if (!sameGradient(gradient, carried)) {
       sectors.push_back({start.x(), start.y(), gradient.x(), gradient.y(), boundary.x(), boundary.y(), 0.0, 0.0});
@@ -104,11 +105,13 @@ class SectorBuilder {
  private:
   void collectCriticalDirections();
   void addCritical(const Eigen::Vector2d& direction, int wall_index);
-  std::uint64_t candidatesIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) const;
+  std::uint64_t candidatesIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                             const Eigen::Vector2d& direction) const;
   void gradientsAt(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction);
   void envelope(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, SectorEmitter& emit_at);
   void walkBoundarySectors(RasterLevel& out);
-  void splitIntoPieces(double from, double to, const Eigen::Vector2d& from_direction, const Eigen::Vector2d& to_direction);
+  void splitIntoPieces(double from, double to, const Eigen::Vector2d& from_direction,
+                       const Eigen::Vector2d& to_direction);
   void pushUpTo(double angle, const Eigen::Vector2d& direction, int wall);
   void walkPiece(std::size_t piece, SectorEmitter& emit_at);
   void advancePruned();
@@ -204,7 +207,8 @@ void SectorBuilder::collectCriticalDirections() {
       if (wall.wobble < 0 || !(wall.wobble_extent > 0.0)) continue;
       // The walk only runs while the straight hit is within a segment of the wall's ends.
       const Eigen::Vector2d window_from = wall.start - wall.tangent * (wall.length / segments) - cell.centre;
-      const Eigen::Vector2d window_to = wall.start + wall.tangent * (wall.length * (segments + 1) / segments) - cell.centre;
+      const Eigen::Vector2d window_to =
+          wall.start + wall.tangent * (wall.length * (segments + 1) / segments) - cell.centre;
       const double window_turn = cross(window_from, window_to);
       Eigen::Vector2d previous = wallPoint(level, wall, 0.0) - cell.centre;
       for (int knot = -1; knot <= segments + 1; ++knot) {
@@ -215,21 +219,25 @@ void SectorBuilder::collectCriticalDirections() {
         if (knot > 0) {
           Eigen::Vector2d along = point - previous;
           if (along.dot(wall.normal) < 0.0) along = -along;
-          if (cross(window_from, along) * window_turn > 0.0 && cross(along, window_to) * window_turn > 0.0) addCritical(along, k);
+          if (cross(window_from, along) * window_turn > 0.0 && cross(along, window_to) * window_turn > 0.0)
+            addCritical(along, k);
         }
         previous = point;
       }
     }
   }
-  std::sort(critical_.begin(), critical_.end(), [](const CriticalDirection& a, const CriticalDirection& b) { return a.angle < b.angle; });
-  std::sort(pruned_.begin(), pruned_.end(), [](const PrunedDirection& a, const PrunedDirection& b) { return a.angle < b.angle; });
+  std::sort(critical_.begin(), critical_.end(),
+            [](const CriticalDirection& a, const CriticalDirection& b) { return a.angle < b.angle; });
+  std::sort(pruned_.begin(), pruned_.end(),
+            [](const PrunedDirection& a, const PrunedDirection& b) { return a.angle < b.angle; });
   // (Coincident directions stay: each names its wall; they make empty pieces, skipped.)
 }
 
 void SectorBuilder::addCritical(const Eigen::Vector2d& direction, int wall_index) {
   double best_lower = 0.0;
   for (int j = 0; j < cell_->wall_count; ++j)
-    best_lower = std::max(best_lower, direction.dot(cell_walls_[j].normal) * inverse_outer_[static_cast<std::size_t>(j)]);
+    best_lower =
+        std::max(best_lower, direction.dot(cell_walls_[j].normal) * inverse_outer_[static_cast<std::size_t>(j)]);
   const double along = direction.dot(cell_walls_[wall_index].normal);
   if (!(along > 0.0)) return;  // the wall is behind: nothing of it can win here
   if (along * inverse_inner_[static_cast<std::size_t>(wall_index)] < best_lower * (1.0 - 1e-9)) {
@@ -243,19 +251,22 @@ void SectorBuilder::addCritical(const Eigen::Vector2d& direction, int wall_index
 // Walls that can win somewhere in the piece [lo, hi] (less than a half turn): a wall's s lies
 // within q . n / (d + e) and q . n / (d - e) (the wobble moves it by at most e), and over the arc
 // q . n is smallest at an end and largest at an end or at n itself.
-std::uint64_t SectorBuilder::candidatesIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) const {
+std::uint64_t SectorBuilder::candidatesIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                          const Eigen::Vector2d& direction) const {
   double best_lower = 0.0;
   for (int k = 0; k < cell_->wall_count; ++k) {
     const Wall& wall = cell_walls_[k];
-    best_lower = std::max(best_lower, std::min(lo.dot(wall.normal), hi.dot(wall.normal)) * inverse_outer_[static_cast<std::size_t>(k)]);
+    best_lower = std::max(
+        best_lower, std::min(lo.dot(wall.normal), hi.dot(wall.normal)) * inverse_outer_[static_cast<std::size_t>(k)]);
   }
   std::uint64_t mask = 0;
   for (int k = 0; k < cell_->wall_count; ++k) {
     const Wall& wall = cell_walls_[k];
     if (!(direction.dot(wall.normal) > 0.0)) continue;
     // (normals are unit vectors)
-    const double highest = cross(lo, wall.normal) > 0.0 && cross(wall.normal, hi) > 0.0 ? 1.0
-                                                                                         : std::max(lo.dot(wall.normal), hi.dot(wall.normal));
+    const double highest = cross(lo, wall.normal) > 0.0 && cross(wall.normal, hi) > 0.0
+                               ? 1.0
+                               : std::max(lo.dot(wall.normal), hi.dot(wall.normal));
     if (highest * inverse_inner_[static_cast<std::size_t>(k)] < best_lower * (1.0 - 1e-9)) continue;
     mask |= std::uint64_t{1} << k;
   }
@@ -266,7 +277,8 @@ std::uint64_t SectorBuilder::candidatesIn(const Eigen::Vector2d& lo, const Eigen
 // its walk settles on) is fixed, so each wall's s is g_k . q with one g_k, taken from the wall's
 // own ray hit at the piece's middle direction: candidate_gradients_ gets those of the walls that
 // can win in [lo, hi].
-void SectorBuilder::gradientsAt(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& direction) {
+void SectorBuilder::gradientsAt(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                const Eigen::Vector2d& direction) {
   candidate_gradients_.clear();
   const Eigen::Vector2d q = scale_ * direction;
   // A sliver between two nearly equal critical directions has its middle within rounding
@@ -275,7 +287,8 @@ void SectorBuilder::gradientsAt(const Eigen::Vector2d& lo, const Eigen::Vector2d
   for (std::uint64_t mask = candidatesIn(lo, hi, direction); mask != 0; mask &= mask - 1) {
     const int k = __builtin_ctzll(mask);
     if ((cached_ >> k & 1) && !sliver) {
-      if (cached_usable_[static_cast<std::size_t>(k)]) candidate_gradients_.push_back(cached_gradient_[static_cast<std::size_t>(k)]);
+      if (cached_usable_[static_cast<std::size_t>(k)])
+        candidate_gradients_.push_back(cached_gradient_[static_cast<std::size_t>(k)]);
       continue;
     }
     const Wall& wall = cell_walls_[k];
@@ -362,7 +375,8 @@ void SectorBuilder::walkBoundarySectors(RasterLevel& out) {
     while (to <= from) to += 4.0;
     if (k == 0) {
       pruned_index_ = static_cast<std::size_t>(
-          std::lower_bound(pruned_.begin(), pruned_.end(), from, [](const PrunedDirection& entry, double value) { return entry.angle < value; }) -
+          std::lower_bound(pruned_.begin(), pruned_.end(), from,
+                           [](const PrunedDirection& entry, double value) { return entry.angle < value; }) -
           pruned_.begin());
       if (pruned_index_ == pruned_.size()) {
         pruned_index_ = 0;
@@ -380,7 +394,8 @@ void SectorBuilder::walkBoundarySectors(RasterLevel& out) {
 
 // pieces_: the boundary sector [from, to] cut at the critical directions (which may wrap past 4),
 // none wider than a quarter of the pseudo-angle period's half (so less than a half turn).
-void SectorBuilder::splitIntoPieces(double from, double to, const Eigen::Vector2d& from_direction, const Eigen::Vector2d& to_direction) {
+void SectorBuilder::splitIntoPieces(double from, double to, const Eigen::Vector2d& from_direction,
+                                    const Eigen::Vector2d& to_direction) {
   pieces_.clear();
   pieces_.push_back({from, from_direction, -1});
   // critical_ is sorted in [0, 4); from is in [0, 4) and to < from + 4. Those within 1e-12 of the
@@ -431,7 +446,8 @@ void SectorBuilder::walkPiece(std::size_t piece, SectorEmitter& emit_at) {
   const double a0 = pieces_[piece].angle + unwrap_, a1 = pieces_[piece + 1].angle + unwrap_;
   if (!pruned_.empty()) {
     while (pruned_[pruned_index_].angle + pruned_cycle_ < a0) advancePruned();
-    for (int guard = 0; guard < static_cast<int>(pruned_.size()) && pruned_[pruned_index_].angle + pruned_cycle_ < a1; ++guard) {
+    for (int guard = 0; guard < static_cast<int>(pruned_.size()) && pruned_[pruned_index_].angle + pruned_cycle_ < a1;
+         ++guard) {
       splits_.push_back({pruned_[pruned_index_].angle + pruned_cycle_ - unwrap_, pruned_[pruned_index_].wall});
       advancePruned();
     }
@@ -471,7 +487,8 @@ void SectorBuilder::finishCell(RasterCell& raster, RasterLevel& out) const {
     // Where a pixel row leaves a sector, as qx / dy of the ray it leaves through: the sector's
     // start ray clockwise (above the centre), the next one's counter-clockwise.
     RasterSector& sector = out.sectors[static_cast<std::size_t>(raster.first_sector + k)];
-    const RasterSector& next = out.sectors[static_cast<std::size_t>(raster.first_sector + (k + 1) % raster.sector_count)];
+    const RasterSector& next =
+        out.sectors[static_cast<std::size_t>(raster.first_sector + (k + 1) % raster.sector_count)];
     constexpr double never = std::numeric_limits<double>::quiet_NaN();
     sector.crossing_above = sector.direction_y > 0.0 ? sector.direction_x / sector.direction_y : never;
     sector.crossing_below = next.direction_y < 0.0 ? next.direction_x / next.direction_y : never;
@@ -516,7 +533,8 @@ SkinReliefRasterizer::SkinReliefRasterizer(const SkinCellHierarchy& hierarchy, c
   for (std::size_t k = 0; k < intervals; ++k) {
     const double height_step = heights[k + 1] - heights[k], slope_step = slopes[k + 1] - slopes[k];
     const double at = static_cast<double>(k);
-    profile_lines_.insert(profile_lines_.end(), {heights[k] - at * height_step, height_step, slopes[k] - at * slope_step, slope_step});
+    profile_lines_.insert(profile_lines_.end(),
+                          {heights[k] - at * height_step, height_step, slopes[k] - at * slope_step, slope_step});
   }
   profile_lines_.insert(profile_lines_.end(), {heights[intervals], 0.0, slopes[intervals], 0.0});
 }

@@ -10,8 +10,8 @@ namespace dressed_human {
 
 using skin_detail::Cell;
 using skin_detail::CellLevel;
-using skin_detail::Wall;
 using skin_detail::outwardWobble;
+using skin_detail::Wall;
 
 namespace {
 
@@ -32,7 +32,8 @@ void rayHit(const CellLevel& level, const Wall& wall, const Eigen::Vector2d& q, 
   const int segments = 1 << level.subdivisions;
   // A straight hit just past an end can still meet the wobbled polyline near that end.
   if (!(u > -1.0 / segments && u < 1.0 + 1.0 / segments)) return;
-  const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
+  const double* samples =
+      level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
   int segment = std::clamp(static_cast<int>(std::floor(u * segments)), 0, segments - 1);
   constexpr double tolerance = 1e-12;
   for (int step = 0; step <= segments; ++step) {
@@ -69,7 +70,8 @@ SkinReliefSampler::Hit SkinReliefSampler::findLevelZero(const Eigen::Vector2d& p
       for (int oy = -1; oy <= 1; ++oy) {
         for (int ox = -1; ox <= 1; ++ox) {
           const Eigen::Vector2i offset(ox, oy);
-          const double distance = metricDistanceSquared(level.metric, point + offset.cast<double>() - level.cells[index].centre);
+          const double distance =
+              metricDistanceSquared(level.metric, point + offset.cast<double>() - level.cells[index].centre);
           if (distance < best_distance) {
             best_distance = distance;
             best.cell = static_cast<int>(index);
@@ -82,11 +84,13 @@ SkinReliefSampler::Hit SkinReliefSampler::findLevelZero(const Eigen::Vector2d& p
   }
   const int bx = std::min(static_cast<int>(point.x() * level.buckets_x), level.buckets_x - 1);
   const int by = std::min(static_cast<int>(point.y() * level.buckets_y), level.buckets_y - 1);
-  const std::size_t bucket = static_cast<std::size_t>(by) * static_cast<std::size_t>(level.buckets_x) + static_cast<std::size_t>(bx);
+  const std::size_t bucket =
+      static_cast<std::size_t>(by) * static_cast<std::size_t>(level.buckets_x) + static_cast<std::size_t>(bx);
   for (int k = level.bucket_start[bucket]; k < level.bucket_start[bucket + 1]; ++k) {
     const auto at = static_cast<std::size_t>(k);
-    const double distance = metricDistanceSquared(
-        level.metric, point + level.bucket_offset[at].cast<double>() - level.cells[static_cast<std::size_t>(level.bucket_cell[at])].centre);
+    const double distance =
+        metricDistanceSquared(level.metric, point + level.bucket_offset[at].cast<double>() -
+                                                level.cells[static_cast<std::size_t>(level.bucket_cell[at])].centre);
     if (distance < best_distance) {
       best_distance = distance;
       best.cell = level.bucket_cell[at];
@@ -96,7 +100,8 @@ SkinReliefSampler::Hit SkinReliefSampler::findLevelZero(const Eigen::Vector2d& p
   return best;
 }
 
-SkinReliefSampler::Hit SkinReliefSampler::findChild(int level_index, const Hit& parent, const Eigen::Vector2d& point, bool brute_force) const {
+SkinReliefSampler::Hit SkinReliefSampler::findChild(int level_index, const Hit& parent, const Eigen::Vector2d& point,
+                                                    bool brute_force) const {
   const CellLevel& level = hierarchy_->levels()[static_cast<std::size_t>(level_index)];
   const Eigen::Vector2d local = point + parent.offset.cast<double>();
   Hit best;
@@ -114,8 +119,11 @@ SkinReliefSampler::Hit SkinReliefSampler::findChild(int level_index, const Hit& 
     }
     return best;
   }
-  for (int child : hierarchy_->levels()[static_cast<std::size_t>(level_index - 1)].cells[static_cast<std::size_t>(parent.cell)].children) {
-    const double distance = metricDistanceSquared(level.metric, local - level.cells[static_cast<std::size_t>(child)].centre);
+  for (int child : hierarchy_->levels()[static_cast<std::size_t>(level_index - 1)]
+                       .cells[static_cast<std::size_t>(parent.cell)]
+                       .children) {
+    const double distance =
+        metricDistanceSquared(level.metric, local - level.cells[static_cast<std::size_t>(child)].centre);
     if (distance < best_distance) {
       best_distance = distance;
       best.cell = child;
@@ -146,7 +154,8 @@ SkinReliefSampler::Hit SkinReliefSampler::applyWobble(int level_index, Hit hit, 
   return hit;
 }
 
-void SkinReliefSampler::accumulate(int level_index, const Hit& hit, const Eigen::Vector2d& point, ReliefSample& sum) const {
+void SkinReliefSampler::accumulate(int level_index, const Hit& hit, const Eigen::Vector2d& point,
+                                   ReliefSample& sum) const {
   const CellLevel& level = hierarchy_->levels()[static_cast<std::size_t>(level_index)];
   const Cell& cell = level.cells[static_cast<std::size_t>(hit.cell)];
   const Eigen::Vector2d q = point + hit.offset.cast<double>() - cell.centre;
@@ -159,7 +168,8 @@ void SkinReliefSampler::accumulate(int level_index, const Hit& hit, const Eigen:
     double best_lower = 0.0;
     for (int k = 0; k < cell.wall_count; ++k) {
       const double along_normal = q.dot(walls[k].normal);
-      if (along_normal > 0.0) best_lower = std::max(best_lower, along_normal / (walls[k].centre_distance + walls[k].wobble_extent));
+      if (along_normal > 0.0)
+        best_lower = std::max(best_lower, along_normal / (walls[k].centre_distance + walls[k].wobble_extent));
     }
     for (int k = 0; k < cell.wall_count; ++k) {
       const Wall& wall = walls[k];
@@ -202,7 +212,8 @@ void SkinReliefSampler::accumulate(int level_index, const Hit& hit, const Eigen:
   sum.slope -= (level.depth * slope) * gradient;
 }
 
-void SkinReliefSampler::wallRayHit(const CellLevel& level, const Wall& wall, const Eigen::Vector2d& q, double& s, Eigen::Vector2d& gradient) {
+void SkinReliefSampler::wallRayHit(const CellLevel& level, const Wall& wall, const Eigen::Vector2d& q, double& s,
+                                   Eigen::Vector2d& gradient) {
   rayHit(level, wall, q, q.dot(wall.normal), s, gradient);
 }
 
@@ -220,7 +231,7 @@ bool SkinReliefSampler::insideStraightCell(int level_index, const Hit& hit, cons
 }
 
 ReliefSample SkinReliefSampler::evaluate(const Eigen::Vector2d& point, int first_level, int end_level, bool brute_force,
-                                  RowCache* cache) const {
+                                         RowCache* cache) const {
   const Eigen::Vector2d wrapped = point - point.array().floor().matrix();
   ReliefSample sum;
   Hit straight;
@@ -237,8 +248,8 @@ ReliefSample SkinReliefSampler::evaluate(const Eigen::Vector2d& point, int first
   if (first_level <= 0 && end_level > 0) accumulate(0, hit, wrapped, sum);
   for (int level = 1; level < end_level; ++level) {
     const auto index = static_cast<std::size_t>(level);
-    if (cache && cache->valid[index] && cache->parent[index].cell == hit.cell && cache->parent[index].offset == hit.offset &&
-        insideStraightCell(level, cache->straight[index], wrapped)) {
+    if (cache && cache->valid[index] && cache->parent[index].cell == hit.cell &&
+        cache->parent[index].offset == hit.offset && insideStraightCell(level, cache->straight[index], wrapped)) {
       straight = cache->straight[index];
     } else {
       straight = findChild(level, hit, wrapped, brute_force);

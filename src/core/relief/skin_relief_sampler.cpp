@@ -12,11 +12,13 @@ using skin_detail::Cell;
 using skin_detail::CellLevel;
 using skin_detail::Wall;
 
-SkinReliefSampler::SkinReliefSampler(std::shared_ptr<const SkinCellHierarchy> hierarchy, const SkinReliefParameters& parameters)
+SkinReliefSampler::SkinReliefSampler(std::shared_ptr<const SkinCellHierarchy> hierarchy,
+                                     const SkinReliefParameters& parameters)
     : hierarchy_(std::move(hierarchy)), profile_table_(parameters.profile) {
   // roundness -> exponent of the q-norm over walls: 0 keeps the max (polygonal contours), 1 gives
   // q = 2 (round contours, corners pressed flat).
-  roundness_exponent_ = parameters.roundness > 0.0 ? std::max(2, static_cast<int>(std::lround(2.0 / parameters.roundness))) : 0;
+  roundness_exponent_ =
+      parameters.roundness > 0.0 ? std::max(2, static_cast<int>(std::lround(2.0 / parameters.roundness))) : 0;
   buildPackedLevels();
 }
 
@@ -56,12 +58,14 @@ void SkinReliefSampler::buildPackedLevels() {
       out.wobble_extent = wobbled ? wall.wobble_extent : 0.0;
       // The wobble test skips a wall while outside <= -extent, i.e. q . n <= d - extent; walls
       // without a neighbour (the parent's) and levels without wobble never test.
-      out.wobble_threshold = wall.neighbour >= 0 && packed.segment_count > 0 ? wall.centre_distance - out.wobble_extent : INFINITY;
+      out.wobble_threshold =
+          wall.neighbour >= 0 && packed.segment_count > 0 ? wall.centre_distance - out.wobble_extent : INFINITY;
       out.first_segment = -1;
       if (wobbled) {
         const int segments = packed.segment_count;
         out.first_segment = static_cast<int>(packed.segments.size());
-        const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
+        const double* samples = level.wobble_samples.data() +
+                                static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
         for (int segment = 0; segment < segments; ++segment) {
           PackedSegment piece;
           piece.offset = wall.wobble_sign * samples[segment];
@@ -71,7 +75,8 @@ void SkinReliefSampler::buildPackedLevels() {
           piece.numerator = wall.centre_distance + piece.offset + (wall.centre_u - piece.start_u) * piece.slope;
           piece.inverse_numerator = piece.numerator > 0.0 ? 1.0 / piece.numerator : 0.0;
           if (piece.numerator > 0.0) {
-            const Eigen::Vector2d gradient = (wall.normal - wall.tangent * (piece.slope / wall.length)) / piece.numerator;
+            const Eigen::Vector2d gradient =
+                (wall.normal - wall.tangent * (piece.slope / wall.length)) / piece.numerator;
             piece.gradient_x = gradient.x();
             piece.gradient_y = gradient.y();
           }
@@ -118,8 +123,8 @@ inline bool enterCell(const Level& level, double x, double y, const Hit& candida
 // gradient; on each segment of the wobbled polyline the hit condition is linear, with the
 // segment's numerator, 1 / numerator and gradient precomputed.
 template <typename Segment, typename Wall>
-inline void packedRayHit(const Segment* level_segments, int segments, double inverse_segments, const Wall& wall, double qx, double qy,
-                         double along_normal, double& s, double& gradient_x, double& gradient_y) {
+inline void packedRayHit(const Segment* level_segments, int segments, double inverse_segments, const Wall& wall,
+                         double qx, double qy, double along_normal, double& s, double& gradient_x, double& gradient_y) {
   s = along_normal * wall.inverse_distance;
   gradient_x = wall.normal_x * wall.inverse_distance;
   gradient_y = wall.normal_y * wall.inverse_distance;
@@ -163,13 +168,14 @@ inline void packedRayHit(const Segment* level_segments, int segments, double inv
 // The cell (cache or search, then the wobble test). Same decisions, in the same order, as
 // findLevelZero/findChild + applyWobble.
 inline void SkinReliefSampler::locateCell(int level_index, double x, double y, const FastHit& parent, FastCache* cache,
-                                   EnteredCell& entered) const {
+                                          EnteredCell& entered) const {
   const PackedLevel& level = packed_[static_cast<std::size_t>(level_index)];
   const auto slot = static_cast<std::size_t>(level_index);
   bool found = false;
   if (cache && cache->valid[slot] &&
-      (level_index == 0 || (cache->parent[slot].cell == parent.cell && cache->parent[slot].offset_x == parent.offset_x &&
-                            cache->parent[slot].offset_y == parent.offset_y))) {
+      (level_index == 0 ||
+       (cache->parent[slot].cell == parent.cell && cache->parent[slot].offset_x == parent.offset_x &&
+        cache->parent[slot].offset_y == parent.offset_y))) {
     found = enterCell(level, x, y, cache->straight[slot], entered);
   }
   if (!found) {
@@ -222,7 +228,8 @@ inline void SkinReliefSampler::locateCell(int level_index, double x, double y, c
 
 // s and its gradient over the entered cell's walls: their max, or their q-norm (roundness > 0).
 // Same decisions as accumulate.
-inline void SkinReliefSampler::rayParameter(const PackedLevel& level, const EnteredCell& entered, LevelResult& out) const {
+inline void SkinReliefSampler::rayParameter(const PackedLevel& level, const EnteredCell& entered,
+                                            LevelResult& out) const {
   const int segments = level.segment_count;
   const double inverse_segments = segments > 0 ? 1.0 / segments : 0.0;
   const PackedSegment* level_segments = level.segments.data();
@@ -236,7 +243,8 @@ inline void SkinReliefSampler::rayParameter(const PackedLevel& level, const Ente
     // Both passes without data-dependent branches (those mispredicted most); walls behind the
     // centre (q . n <= 0) count 0 -- a negative product could stem from a negative 1 / (d + e).
     double best_lower = 0.0;
-    for (int k = 0; k < wall_count; ++k) best_lower = std::max(best_lower, std::max(projection[k], 0.0) * walls[k].inverse_outer);
+    for (int k = 0; k < wall_count; ++k)
+      best_lower = std::max(best_lower, std::max(projection[k], 0.0) * walls[k].inverse_outer);
     std::uint64_t candidates = 0;
     for (int k = 0; k < wall_count; ++k) {
       const bool towards = projection[k] > 0.0;
@@ -248,8 +256,8 @@ inline void SkinReliefSampler::rayParameter(const PackedLevel& level, const Ente
       candidates &= candidates - 1;
       const double along_normal = projection[k];
       double wall_s, wall_gradient_x, wall_gradient_y;
-      packedRayHit(level_segments, segments, inverse_segments, walls[k], entered.qx, entered.qy, along_normal, wall_s, wall_gradient_x,
-                   wall_gradient_y);
+      packedRayHit(level_segments, segments, inverse_segments, walls[k], entered.qx, entered.qy, along_normal, wall_s,
+                   wall_gradient_x, wall_gradient_y);
       if (wall_s > s) {
         s = wall_s;
         gradient_x = wall_gradient_x;
@@ -262,8 +270,8 @@ inline void SkinReliefSampler::rayParameter(const PackedLevel& level, const Ente
       const double along_normal = projection[k];
       if (along_normal <= 0.0) continue;
       double wall_s, wall_gradient_x, wall_gradient_y;
-      packedRayHit(level_segments, segments, inverse_segments, walls[k], entered.qx, entered.qy, along_normal, wall_s, wall_gradient_x,
-                   wall_gradient_y);
+      packedRayHit(level_segments, segments, inverse_segments, walls[k], entered.qx, entered.qy, along_normal, wall_s,
+                   wall_gradient_x, wall_gradient_y);
       const double lower_power = integerPower(wall_s, roundness_exponent_ - 1);
       power_sum += lower_power * wall_s;
       weighted_x += lower_power * wall_gradient_x;
@@ -290,7 +298,8 @@ void SkinReliefSampler::evaluateLevel(int level_index, double x, double y, const
   rayParameter(packed_[static_cast<std::size_t>(level_index)], entered, out);
 }
 
-ReliefSample SkinReliefSampler::evaluateFast(double x, double y, int first_level, int end_level, FastCache* cache, int* cells_out) const {
+ReliefSample SkinReliefSampler::evaluateFast(double x, double y, int first_level, int end_level, FastCache* cache,
+                                             int* cells_out) const {
   ReliefSample sum;
   FastHit parent;
   LevelResult result;
@@ -346,8 +355,9 @@ ReliefMap SkinReliefSampler::render(int width, int height, int only_level, bool 
     FastCache fast_cache;
     for (int column = 0; column < width; ++column) {
       const double u = (column + 0.5) / width;
-      const ReliefSample sample = fast ? evaluateFast(u, v, first, end, &fast_cache)
-                                       : evaluate(Eigen::Vector2d(u, v), first, end, brute_force, brute_force ? nullptr : &cache);
+      const ReliefSample sample =
+          fast ? evaluateFast(u, v, first, end, &fast_cache)
+               : evaluate(Eigen::Vector2d(u, v), first, end, brute_force, brute_force ? nullptr : &cache);
       const std::size_t at = map.index(column, row);
       map.heights[at] = static_cast<float>(sample.height);
       map.slope_u[at] = static_cast<float>(sample.slope.x());

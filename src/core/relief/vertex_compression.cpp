@@ -78,20 +78,24 @@ void vertexStretch(const VertexStretchInput& in, float* alpha, float* strength, 
 
 }  // namespace
 
-VertexCompression::VertexCompression(const WrinklePlacementOptions& options) : options_(options) { checkWrinklePlacementOptions(options_); }
+VertexCompression::VertexCompression(const WrinklePlacementOptions& options) : options_(options) {
+  checkWrinklePlacementOptions(options_);
+}
 
 void VertexCompression::prepare(const TriangleMesh& mesh, const std::vector<BezierPatch>& rest_patches) {
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   const std::size_t vertices = mesh.vertexCount();
   if (mesh.uv.size() != vertices) {
-    throw std::invalid_argument("VertexCompression: mesh has " + std::to_string(mesh.uv.size()) + " uv for " + std::to_string(vertices) + " vertices");
+    throw std::invalid_argument("VertexCompression: mesh has " + std::to_string(mesh.uv.size()) + " uv for " +
+                                std::to_string(vertices) + " vertices");
   }
   vertex_patch_.assign(vertices, kNone);
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const std::uint32_t patch = mesh.triangle_patch.at(t);
     if (patch >= rest_patches.size()) {
-      throw std::invalid_argument("VertexCompression: triangle " + std::to_string(t) + " lies on patch " + std::to_string(patch) + " of " +
-                                   std::to_string(rest_patches.size()) + " rest patches");
+      throw std::invalid_argument("VertexCompression: triangle " + std::to_string(t) + " lies on patch " +
+                                  std::to_string(patch) + " of " + std::to_string(rest_patches.size()) +
+                                  " rest patches");
     }
     for (int k = 0; k < 3; ++k) {
       std::uint32_t& owner = vertex_patch_.at(mesh.indices[3 * t + static_cast<std::size_t>(k)]);
@@ -101,7 +105,8 @@ void VertexCompression::prepare(const TriangleMesh& mesh, const std::vector<Bezi
   uv_ = mesh.uv;
   inverse_rest_metric_.resize(vertices);
   for (std::size_t i = 0; i < vertices; ++i) {
-    if (vertex_patch_[i] == kNone) throw std::invalid_argument("VertexCompression: vertex " + std::to_string(i) + " is on no triangle");
+    if (vertex_patch_[i] == kNone)
+      throw std::invalid_argument("VertexCompression: vertex " + std::to_string(i) + " is on no triangle");
     const double u = std::clamp(static_cast<double>(uv_[i].x()), 0.0, 1.0);
     const double v = std::clamp(static_cast<double>(uv_[i].y()), 0.0, 1.0);
     const PatchDerivatives d = rest_patches[vertex_patch_[i]].derivatives(u, v);
@@ -139,8 +144,8 @@ void VertexCompression::evaluate(const TriangleMesh& posed_mesh, float* alpha, f
     throw std::invalid_argument("VertexCompression: posed mesh has " + std::to_string(posed_mesh.tangents_u.size()) +
                                 " vertices, prepared for " + std::to_string(vertices));
   }
-  const VertexStretchInput input{inverse_rest_metric_.data(), posed_mesh.tangents_u.data(), posed_mesh.tangents_v.data(), vertices,
-                                 strengthConstants()};
+  const VertexStretchInput input{inverse_rest_metric_.data(), posed_mesh.tangents_u.data(),
+                                 posed_mesh.tangents_v.data(), vertices, strengthConstants()};
   // The renderer's per-frame pair (strength and fold axis) and the tests' pair (alpha and
   // strength) get kernels of their own; any other combination takes the general one.
   if (strength && fold_axis && !alpha) {
@@ -151,8 +156,8 @@ void VertexCompression::evaluate(const TriangleMesh& posed_mesh, float* alpha, f
     vertexStretch<false, true, false>(input, alpha, strength, fold_axis);
   } else {
     for (std::size_t i = 0; i < vertices; ++i) {
-      const VertexStretch one = vertexStretchAt(inverse_rest_metric_[i], posed_mesh.tangents_u[i], posed_mesh.tangents_v[i],
-                                                input.constants);
+      const VertexStretch one =
+          vertexStretchAt(inverse_rest_metric_[i], posed_mesh.tangents_u[i], posed_mesh.tangents_v[i], input.constants);
       if (alpha) alpha[i] = one.alpha;
       if (strength) strength[i] = one.strength;
       if (fold_axis) fold_axis[i] = one.fold_axis;

@@ -27,7 +27,8 @@ double alphaOfCell(const WrinkleMapSpec& spec, int row, int column) {
   const std::size_t count = spec.alpha.size();
   if (count == 1) return spec.alpha[0];
   if (count == static_cast<std::size_t>(spec.rows)) return spec.alpha[static_cast<std::size_t>(row)];
-  return spec.alpha[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) + static_cast<std::size_t>(column)];
+  return spec.alpha[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) +
+                    static_cast<std::size_t>(column)];
 }
 
 // A cell's surface, built once per distinct (pattern, orientation, alpha).
@@ -59,7 +60,9 @@ struct FitKey {
   double half_width_x, half_length_y;
   OutOfDomainPolicy out_of_domain;
   int terms;
-  auto tied() const { return std::tie(cell.kind, cell.split_on_right, cell.alpha, half_width_x, half_length_y, out_of_domain, terms); }
+  auto tied() const {
+    return std::tie(cell.kind, cell.split_on_right, cell.alpha, half_width_x, half_length_y, out_of_domain, terms);
+  }
   bool operator<(const FitKey& other) const { return tied() < other.tied(); }
 };
 
@@ -87,10 +90,11 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
   requirePositive(spec.cells_around, "cells_around");
   requirePositive(spec.rows, "rows");
   const std::size_t cell_count = static_cast<std::size_t>(spec.rows) * static_cast<std::size_t>(spec.cells_around);
-  if (spec.alpha.size() != 1 && spec.alpha.size() != static_cast<std::size_t>(spec.rows) && spec.alpha.size() != cell_count) {
+  if (spec.alpha.size() != 1 && spec.alpha.size() != static_cast<std::size_t>(spec.rows) &&
+      spec.alpha.size() != cell_count) {
     std::ostringstream message;
-    message << "WrinkleMapSpec.alpha must hold 1, rows (" << spec.rows << ") or rows*cells_around ("
-            << cell_count << ") values, got " << spec.alpha.size();
+    message << "WrinkleMapSpec.alpha must hold 1, rows (" << spec.rows << ") or rows*cells_around (" << cell_count
+            << ") values, got " << spec.alpha.size();
     throw std::invalid_argument(message.str());
   }
   for (double alpha : spec.alpha) {
@@ -106,10 +110,12 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
     throw std::invalid_argument(message.str());
   }
   if (spec.surface == WrinkleSurface::gaussianApproximation) requirePositive(spec.gaussian_terms, "gaussian_terms");
-  if (spec.surface == WrinkleSurface::smoothFolds) requirePositive(spec.smooth_harmonics_per_cell, "smooth_harmonics_per_cell");
+  if (spec.surface == WrinkleSurface::smoothFolds)
+    requirePositive(spec.smooth_harmonics_per_cell, "smooth_harmonics_per_cell");
 
   std::string around;
-  for (int column = 0; column < spec.cells_around; ++column) around += spec.chain[static_cast<std::size_t>(column) % spec.chain.size()];
+  for (int column = 0; column < spec.cells_around; ++column)
+    around += spec.chain[static_cast<std::size_t>(column) % spec.chain.size()];
   const std::vector<ChainCell> oriented = orientChain(around, true);
 
   // Build each distinct cell surface once: fits cost milliseconds, pixels must not.
@@ -124,14 +130,17 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
       auto found = surfaces.find(key);
       if (found == surfaces.end()) {
         CellSurface surface;
-        surface.pattern = std::make_unique<BucklingPattern>(entry.kind, alpha, spec.cell, spec.out_of_domain, split_on_right);
+        surface.pattern =
+            std::make_unique<BucklingPattern>(entry.kind, alpha, spec.cell, spec.out_of_domain, split_on_right);
         if (spec.surface == WrinkleSurface::gaussianApproximation) {
-          const FitKey fit_key{key, spec.cell.half_width_x, spec.cell.half_length_y, spec.out_of_domain, spec.gaussian_terms};
+          const FitKey fit_key{key, spec.cell.half_width_x, spec.cell.half_length_y, spec.out_of_domain,
+                               spec.gaussian_terms};
           surface.gaussians = cachedGaussianFit(*surface.pattern, fit_key);
         }
         found = surfaces.emplace(key, std::move(surface)).first;
       }
-      cell_surfaces[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) + static_cast<std::size_t>(column)] = &found->second;
+      cell_surfaces[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) +
+                    static_cast<std::size_t>(column)] = &found->second;
     }
   }
 
@@ -147,7 +156,9 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
     for (int pixel_column = 0; pixel_column < spec.width_pixels; ++pixel_column) {
       const double u = (pixel_column + 0.5) * cells_per_pixel_u;
       const int column = std::min(static_cast<int>(u), spec.cells_around - 1);
-      const CellSurface& surface = *cell_surfaces[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) + static_cast<std::size_t>(column)];
+      const CellSurface& surface =
+          *cell_surfaces[static_cast<std::size_t>(row) * static_cast<std::size_t>(spec.cells_around) +
+                         static_cast<std::size_t>(column)];
       const double x = (u - column - 0.5) * 2.0 * lx;
       const double y = rest_y * surface.pattern->solution().alpha;
       const ReliefSample sample = surface.sample(x, y);
@@ -165,12 +176,13 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
     for (int pixel_column = 0; pixel_column < spec.width_pixels; ++pixel_column) {
       const int column = std::min(static_cast<int>((pixel_column + 0.5) * cells_per_pixel_u), spec.cells_around - 1);
       metres_per_pixel_v[map.index(pixel_column, pixel_row)] =
-          2.0 * ly * cell_surfaces[static_cast<std::size_t>(row * spec.cells_around + column)]->pattern->solution().alpha *
+          2.0 * ly *
+          cell_surfaces[static_cast<std::size_t>(row * spec.cells_around + column)]->pattern->solution().alpha *
           cells_per_pixel_v;
     }
   }
-  return lowPassRelief(map, spec.smooth_harmonics_per_cell * spec.cells_around, spec.smooth_harmonics_per_cell * spec.rows,
-                       2.0 * lx * cells_per_pixel_u, metres_per_pixel_v);
+  return lowPassRelief(map, spec.smooth_harmonics_per_cell * spec.cells_around,
+                       spec.smooth_harmonics_per_cell * spec.rows, 2.0 * lx * cells_per_pixel_u, metres_per_pixel_v);
 }
 
 }  // namespace dressed_human

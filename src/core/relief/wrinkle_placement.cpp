@@ -75,10 +75,14 @@ double curveLength(const BezierPatch& patch, bool along_u, double fixed) {
 PatternKind firstKind(const std::string& chain) {
   if (chain.empty()) throw std::invalid_argument("wrinkle chain is empty");
   switch (chain[0]) {
-    case 'I': return PatternKind::I;
-    case 'Y': return PatternKind::Y;
-    case 'X': return PatternKind::X;
-    default: throw std::invalid_argument("wrinkle chain '" + chain + "' has an unknown pattern '" + chain[0] + "'");
+    case 'I':
+      return PatternKind::I;
+    case 'Y':
+      return PatternKind::Y;
+    case 'X':
+      return PatternKind::X;
+    default:
+      throw std::invalid_argument("wrinkle chain '" + chain + "' has an unknown pattern '" + chain[0] + "'");
   }
 }
 
@@ -86,24 +90,30 @@ PatternKind firstKind(const std::string& chain) {
 
 void checkWrinklePlacementOptions(const WrinklePlacementOptions& o) {
   if (!(o.alpha_threshold > 0.0 && o.alpha_threshold <= 1.0)) {
-    throw std::invalid_argument("WrinklePlacementOptions.alpha_threshold must be in (0, 1], got " + str(o.alpha_threshold));
+    throw std::invalid_argument("WrinklePlacementOptions.alpha_threshold must be in (0, 1], got " +
+                                str(o.alpha_threshold));
   }
   if (!(o.region_percentile >= 0.0 && o.region_percentile <= 1.0)) {
-    throw std::invalid_argument("WrinklePlacementOptions.region_percentile must be in [0, 1], got " + str(o.region_percentile));
+    throw std::invalid_argument("WrinklePlacementOptions.region_percentile must be in [0, 1], got " +
+                                str(o.region_percentile));
   }
   if (o.samples_per_side < 2) {
-    throw std::invalid_argument("WrinklePlacementOptions.samples_per_side must be >= 2, got " + str(o.samples_per_side));
+    throw std::invalid_argument("WrinklePlacementOptions.samples_per_side must be >= 2, got " +
+                                str(o.samples_per_side));
   }
-  if (!(o.cell_length > 0.0) || !(o.knee_half_width > 0.0) || !(o.elbow_half_width > 0.0) || !(o.waist_half_width > 0.0) ||
-      !(o.span_half_length > 0.0)) {
-    throw std::invalid_argument("WrinklePlacementOptions: cell_length, span_half_length and the region half widths must be > 0");
+  if (!(o.cell_length > 0.0) || !(o.knee_half_width > 0.0) || !(o.elbow_half_width > 0.0) ||
+      !(o.waist_half_width > 0.0) || !(o.span_half_length > 0.0)) {
+    throw std::invalid_argument(
+        "WrinklePlacementOptions: cell_length, span_half_length and the region half widths must be > 0");
   }
   if (o.cells_around < 2 || o.cells_around % 2 != 0) {
-    throw std::invalid_argument("WrinklePlacementOptions.cells_around must be even and >= 2 (a YY chain must close), got " +
-                                str(o.cells_around));
+    throw std::invalid_argument(
+        "WrinklePlacementOptions.cells_around must be even and >= 2 (a YY chain must close), got " +
+        str(o.cells_around));
   }
   if (!(o.reference_alpha > 0.0 && o.reference_alpha < 1.0)) {
-    throw std::invalid_argument("WrinklePlacementOptions.reference_alpha must be in (0, 1), got " + str(o.reference_alpha));
+    throw std::invalid_argument("WrinklePlacementOptions.reference_alpha must be in (0, 1), got " +
+                                str(o.reference_alpha));
   }
   if (!(o.saturation_alpha >= 0.0 && o.saturation_alpha < o.alpha_threshold)) {
     throw std::invalid_argument("WrinklePlacementOptions.saturation_alpha must be in [0, alpha_threshold), got " +
@@ -147,7 +157,8 @@ PrincipalStretch principalStretch(const Eigen::Vector3d& rest_du, const Eigen::V
 PrincipalStretch measureStretch(const std::vector<BezierPatch>& rest, const std::vector<BezierPatch>& posed,
                                 const SurfacePoint& at) {
   if (rest.size() != posed.size()) {
-    throw std::invalid_argument("measureStretch: rest has " + str(rest.size()) + " patches, posed " + str(posed.size()));
+    throw std::invalid_argument("measureStretch: rest has " + str(rest.size()) + " patches, posed " +
+                                str(posed.size()));
   }
   if (at.patch >= rest.size()) {
     throw std::invalid_argument("measureStretch: patch " + str(at.patch) + " of " + str(rest.size()));
@@ -158,7 +169,8 @@ PrincipalStretch measureStretch(const std::vector<BezierPatch>& rest, const std:
 }
 
 std::string chooseChain(double turn_per_cell, const BucklingCell& cell, const WrinklePlacementOptions& options) {
-  const double bend = solveBuckling(PatternKind::X, options.reference_alpha, cell, OutOfDomainPolicy::clampToDomainEdge).bend_angle;
+  const double bend =
+      solveBuckling(PatternKind::X, options.reference_alpha, cell, OutOfDomainPolicy::clampToDomainEdge).bend_angle;
   const double turn = std::abs(turn_per_cell);
   const double to_i = turn, to_yy = std::abs(turn - bend / 2.0), to_x = std::abs(turn - bend);
   if (to_i <= to_yy && to_i <= to_x) return "I";
@@ -209,14 +221,16 @@ void layoutPatch(const BezierPatch& patch, const WrinklePlacementOptions& option
 // region: with r the span's distance behind the joint, the span closes at tan(theta / 2) = h / r
 // (alpha_span), so h must be well above r for the measure to keep falling through a walk's knee
 // bend.
-void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentControlNet& net, const std::string& piece, int n, double h,
-                      const Eigen::Vector3d& facing, const Eigen::Vector3d& joint, const Eigen::Vector3d& axis, CompressionRegion& region) {
+void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentControlNet& net, const std::string& piece,
+                      int n, double h, const Eigen::Vector3d& facing, const Eigen::Vector3d& joint,
+                      const Eigen::Vector3d& axis, CompressionRegion& region) {
   std::vector<std::pair<SurfacePoint, Eigen::Vector3d>> upper, lower;
   for (std::size_t p = 0; p < patches.size(); ++p) {
     if (net.patchPiece(p) != piece) continue;
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {
-        const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)};
+        const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1),
+                              static_cast<double>(j) / (n - 1)};
         const PatchSample sample = patches[p].sample(at.u, at.v);
         if (sample.normal.dot(facing) < 0.5) continue;
         const double along = (sample.position - joint).dot(axis);
@@ -286,7 +300,8 @@ WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skele
     for (std::size_t p = 0; p < rest_patches_.size(); ++p) {
       for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
-          const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)};
+          const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1),
+                                static_cast<double>(j) / (n - 1)};
           const PatchSample sample = rest_patches_[p].sample(at.u, at.v);
           if (accept(net.patchPiece(p), sample)) region.samples.push_back(at);
         }
@@ -319,7 +334,8 @@ WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skele
     Eigen::Vector3d inside = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(upper_arm) * upper_arm;
     inside.normalize();
     collect(s + "_elbow_inside", [&](const std::string& piece, const PatchSample& sample) {
-      return piece == s + "_sleeve" && std::abs((sample.position - elbow).dot(upper_arm)) <= options_.elbow_half_width &&
+      return piece == s + "_sleeve" &&
+             std::abs((sample.position - elbow).dot(upper_arm)) <= options_.elbow_half_width &&
              sample.normal.dot(inside) >= 0.5;
     });
     if (!regions_.empty() && regions_.back().name == s + "_elbow_inside") {
@@ -378,7 +394,8 @@ RegionCompression WrinklePlacement::measureRegion(const std::vector<BezierPatch>
     ratios.reserve(region.spans.size());
     for (const MaterialSpan& span : region.spans) {
       const double length = (posed[span.second.patch].position(span.second.u, span.second.v) -
-                             posed[span.first.patch].position(span.first.u, span.first.v)).dot(axis);
+                             posed[span.first.patch].position(span.first.u, span.first.v))
+                                .dot(axis);
       ratios.push_back(std::clamp(length / span.rest_length, 0.0, 1.0));
     }
     result.alpha_span = quantile(ratios, options_.region_percentile);
@@ -389,7 +406,8 @@ RegionCompression WrinklePlacement::measureRegion(const std::vector<BezierPatch>
   return result;
 }
 
-std::vector<RegionCompression> WrinklePlacement::measureRegions(const std::vector<BezierPatch>& posed, const SkeletonPose& pose) const {
+std::vector<RegionCompression> WrinklePlacement::measureRegions(const std::vector<BezierPatch>& posed,
+                                                                const SkeletonPose& pose) const {
   std::vector<RegionCompression> result;
   result.reserve(regions_.size());
   for (const CompressionRegion& region : regions_) result.push_back(measureRegion(posed, pose, region));
@@ -403,7 +421,8 @@ Eigen::Vector2f PoseWrinkleMap::textureCoordinate(std::uint32_t patch, float u, 
 
 PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::vector<BezierPatch>& posed,
                                   const SkeletonPose& pose, int tile_pixels) {
-  if (tile_pixels < 8) throw std::invalid_argument("makePoseWrinkleMap: tile_pixels must be >= 8, got " + str(tile_pixels));
+  if (tile_pixels < 8)
+    throw std::invalid_argument("makePoseWrinkleMap: tile_pixels must be >= 8, got " + str(tile_pixels));
   const std::vector<BezierPatch>& rest = placement.restPatches();
   if (posed.size() != rest.size()) {
     throw std::invalid_argument("makePoseWrinkleMap: posed garment has " + str(posed.size()) + " patches, expected " +

@@ -70,7 +70,8 @@ void MeshRasterizer::draw(const TriangleMesh& mesh, const RasterMaterial& materi
         Eigen::Vector3d n = (w0 * mesh.normals[ia] + w1 * mesh.normals[ib] + w2 * mesh.normals[ic]).cast<double>();
         if (n.norm() < 1e-12) n = -forward_;
         // Facing away from the viewer: the inside of a garment; shade it with the flipped normal.
-        const Eigen::Vector3d world = (w0 * mesh.positions[ia] + w1 * mesh.positions[ib] + w2 * mesh.positions[ic]).cast<double>();
+        const Eigen::Vector3d world =
+            (w0 * mesh.positions[ia] + w1 * mesh.positions[ib] + w2 * mesh.positions[ic]).cast<double>();
         const Eigen::Vector3d to_eye = focal_ > 0.0 ? Eigen::Vector3d(camera_.eye - world) : Eigen::Vector3d(-forward_);
         double factor = 1.0;
         if (n.dot(to_eye) < 0.0) {
@@ -88,7 +89,8 @@ std::vector<std::uint8_t> MeshRasterizer::rgb() const {
   std::vector<std::uint8_t> out(colour_.size() * 3);
   for (std::size_t k = 0; k < colour_.size(); ++k) {
     for (int c = 0; c < 3; ++c) {
-      out[3 * k + c] = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(static_cast<double>(colour_[k][c]), 0.0, 1.0)));
+      out[3 * k + c] =
+          static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(static_cast<double>(colour_[k][c]), 0.0, 1.0)));
     }
   }
   return out;
@@ -97,7 +99,8 @@ std::vector<std::uint8_t> MeshRasterizer::rgb() const {
 void MeshRasterizer::writePng(const std::string& path) const { writePng8(path, width_, height_, 3, rgb()); }
 
 std::size_t MeshRasterizer::coveredPixels() const {
-  return static_cast<std::size_t>(std::count_if(depth_.begin(), depth_.end(), [](float d) { return std::isfinite(d); }));
+  return static_cast<std::size_t>(
+      std::count_if(depth_.begin(), depth_.end(), [](float d) { return std::isfinite(d); }));
 }
 
 }  // namespace dressed_human

@@ -30,9 +30,9 @@ std::string format(double value) {
 
 const std::vector<std::pair<std::string, std::vector<std::string>>>& bodyShapeGroups() {
   static const std::vector<std::pair<std::string, std::vector<std::string>>> groups = {
-      {"all", {"waist", "torso", "neck", "head", "l_clavicle", "l_shoulder", "l_elbow", "l_wrist",
-               "r_clavicle", "r_shoulder", "r_elbow", "r_wrist", "l_pelvis", "l_hip", "l_knee",
-               "l_ankle", "r_pelvis", "r_hip", "r_knee", "r_ankle"}},
+      {"all", {"waist",   "torso",      "neck",       "head",    "l_clavicle", "l_shoulder", "l_elbow",
+               "l_wrist", "r_clavicle", "r_shoulder", "r_elbow", "r_wrist",    "l_pelvis",   "l_hip",
+               "l_knee",  "l_ankle",    "r_pelvis",   "r_hip",   "r_knee",     "r_ankle"}},
       {"trunk", {"waist", "torso"}},
       {"head_neck", {"neck", "head"}},
       {"arms", {"l_clavicle", "l_shoulder", "l_elbow", "l_wrist", "r_clavicle", "r_shoulder", "r_elbow", "r_wrist"}},
@@ -67,7 +67,8 @@ SkinSegmentSpec readSegment(const BodyYamlReader& reader, const YAML::Node& node
   key = "segments." + spec.bone;
   if (spec.bone != "body") {
     spec.bone_index = skeleton.findBone(spec.bone);
-    if (spec.bone_index < 0) reader.fail(bone_node, key, "no bone of that name in the skeleton (or \"body\" for the root frame)");
+    if (spec.bone_index < 0)
+      reader.fail(bone_node, key, "no bone of that name in the skeleton (or \"body\" for the root frame)");
   }
   if (read.segment_of_bone.count(spec.bone)) reader.fail(bone_node, key, "a second segment for the same bone");
   if (node["joined"]) spec.joined_to_parent = reader.boolean(node["joined"], key + ".joined");
@@ -86,8 +87,8 @@ SkinSegmentSpec readSegment(const BodyYamlReader& reader, const YAML::Node& node
 
   const YAML::Node sections = reader.require(node, "sections", key);
   if (!sections.IsSequence() || sections.size() == 0) {
-    reader.fail(sections, key + ".sections", "expected a list of [z, radius_x, radius_y], got " +
-                                                 BodyYamlReader::describe(sections));
+    reader.fail(sections, key + ".sections",
+                "expected a list of [z, radius_x, radius_y], got " + BodyYamlReader::describe(sections));
   }
   for (std::size_t k = 0; k < sections.size(); ++k) {
     const std::string section_key = key + ".sections[" + std::to_string(k) + "]";
@@ -96,8 +97,9 @@ SkinSegmentSpec readSegment(const BodyYamlReader& reader, const YAML::Node& node
     if (v[1] > 1.0 || v[2] > 1.0) reader.fail(sections[k], section_key, "radii above 1 m: metres expected");
     reader.numberWithin(sections[k][0], section_key + "[0]", -kMaxLength, kMaxLength, " m (z along the bone)");
     if (k > 0 && !(v[0] > spec.sections.back().z)) {
-      reader.fail(sections[k], section_key, "z " + format(v[0]) + " must be greater than the previous section's " +
-                                                format(spec.sections.back().z));
+      reader.fail(
+          sections[k], section_key,
+          "z " + format(v[0]) + " must be greater than the previous section's " + format(spec.sections.back().z));
     }
     spec.sections.push_back(SkinSection{v[0], v[1], v[2]});
   }
@@ -116,11 +118,13 @@ void checkJoin(const BodyYamlReader& reader, const YAML::Node& node, const SkinS
       bone.parent < 0 ? std::string("body") : skeleton.bone(static_cast<std::size_t>(bone.parent)).name;
   const auto parent = read.segment_of_bone.find(parent_name);
   if (parent == read.segment_of_bone.end()) {
-    reader.fail(node["joined"], key + ".joined", "the parent segment '" + parent_name + "' must come earlier in the list");
+    reader.fail(node["joined"], key + ".joined",
+                "the parent segment '" + parent_name + "' must come earlier in the list");
   }
   if (read.joined_child[parent->second] >= 0) {
-    reader.fail(node["joined"], key + ".joined", "segment '" + parent_name + "' already continues into '" +
-                                                     body.segments[static_cast<std::size_t>(read.joined_child[parent->second])].bone + "'");
+    reader.fail(node["joined"], key + ".joined",
+                "segment '" + parent_name + "' already continues into '" +
+                    body.segments[static_cast<std::size_t>(read.joined_child[parent->second])].bone + "'");
   }
   if (node["proximal_cap"] && spec.proximal_cap != 0.0) {
     reader.fail(node["proximal_cap"], key + ".proximal_cap", "a joined segment has no proximal cap");
@@ -130,13 +134,15 @@ void checkJoin(const BodyYamlReader& reader, const YAML::Node& node, const SkinS
   }
   const Eigen::Vector3d& joint = bone.rest_translation;
   if (std::abs(joint.x()) > kAxisTolerance || std::abs(joint.y()) > kAxisTolerance) {
-    reader.fail(node["joined"], key + ".joined", "the joint is off the parent's z axis; only a bone continuing its parent can join");
+    reader.fail(node["joined"], key + ".joined",
+                "the joint is off the parent's z axis; only a bone continuing its parent can join");
   }
   const SkinSegmentSpec& parent_spec = body.segments[parent->second];
   if (!(joint.z() > parent_spec.sections.back().z)) {
     reader.fail(read.nodes[parent->second]["sections"], "segments." + parent_name + ".sections",
                 "the last section (z = " + format(parent_spec.sections.back().z) +
-                    ") must lie below the joint of the joined child '" + spec.bone + "' (z = " + format(joint.z()) + ")");
+                    ") must lie below the joint of the joined child '" + spec.bone + "' (z = " + format(joint.z()) +
+                    ")");
   }
   read.joined_child[parent->second] = static_cast<int>(body.segments.size());
 }
@@ -149,12 +155,15 @@ void checkSegmentEnds(const BodyYamlReader& reader, const BodyDescription& body,
     const std::string key = "segments." + spec.bone;
     if (read.joined_child[s] >= 0) {
       if (node["distal_cap"] && spec.distal_cap != 0.0) {
-        reader.fail(node["distal_cap"], key + ".distal_cap", "segment '" + body.segments[static_cast<std::size_t>(read.joined_child[s])].bone +
-                                                                 "' continues this one: no distal cap");
+        reader.fail(node["distal_cap"], key + ".distal_cap",
+                    "segment '" + body.segments[static_cast<std::size_t>(read.joined_child[s])].bone +
+                        "' continues this one: no distal cap");
       }
     } else {
-      if (!(spec.distal_cap > 0.0)) reader.fail(node, key + ".distal_cap", "open distal end: give distal_cap > 0 or join a child segment");
-      if (spec.sections.size() < 2) reader.fail(node["sections"], key + ".sections", "needs at least 2 sections (one stack)");
+      if (!(spec.distal_cap > 0.0))
+        reader.fail(node, key + ".distal_cap", "open distal end: give distal_cap > 0 or join a child segment");
+      if (spec.sections.size() < 2)
+        reader.fail(node["sections"], key + ".sections", "needs at least 2 sections (one stack)");
     }
   }
 }
@@ -176,7 +185,8 @@ BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Ske
 
   const YAML::Node segments = reader.require(document, "segments", "");
   if (!segments.IsSequence() || segments.size() == 0) {
-    reader.fail(segments, "segments", "expected a non-empty list of segments, got " + BodyYamlReader::describe(segments));
+    reader.fail(segments, "segments",
+                "expected a non-empty list of segments, got " + BodyYamlReader::describe(segments));
   }
   SegmentsRead read;
   for (std::size_t s = 0; s < segments.size(); ++s) {
@@ -185,7 +195,8 @@ BodyDescription parseBodyDescriptionYaml(const std::string& yaml_text, const Ske
     if (spec.joined_to_parent) {
       checkJoin(reader, node, spec, skeleton, body, read);
     } else if (!(spec.proximal_cap > 0.0)) {
-      reader.fail(node, "segments." + spec.bone + ".proximal_cap", "open proximal end: give proximal_cap > 0 or join the parent");
+      reader.fail(node, "segments." + spec.bone + ".proximal_cap",
+                  "open proximal end: give proximal_cap > 0 or join the parent");
     }
     read.segment_of_bone[spec.bone] = body.segments.size();
     read.nodes.push_back(node);

@@ -10,8 +10,8 @@ BodyShape scaleBodyShapeGroups(const BodyShape& base, const Skeleton& skeleton,
     for (int k = 0; k < 3; ++k) {
       const double factor = groups[g].abc[k];
       if (!(factor >= kMinShapeScale && factor <= kMaxShapeScale)) {
-        throw ShapeGroupScaleError(g, std::string(1, "abc"[k]) + " = " + std::to_string(factor) +
-                                          " is outside [0.2, 5]");
+        throw ShapeGroupScaleError(g,
+                                   std::string(1, "abc"[k]) + " = " + std::to_string(factor) + " is outside [0.2, 5]");
       }
     }
   }

@@ -7,9 +7,7 @@ namespace dressed_human {
 namespace {
 
 // Within a revolution of `from`, the short way: angles may be reported wrapped to (-pi, pi].
-double shortestDifference(double from, double to) {
-  return std::remainder(to - from, 2.0 * M_PI);
-}
+double shortestDifference(double from, double to) { return std::remainder(to - from, 2.0 * M_PI); }
 
 }  // namespace
 

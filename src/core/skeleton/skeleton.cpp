@@ -19,22 +19,18 @@ struct LayoutParent {
 
 // Parent of every bone in the human layout; "body" is the root frame (pelvis centre).
 constexpr std::array<LayoutParent, kBoneCount> kLayoutParents = {{
-    {"waist", "body"},          {"torso", "waist"},          {"neck", "torso"},
-    {"head", "neck"},           {"l_clavicle", "torso"},     {"l_shoulder", "l_clavicle"},
-    {"l_elbow", "l_shoulder"},  {"l_wrist", "l_elbow"},      {"r_clavicle", "torso"},
-    {"r_shoulder", "r_clavicle"}, {"r_elbow", "r_shoulder"}, {"r_wrist", "r_elbow"},
-    {"l_pelvis", "body"},       {"l_hip", "l_pelvis"},       {"l_knee", "l_hip"},
-    {"l_ankle", "l_knee"},      {"r_pelvis", "body"},        {"r_hip", "r_pelvis"},
-    {"r_knee", "r_hip"},        {"r_ankle", "r_knee"},
+    {"waist", "body"},       {"torso", "waist"},           {"neck", "torso"},         {"head", "neck"},
+    {"l_clavicle", "torso"}, {"l_shoulder", "l_clavicle"}, {"l_elbow", "l_shoulder"}, {"l_wrist", "l_elbow"},
+    {"r_clavicle", "torso"}, {"r_shoulder", "r_clavicle"}, {"r_elbow", "r_shoulder"}, {"r_wrist", "r_elbow"},
+    {"l_pelvis", "body"},    {"l_hip", "l_pelvis"},        {"l_knee", "l_hip"},       {"l_ankle", "l_knee"},
+    {"r_pelvis", "body"},    {"r_hip", "r_pelvis"},        {"r_knee", "r_hip"},       {"r_ankle", "r_knee"},
 }};
 
 constexpr double kAxisTolerance = 1e-9;
 
 Eigen::Vector3d toEigen(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
 
-Eigen::Quaterniond toEigen(const urdf::Rotation& r) {
-  return Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized();
-}
+Eigen::Quaterniond toEigen(const urdf::Rotation& r) { return Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized(); }
 
 bool isIdentity(const urdf::Pose& pose) {
   return toEigen(pose.position).norm() < kAxisTolerance &&
@@ -60,8 +56,8 @@ urdf::LinkConstSharedPtr readArticulatedChain(const urdf::ModelInterface& model,
   for (int dof = static_cast<int>(kDofsPerJoint) - 1; dof >= 0; --dof) {
     const urdf::JointSharedPtr& urdf_joint = link->parent_joint;
     if (!urdf_joint || !isRotational(*urdf_joint)) {
-      throw SkeletonError("URDF link '" + link->name + "' must hang from a revolute joint (DOF '" +
-                          kDofNames[dof] + "' of joint '" + bone.name + "'), found " +
+      throw SkeletonError("URDF link '" + link->name + "' must hang from a revolute joint (DOF '" + kDofNames[dof] +
+                          "' of joint '" + bone.name + "'), found " +
                           (urdf_joint ? "joint '" + urdf_joint->name + "' of another type" : "none"));
     }
     if ((toEigen(urdf_joint->axis) - axes[dof]).norm() > kAxisTolerance) {
@@ -121,16 +117,26 @@ void readBoneCylinder(const urdf::Link& link, Bone& bone) {
 
 const std::array<BoneLayoutEntry, kBoneCount>& humanBoneLayout() {
   static const std::array<BoneLayoutEntry, kBoneCount> layout = {{
-      {"waist", "lower spine (abdomen)", true},  {"torso", "upper spine (chest)", true},
-      {"neck", "neck", true},                    {"head", "head", true},
-      {"l_clavicle", "left clavicle", false},    {"l_shoulder", "left upper arm", true},
-      {"l_elbow", "left forearm", true},         {"l_wrist", "left hand", true},
-      {"r_clavicle", "right clavicle", false},   {"r_shoulder", "right upper arm", true},
-      {"r_elbow", "right forearm", true},        {"r_wrist", "right hand", true},
-      {"l_pelvis", "left hip bone", false},      {"l_hip", "left thigh", true},
-      {"l_knee", "left shank", true},            {"l_ankle", "left foot", true},
-      {"r_pelvis", "right hip bone", false},     {"r_hip", "right thigh", true},
-      {"r_knee", "right shank", true},           {"r_ankle", "right foot", true},
+      {"waist", "lower spine (abdomen)", true},
+      {"torso", "upper spine (chest)", true},
+      {"neck", "neck", true},
+      {"head", "head", true},
+      {"l_clavicle", "left clavicle", false},
+      {"l_shoulder", "left upper arm", true},
+      {"l_elbow", "left forearm", true},
+      {"l_wrist", "left hand", true},
+      {"r_clavicle", "right clavicle", false},
+      {"r_shoulder", "right upper arm", true},
+      {"r_elbow", "right forearm", true},
+      {"r_wrist", "right hand", true},
+      {"l_pelvis", "left hip bone", false},
+      {"l_hip", "left thigh", true},
+      {"l_knee", "left shank", true},
+      {"l_ankle", "left foot", true},
+      {"r_pelvis", "right hip bone", false},
+      {"r_hip", "right thigh", true},
+      {"r_knee", "right shank", true},
+      {"r_ankle", "right foot", true},
   }};
   return layout;
 }
@@ -159,7 +165,8 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
   skeleton.suffix_ = root->name.substr(4);
   const std::string& suffix = skeleton.suffix_;
   if (!validSuffix(suffix)) {
-    throw SkeletonError("the URDF root link '" + root->name + "' must be 'body' or 'body_<id>' with an alphanumeric id");
+    throw SkeletonError("the URDF root link '" + root->name +
+                        "' must be 'body' or 'body_<id>' with an alphanumeric id");
   }
 
   const auto& layout = humanBoneLayout();
@@ -186,8 +193,7 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
     } else {
       const urdf::JointSharedPtr& fixed = link->parent_joint;
       if (!fixed || fixed->type != urdf::Joint::FIXED) {
-        throw SkeletonError("URDF link '" + link_name + "' (the " + bone.anatomical +
-                            ") must hang from a fixed joint");
+        throw SkeletonError("URDF link '" + link_name + "' (the " + bone.anatomical + ") must hang from a fixed joint");
       }
       bone.rest_translation = toEigen(fixed->parent_to_joint_origin_transform.position);
       bone.rest_rotation = toEigen(fixed->parent_to_joint_origin_transform.rotation);
@@ -208,7 +214,8 @@ Skeleton Skeleton::fromUrdf(const std::string& urdf_xml) {
     const Eigen::Vector3d& own = skeleton.body_shape_.scale[static_cast<std::size_t>(&bone - skeleton.bones_.data())];
     bone.rest_translation -= skeleton.body_shape_.offset[static_cast<std::size_t>(&bone - skeleton.bones_.data())];
     if (bone.parent >= 0) {
-      bone.rest_translation = bone.rest_translation.cwiseQuotient(skeleton.body_shape_.scale[static_cast<std::size_t>(bone.parent)]);
+      bone.rest_translation =
+          bone.rest_translation.cwiseQuotient(skeleton.body_shape_.scale[static_cast<std::size_t>(bone.parent)]);
     }
     bone.length /= own.z();
     bone.radius /= 0.5 * (own.x() + own.y());

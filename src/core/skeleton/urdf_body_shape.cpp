@@ -29,7 +29,8 @@ Eigen::Vector3d parseVector(const char* text) {
 }
 
 void parse(tinyxml2::XMLDocument& document, const std::string& urdf_xml) {
-  if (document.Parse(urdf_xml.c_str(), urdf_xml.size()) != tinyxml2::XML_SUCCESS || !document.FirstChildElement("robot")) {
+  if (document.Parse(urdf_xml.c_str(), urdf_xml.size()) != tinyxml2::XML_SUCCESS ||
+      !document.FirstChildElement("robot")) {
     throw SkeletonError(std::string("the URDF is not valid XML with a <robot> element: ") +
                         (document.ErrorStr() ? document.ErrorStr() : "no <robot>"));
   }
@@ -37,7 +38,8 @@ void parse(tinyxml2::XMLDocument& document, const std::string& urdf_xml) {
 
 // Bone index by URDF link name (with the suffix the root link "body<suffix>" gives).
 std::map<std::string, std::size_t> boneLinks(const tinyxml2::XMLElement& robot, std::string& suffix) {
-  for (const tinyxml2::XMLElement* link = robot.FirstChildElement("link"); link; link = link->NextSiblingElement("link")) {
+  for (const tinyxml2::XMLElement* link = robot.FirstChildElement("link"); link;
+       link = link->NextSiblingElement("link")) {
     const std::string name = link->Attribute("name") ? link->Attribute("name") : "";
     if (name == "body" || name.rfind("body_", 0) == 0) suffix = name.substr(4);
   }
@@ -89,8 +91,8 @@ BodyShape urdfBodyShape(const std::string& urdf_xml) {
       double factor = 0.0;
       if (bone->QueryDoubleAttribute(kFactorNames[static_cast<std::size_t>(k)], &factor) != tinyxml2::XML_SUCCESS ||
           !std::isfinite(factor) || factor <= 0.0) {
-        throw SkeletonError(std::string("<") + kShapeElement + ">: bone '" + name + "': " +
-                            kFactorNames[static_cast<std::size_t>(k)] + " must be a positive number");
+        throw SkeletonError(std::string("<") + kShapeElement + ">: bone '" + name +
+                            "': " + kFactorNames[static_cast<std::size_t>(k)] + " must be a positive number");
       }
       shape.scale[index][k] = factor;
     }
@@ -111,7 +113,8 @@ BodyShape urdfBodyShape(const std::string& urdf_xml) {
 std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     const Eigen::Vector3d& s = shape.scale[b];
-    if (!s.allFinite() || (s.array() <= 0.0).any()) throw SkeletonError("body shape factors must be finite and positive");
+    if (!s.allFinite() || (s.array() <= 0.0).any())
+      throw SkeletonError("body shape factors must be finite and positive");
     if (!shape.offset[b].allFinite() || shape.offset[b].cwiseAbs().maxCoeff() > kMaxShapeOffset) {
       throw SkeletonError("body shape offsets must be finite and within +-" + numberText(kMaxShapeOffset) + " m");
     }
@@ -135,7 +138,8 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
     placed_by[std::string(humanBoneLayout()[b].name) + suffix] = b;
     placed_by[std::string(humanBoneLayout()[b].name) + "_ry_link" + suffix] = b;
   }
-  for (tinyxml2::XMLElement* joint = robot->FirstChildElement("joint"); joint; joint = joint->NextSiblingElement("joint")) {
+  for (tinyxml2::XMLElement* joint = robot->FirstChildElement("joint"); joint;
+       joint = joint->NextSiblingElement("joint")) {
     const tinyxml2::XMLElement* parent = joint->FirstChildElement("parent");
     const tinyxml2::XMLElement* child = joint->FirstChildElement("child");
     const Eigen::Vector3d* scale = scaleOf(parent ? parent->Attribute("link") : nullptr);
@@ -152,7 +156,8 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
     const Eigen::Vector3d* scale = scaleOf(link->Attribute("name"));
     if (!scale) continue;
     const double across = 0.5 * (scale->x() + scale->y());
-    for (tinyxml2::XMLElement* visual = link->FirstChildElement("visual"); visual; visual = visual->NextSiblingElement("visual")) {
+    for (tinyxml2::XMLElement* visual = link->FirstChildElement("visual"); visual;
+         visual = visual->NextSiblingElement("visual")) {
       tinyxml2::XMLElement* origin = visual->FirstChildElement("origin");
       if (origin && origin->Attribute("xyz")) {
         origin->SetAttribute("xyz", vectorText(scale->cwiseProduct(parseVector(origin->Attribute("xyz")))).c_str());
@@ -164,7 +169,8 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
           shape_element->SetAttribute("radius", numberText(across * shape_element->DoubleAttribute("radius")).c_str());
         }
         if (shape_element->Attribute("length")) {
-          shape_element->SetAttribute("length", numberText(scale->z() * shape_element->DoubleAttribute("length")).c_str());
+          shape_element->SetAttribute("length",
+                                      numberText(scale->z() * shape_element->DoubleAttribute("length")).c_str());
         }
       }
     }
@@ -178,7 +184,8 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
   for (std::size_t b = 0; b < kBoneCount; ++b) {
     tinyxml2::XMLElement* bone = document.NewElement("bone");
     bone->SetAttribute("name", layout[b].name);
-    for (int k = 0; k < 3; ++k) bone->SetAttribute(kFactorNames[static_cast<std::size_t>(k)], numberText(shape.scale[b][k]).c_str());
+    for (int k = 0; k < 3; ++k)
+      bone->SetAttribute(kFactorNames[static_cast<std::size_t>(k)], numberText(shape.scale[b][k]).c_str());
     if (!shape.offset[b].isZero(0.0)) bone->SetAttribute("offset", vectorText(shape.offset[b]).c_str());
     record->InsertEndChild(bone);
   }

@@ -62,8 +62,7 @@ BernsteinTable::BernsteinTable(const std::vector<double>& parameters) : paramete
 
 BernsteinTable BernsteinTable::uniform(int segments) {
   if (segments < 1) {
-    throw std::invalid_argument("BernsteinTable::uniform needs at least 1 segment, got " +
-                                std::to_string(segments));
+    throw std::invalid_argument("BernsteinTable::uniform needs at least 1 segment, got " + std::to_string(segments));
   }
   std::vector<double> parameters(static_cast<std::size_t>(segments) + 1);
   for (int k = 0; k <= segments; ++k) parameters[k] = static_cast<double>(k) / segments;
@@ -93,9 +92,8 @@ void BezierPatch::setControlPoints(const ControlPoints& control_points) {
         const Eigen::Vector3d& p = control_points[index(i, j)];
         if (p.allFinite()) continue;
         std::ostringstream message;
-        message << "Bezier patch control point P[" << i << "][" << j << "] (u-index " << i
-                << ", v-index " << j << ") is not finite: (" << p.x() << ", " << p.y() << ", "
-                << p.z() << ")";
+        message << "Bezier patch control point P[" << i << "][" << j << "] (u-index " << i << ", v-index " << j
+                << ") is not finite: (" << p.x() << ", " << p.y() << ", " << p.z() << ")";
         throw std::invalid_argument(message.str());
       }
     }
@@ -167,8 +165,8 @@ PatchSample BezierPatch::sample(double u, double v) const {
   return sample(cubicBernsteinWeights(u), u, cubicBernsteinWeights(v), v);
 }
 
-PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u,
-                                const BernsteinWeights& v_weights, double v) const {
+PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u, const BernsteinWeights& v_weights,
+                                double v) const {
   PatchSample s;
   const ControlNet net = netOf(control_points_);
   firstOrderTerms(contractV(net, v_weights.value), contractV(net, v_weights.first_derivative), u_weights, s);
@@ -177,7 +175,7 @@ PatchSample BezierPatch::sample(const BernsteinWeights& u_weights, double u,
 }
 
 void BezierPatch::evaluateGrid(const BernsteinTable& u_table, const BernsteinTable& v_table,
-                                const SurfaceSampleArrays& out) const {
+                               const SurfaceSampleArrays& out) const {
   const ControlNet net = netOf(control_points_);
   const std::size_t u_count = u_table.size();
   std::size_t k = 0;
@@ -193,10 +191,9 @@ void BezierPatch::evaluateGrid(const BernsteinTable& u_table, const BernsteinTab
       const Eigen::Vector3d d_dv = row_dv * bu.value;
       const Eigen::Vector3d cross = d_du.cross(d_dv);
       const double cross_squared = cross.squaredNorm();
-      const Eigen::Vector3d normal =
-          cross_squared > degenerate_cross_squared_
-              ? Eigen::Vector3d(cross / std::sqrt(cross_squared))
-              : limitNormal(u_table.parameter(a), v_table.parameter(b));
+      const Eigen::Vector3d normal = cross_squared > degenerate_cross_squared_
+                                         ? Eigen::Vector3d(cross / std::sqrt(cross_squared))
+                                         : limitNormal(u_table.parameter(a), v_table.parameter(b));
       out.positions[k] = position.cast<float>();
       out.normals[k] = normal.cast<float>();
       out.tangents_u[k] = d_du.cast<float>();
@@ -205,8 +202,8 @@ void BezierPatch::evaluateGrid(const BernsteinTable& u_table, const BernsteinTab
   }
 }
 
-Eigen::Vector3d BezierPatch::unitNormal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv,
-                                         double u, double v) const {
+Eigen::Vector3d BezierPatch::unitNormal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv, double u,
+                                        double v) const {
   const Eigen::Vector3d cross = d_du.cross(d_dv);
   const double cross_squared = cross.squaredNorm();
   if (cross_squared > degenerate_cross_squared_) return cross / std::sqrt(cross_squared);
@@ -253,14 +250,12 @@ Eigen::Vector3d BezierPatch::limitNormal(double u, double v) const {
   for (int k = 0; k < 6; ++k) f_u[k] = f_v[k] = Eigen::Vector3d::Zero();
   for (int a = 1; a < 4; ++a) {
     for (int b = 0; b < 4; ++b) {
-      f_u[a - 1 + b] += derivative[a][b] *
-                        (du_power[a - 1] * dv_power[b] / (factorial[a - 1] * factorial[b]));
+      f_u[a - 1 + b] += derivative[a][b] * (du_power[a - 1] * dv_power[b] / (factorial[a - 1] * factorial[b]));
     }
   }
   for (int a = 0; a < 4; ++a) {
     for (int b = 1; b < 4; ++b) {
-      f_v[a + b - 1] += derivative[a][b] *
-                        (du_power[a] * dv_power[b - 1] / (factorial[a] * factorial[b - 1]));
+      f_v[a + b - 1] += derivative[a][b] * (du_power[a] * dv_power[b - 1] / (factorial[a] * factorial[b - 1]));
     }
   }
   for (int k = 0; k <= 10; ++k) {

@@ -80,7 +80,8 @@ BezierProfileTable::BezierProfileTable(const BezierProfile& profile, int entries
   heights_.resize(static_cast<std::size_t>(entries));
   slopes_.resize(static_cast<std::size_t>(entries));
   for (int index = 0; index < entries; ++index) {
-    evaluateExact(profile, index / last_, heights_[static_cast<std::size_t>(index)], slopes_[static_cast<std::size_t>(index)]);
+    evaluateExact(profile, index / last_, heights_[static_cast<std::size_t>(index)],
+                  slopes_[static_cast<std::size_t>(index)]);
   }
 }
 

@@ -24,7 +24,8 @@ std::vector<CoverPatch> coverPatches(const std::vector<const std::vector<BezierP
       CoverPatch cover;
       for (int j = 0; j <= kCoverGrid; ++j) {
         for (int i = 0; i <= kCoverGrid; ++i) {
-          cover.grid.push_back(patch.position(static_cast<double>(i) / kCoverGrid, static_cast<double>(j) / kCoverGrid));
+          cover.grid.push_back(
+              patch.position(static_cast<double>(i) / kCoverGrid, static_cast<double>(j) / kCoverGrid));
           cover.box.extend(cover.grid.back());
         }
       }

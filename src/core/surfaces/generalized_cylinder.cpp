@@ -22,26 +22,34 @@ Eigen::Vector3d quarterArcPoint(int q, int i, double rx, double ry, double z) {
   const Eigen::Vector2d& end = kAxisDirection[(q + 1) % 4];
   Eigen::Vector2d unit;
   switch (i) {
-    case 0: unit = start; break;
-    case 1: unit = start + kQuarterCircleHandle * end; break;   // tangent at start points to end
-    case 2: unit = end + kQuarterCircleHandle * start; break;
-    default: unit = end; break;
+    case 0:
+      unit = start;
+      break;
+    case 1:
+      unit = start + kQuarterCircleHandle * end;
+      break;  // tangent at start points to end
+    case 2:
+      unit = end + kQuarterCircleHandle * start;
+      break;
+    default:
+      unit = end;
+      break;
   }
   return {rx * unit.x(), ry * unit.y(), z};
 }
 
 }  // namespace
 
-PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings,
-                                       double bottom_cap_height, double top_cap_height) {
+PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings, double bottom_cap_height,
+                                     double top_cap_height) {
   if (rings.size() < 4 || (rings.size() - 1) % 3 != 0) {
     throw std::invalid_argument("makeGeneralizedCylinder: needs 3k + 1 rings (k >= 1), got " +
                                 std::to_string(rings.size()));
   }
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const CylinderRing& ring = rings[r];
-    if (!std::isfinite(ring.z) || !(ring.radius_x > 0.0) || !(ring.radius_y > 0.0) ||
-        !std::isfinite(ring.radius_x) || !std::isfinite(ring.radius_y)) {
+    if (!std::isfinite(ring.z) || !(ring.radius_x > 0.0) || !(ring.radius_y > 0.0) || !std::isfinite(ring.radius_x) ||
+        !std::isfinite(ring.radius_y)) {
       throw std::invalid_argument("makeGeneralizedCylinder: ring " + std::to_string(r) +
                                   " needs a finite z and finite radii > 0");
     }
@@ -56,12 +64,11 @@ PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings,
   const bool bottom_cap = bottom_cap_height > 0.0;
   const bool top_cap = top_cap_height > 0.0;
   std::vector<BezierPatch> patches;
-  auto add_patch = [&](int q, const CylinderRing (&rows)[4]) {
+  auto add_patch = [&](int q, const CylinderRing(&rows)[4]) {
     BezierPatch::ControlPoints points;
     for (int j = 0; j < 4; ++j) {
       for (int i = 0; i < 4; ++i) {
-        points[BezierPatch::index(i, j)] =
-            quarterArcPoint(q, i, rows[j].radius_x, rows[j].radius_y, rows[j].z);
+        points[BezierPatch::index(i, j)] = quarterArcPoint(q, i, rows[j].radius_x, rows[j].radius_y, rows[j].z);
       }
     }
     patches.emplace_back(points);

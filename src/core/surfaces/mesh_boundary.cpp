@@ -26,7 +26,9 @@ std::vector<std::vector<std::uint32_t>> boundaryLoops(const TriangleMesh& mesh) 
     next[edge.second].push_back(edge.first);
   }
   for (const auto& [v, list] : next) {
-    if (list.size() != 2) throw std::runtime_error("boundaryLoops: vertex " + std::to_string(v) + " has " + std::to_string(list.size()) + " boundary edges");
+    if (list.size() != 2)
+      throw std::runtime_error("boundaryLoops: vertex " + std::to_string(v) + " has " + std::to_string(list.size()) +
+                               " boundary edges");
   }
   std::set<std::uint32_t> seen;
   std::vector<std::vector<std::uint32_t>> loops;

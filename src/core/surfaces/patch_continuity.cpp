@@ -13,19 +13,40 @@ void edgePoint(PatchEdge edge, double t, double& u, double& v, bool& along_u, do
   along_u = false;
   outward = -1.0;
   switch (edge) {
-    case PatchEdge::kV0: u = t; v = 0.0; along_u = false; outward = -1.0; break;
-    case PatchEdge::kV1: u = t; v = 1.0; along_u = false; outward = 1.0; break;
-    case PatchEdge::kU0: u = 0.0; v = t; along_u = true; outward = -1.0; break;
-    case PatchEdge::kU1: u = 1.0; v = t; along_u = true; outward = 1.0; break;
+    case PatchEdge::kV0:
+      u = t;
+      v = 0.0;
+      along_u = false;
+      outward = -1.0;
+      break;
+    case PatchEdge::kV1:
+      u = t;
+      v = 1.0;
+      along_u = false;
+      outward = 1.0;
+      break;
+    case PatchEdge::kU0:
+      u = 0.0;
+      v = t;
+      along_u = true;
+      outward = -1.0;
+      break;
+    case PatchEdge::kU1:
+      u = 1.0;
+      v = t;
+      along_u = true;
+      outward = 1.0;
+      break;
   }
 }
 
 }  // namespace
 
-std::vector<EdgeContinuity> measureContinuity(const std::vector<BezierPatch>& patches,
-                                              const PatchTopology& topology, int samples) {
+std::vector<EdgeContinuity> measureContinuity(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                              int samples) {
   if (samples < 2) throw std::invalid_argument("measureContinuity: samples must be >= 2");
-  if (topology.patchCount() != patches.size()) throw std::invalid_argument("measureContinuity: topology does not fit the patches");
+  if (topology.patchCount() != patches.size())
+    throw std::invalid_argument("measureContinuity: topology does not fit the patches");
   std::vector<EdgeContinuity> out;
   const std::vector<EdgeLink>& links = topology.links();
   for (std::size_t l = 0; l < links.size(); ++l) {

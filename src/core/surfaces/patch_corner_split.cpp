@@ -10,9 +10,9 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
                        PatchCornerSplit& out) {
   const std::size_t vertices = mesh.uv.size();
   if (corner_parameters.size() != mesh.indices.size() || mesh.triangle_patch.size() * 3 != mesh.indices.size()) {
-    throw std::invalid_argument("splitPatchCorners: " + std::to_string(corner_parameters.size()) + " corner parameters and " +
-                                std::to_string(mesh.triangle_patch.size()) + " triangle patches for " +
-                                std::to_string(mesh.indices.size()) + " triangle corners");
+    throw std::invalid_argument("splitPatchCorners: " + std::to_string(corner_parameters.size()) +
+                                " corner parameters and " + std::to_string(mesh.triangle_patch.size()) +
+                                " triangle patches for " + std::to_string(mesh.indices.size()) + " triangle corners");
   }
   out.source.resize(vertices);
   out.uv.assign(mesh.uv.begin(), mesh.uv.end());
@@ -33,7 +33,9 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
                                   std::to_string(vertices) + " vertices");
     }
     const Eigen::Vector2f uv = corner_parameters[c].cast<float>();
-    const auto same = [&](const Eigen::Vector2f& other) { return (uv - other).cwiseAbs().maxCoeff() <= kSameParameter; };
+    const auto same = [&](const Eigen::Vector2f& other) {
+      return (uv - other).cwiseAbs().maxCoeff() <= kSameParameter;
+    };
     if (same(mesh.uv[vertex])) {
       out.indices[c] = vertex;
       continue;

@@ -75,7 +75,8 @@ void Skin::joinSegments(const BodyDescription& body) {
       for (std::size_t p = 0; p < s; ++p) {
         if (segments_[p].bone == parent_bone) segment.joined_parent = static_cast<int>(p);
       }
-      if (segment.joined_parent < 0) throw SkinError("Skin: segment '" + spec.bone + "' joins a parent segment that is not listed before it");
+      if (segment.joined_parent < 0)
+        throw SkinError("Skin: segment '" + spec.bone + "' joins a parent segment that is not listed before it");
       SkinSegment& parent = segments_[static_cast<std::size_t>(segment.joined_parent)];
       if (parent.joined_child >= 0) throw SkinError("Skin: segment '" + parent.name + "' is joined by two children");
       parent.joined_child = static_cast<int>(s);
@@ -91,14 +92,16 @@ Eigen::Vector3d Skin::boneScale(int bone) const {
   return bone < 0 ? Eigen::Vector3d::Ones() : shape_.scale[static_cast<std::size_t>(bone)];
 }
 
-std::vector<Skin::Profile> Skin::sectionProfiles(const BodyDescription& body, const ForwardKinematics& kinematics) const {
+std::vector<Skin::Profile> Skin::sectionProfiles(const BodyDescription& body,
+                                                 const ForwardKinematics& kinematics) const {
   const std::size_t segment_count = body.segments.size();
   std::vector<Profile> profiles(segment_count);
   for (std::size_t s = 0; s < segment_count; ++s) {
     const SkinSegmentSpec& spec = body.segments[s];
     const Eigen::Vector3d scale = boneScale(segments_[s].bone);
     for (const SkinSection& section : spec.sections) {
-      profiles[s].push_back({scale.z() * section.z, Eigen::Vector2d(scale.x() * section.radius_x, scale.y() * section.radius_y)});
+      profiles[s].push_back(
+          {scale.z() * section.z, Eigen::Vector2d(scale.x() * section.radius_x, scale.y() * section.radius_y)});
     }
   }
   for (std::size_t s = 0; s < segment_count; ++s) {
@@ -107,7 +110,8 @@ std::vector<Skin::Profile> Skin::sectionProfiles(const BodyDescription& body, co
     const auto child = static_cast<std::size_t>(segment.joined_child);
     const double joint_z = kinematics.scaledRestTranslation(static_cast<std::size_t>(segments_[child].bone)).z();
     if (!(joint_z > profiles[s].back().z)) {
-      throw SkinError("Skin: segment '" + segment.name + "' has a section at or beyond the joint of '" + segments_[child].name + "'");
+      throw SkinError("Skin: segment '" + segment.name + "' has a section at or beyond the joint of '" +
+                      segments_[child].name + "'");
     }
     profiles[s].push_back({joint_z, profiles[child].front().radius});
   }
@@ -151,8 +155,10 @@ void Skin::buildSegmentRings(std::size_t s, const SkinSegmentSpec& spec, const s
   if (own.size() < 2) throw SkinError("Skin: segment '" + segment.name + "' needs two surface rings");
   segment.has_proximal_cap = segment.joined_parent < 0;
   segment.has_distal_cap = segment.joined_child < 0;
-  if (segment.has_proximal_cap && !(spec.proximal_cap > 0.0)) throw SkinError("Skin: segment '" + segment.name + "' has an open proximal end");
-  if (segment.has_distal_cap && !(spec.distal_cap > 0.0)) throw SkinError("Skin: segment '" + segment.name + "' has an open distal end");
+  if (segment.has_proximal_cap && !(spec.proximal_cap > 0.0))
+    throw SkinError("Skin: segment '" + segment.name + "' has an open proximal end");
+  if (segment.has_distal_cap && !(spec.distal_cap > 0.0))
+    throw SkinError("Skin: segment '" + segment.name + "' has an open distal end");
 
   const std::size_t rows = own.size();
   const std::vector<Eigen::Vector2d> slope = profileSlopes(s, profiles);
@@ -211,7 +217,8 @@ std::uint32_t Skin::numberPatches() {
   for (std::size_t s = 0; s < segment_count; ++s) {
     const SkinSegment& segment = segments_[s];
     const std::uint32_t first = segment.has_proximal_cap ? segment.proximal_cap_first : segment.first_patch;
-    const std::uint32_t last = segment.has_distal_cap ? segment.distal_cap_first + 4 : segment.first_patch + 4 * segment.stack_count;
+    const std::uint32_t last =
+        segment.has_distal_cap ? segment.distal_cap_first + 4 : segment.first_patch + 4 * segment.stack_count;
     for (std::uint32_t p = first; p < last; ++p) patch_segment_[p] = static_cast<int>(s);
   }
 
@@ -223,12 +230,15 @@ void Skin::linkPatches(std::uint32_t patch_count) {
   topology_ = PatchTopology(patch_count);
   for (std::size_t s = 0; s < segment_count; ++s) {
     const SkinSegment& segment = segments_[s];
-    auto side = [&](std::uint32_t stack, int q) { return segment.first_patch + 4 * stack + static_cast<std::uint32_t>(q); };
+    auto side = [&](std::uint32_t stack, int q) {
+      return segment.first_patch + 4 * stack + static_cast<std::uint32_t>(q);
+    };
     for (int q = 0; q < 4; ++q) {
       const int next = (q + 1) % 4;
       for (std::uint32_t stack = 0; stack < segment.stack_count; ++stack) {
         topology_.link(side(stack, q), PatchEdge::kU1, side(stack, next), PatchEdge::kU0, false);
-        if (stack + 1 < segment.stack_count) topology_.link(side(stack, q), PatchEdge::kV1, side(stack + 1, q), PatchEdge::kV0, false);
+        if (stack + 1 < segment.stack_count)
+          topology_.link(side(stack, q), PatchEdge::kV1, side(stack + 1, q), PatchEdge::kV0, false);
       }
       if (segment.has_proximal_cap) {
         const std::uint32_t cap = segment.proximal_cap_first;
@@ -252,7 +262,6 @@ void Skin::linkPatches(std::uint32_t patch_count) {
       joints_.push_back(joint);
     }
   }
-
 }
 
 void Skin::poseAtRest() {
@@ -292,12 +301,15 @@ void Skin::pose(const SkeletonPose& pose) {
     const std::size_t end = rows - (segment.joined_child >= 0 ? 1 : 0);
     for (std::size_t r = first; r < end; ++r) transformRing(local.rows[r], rotation, frame.translation, posed.rows[r]);
     if (segment.joined_parent >= 0) posed.rows.front() = posed_joint_rings_[s];
-    if (segment.joined_child >= 0) posed.rows[rows - 1] = posed_joint_rings_[static_cast<std::size_t>(segment.joined_child)];
+    if (segment.joined_child >= 0)
+      posed.rows[rows - 1] = posed_joint_rings_[static_cast<std::size_t>(segment.joined_child)];
     if (segment.has_proximal_cap) {
-      for (std::size_t r = 0; r < 3; ++r) transformRing(local.proximal_cap[r], rotation, frame.translation, posed.proximal_cap[r]);
+      for (std::size_t r = 0; r < 3; ++r)
+        transformRing(local.proximal_cap[r], rotation, frame.translation, posed.proximal_cap[r]);
     }
     if (segment.has_distal_cap) {
-      for (std::size_t r = 0; r < 3; ++r) transformRing(local.distal_cap[r], rotation, frame.translation, posed.distal_cap[r]);
+      for (std::size_t r = 0; r < 3; ++r)
+        transformRing(local.distal_cap[r], rotation, frame.translation, posed.distal_cap[r]);
     }
     assembleSegment(s, posed);
   }
@@ -309,13 +321,15 @@ void Skin::assembleSegment(std::size_t s, const SegmentRings& posed) {
   BezierPatch::ControlPoints points;
   auto emit = [&](std::uint32_t patch, int q, const Ring* rows[4]) {
     for (int j = 0; j < 4; ++j) {
-      for (int i = 0; i < 4; ++i) points[BezierPatch::index(i, j)] = (*rows[j])[static_cast<std::size_t>((3 * q + i) % 12)];
+      for (int i = 0; i < 4; ++i)
+        points[BezierPatch::index(i, j)] = (*rows[j])[static_cast<std::size_t>((3 * q + i) % 12)];
     }
     patches_[patch].setControlPoints(points);
   };
   for (int q = 0; q < 4; ++q) {
     if (segment.has_proximal_cap) {
-      const Ring* rows[4] = {&posed.proximal_cap[0], &posed.proximal_cap[1], &posed.proximal_cap[2], &posed.rows.front()};
+      const Ring* rows[4] = {&posed.proximal_cap[0], &posed.proximal_cap[1], &posed.proximal_cap[2],
+                             &posed.rows.front()};
       emit(segment.proximal_cap_first + static_cast<std::uint32_t>(q), q, rows);
     }
     for (std::uint32_t stack = 0; stack < segment.stack_count; ++stack) {

@@ -45,14 +45,16 @@ std::vector<std::size_t> SkinClearance::segmentsNamed(const std::vector<std::str
 
 double SkinClearance::clearance(const SkeletonPose& pose, std::size_t s, const Eigen::Vector3d& p) const {
   const Profile& profile = segments_.at(s);
-  const RigidTransform& frame = profile.bone < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(profile.bone)];
+  const RigidTransform& frame =
+      profile.bone < 0 ? pose.root : pose.bone_in_world[static_cast<std::size_t>(profile.bone)];
   const Eigen::Vector3d q = frame.rotation.conjugate() * (p - frame.translation);
   const std::vector<Eigen::Vector3d>& sec = profile.sections;
   double rx = 0.0, ry = 0.0, scale = 1.0;
   const double z0 = sec.front().x();
   const double z1 = sec.back().x();
   if (q.z() < z0) {
-    if (profile.proximal_cap <= 0.0 || q.z() < z0 - profile.proximal_cap) return std::numeric_limits<double>::infinity();
+    if (profile.proximal_cap <= 0.0 || q.z() < z0 - profile.proximal_cap)
+      return std::numeric_limits<double>::infinity();
     const double t = (z0 - q.z()) / profile.proximal_cap;
     scale = std::sqrt(std::max(0.0, 1.0 - t * t));
     rx = sec.front().y();
@@ -81,7 +83,8 @@ double SkinClearance::clearance(const SkeletonPose& pose, std::size_t s, const E
   return r - rho;
 }
 
-double SkinClearance::clearance(const SkeletonPose& pose, const Eigen::Vector3d& p, const std::vector<std::size_t>& segments) const {
+double SkinClearance::clearance(const SkeletonPose& pose, const Eigen::Vector3d& p,
+                                const std::vector<std::size_t>& segments) const {
   double best = std::numeric_limits<double>::infinity();
   if (segments.empty()) {
     for (std::size_t s = 0; s < segments_.size(); ++s) best = std::min(best, clearance(pose, s, p));
@@ -164,8 +167,15 @@ void SkinSurfaceClearance::pose(const SkeletonPose& pose) {
         for (int half = 0; half < 2; ++half) {
           Triangle& tri = triangles_[t++];
           // u then v: (q10 - q00) x (q01 - q00) is along F_u x F_v, outward on the skin.
-          if (half == 0) { tri.a = q00; tri.b = q10; tri.c = q11; }
-          else { tri.a = q00; tri.b = q11; tri.c = q01; }
+          if (half == 0) {
+            tri.a = q00;
+            tri.b = q10;
+            tri.c = q11;
+          } else {
+            tri.a = q00;
+            tri.b = q11;
+            tri.c = q01;
+          }
           const Eigen::Vector3d normal = (tri.b - tri.a).cross(tri.c - tri.a);
           const double length = normal.norm();
           tri.normal = length > 1e-18 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();

@@ -23,10 +23,14 @@ int edgeIndex(PatchEdge edge) { return static_cast<int>(edge); }
 
 const char* edgeName(PatchEdge edge) {
   switch (edge) {
-    case PatchEdge::kV0: return "v=0";
-    case PatchEdge::kU1: return "u=1";
-    case PatchEdge::kV1: return "v=1";
-    case PatchEdge::kU0: return "u=0";
+    case PatchEdge::kV0:
+      return "v=0";
+    case PatchEdge::kU1:
+      return "u=1";
+    case PatchEdge::kV1:
+      return "v=1";
+    case PatchEdge::kU0:
+      return "u=0";
   }
   return "?";
 }
@@ -39,15 +43,19 @@ bool runsAgainstParameter(int edge) { return edge >= 2; }
 Eigen::Vector2d edgePointParameters(int edge, int k, int m) {
   const double t = static_cast<double>(k) / m;
   switch (edge) {
-    case 0: return {t, 0.0};
-    case 1: return {1.0, t};
-    case 2: return {1.0 - t, 1.0};
-    default: return {0.0, 1.0 - t};
+    case 0:
+      return {t, 0.0};
+    case 1:
+      return {1.0, t};
+    case 2:
+      return {1.0 - t, 1.0};
+    default:
+      return {0.0, 1.0 - t};
   }
 }
 
-bool edgesCoincide(const std::array<Eigen::Vector3d, 4>& a, const std::array<Eigen::Vector3d, 4>& b,
-                    bool reversed, double tolerance) {
+bool edgesCoincide(const std::array<Eigen::Vector3d, 4>& a, const std::array<Eigen::Vector3d, 4>& b, bool reversed,
+                   double tolerance) {
   const double tolerance_squared = tolerance * tolerance;
   for (int k = 0; k < 4; ++k) {
     if (!((a[k] - b[reversed ? 3 - k : k]).squaredNorm() <= tolerance_squared)) return false;
@@ -67,7 +75,10 @@ void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
   a = findRoot(parent, a);
   b = findRoot(parent, b);
   // The smaller slot stays root so ownership does not depend on the order of the unions.
-  if (a < b) parent[b] = a; else if (b < a) parent[a] = b;
+  if (a < b)
+    parent[b] = a;
+  else if (b < a)
+    parent[a] = b;
 }
 
 }  // namespace
@@ -82,10 +93,14 @@ struct EdgeWalk {
 
 EdgeWalk edgeWalk(PatchEdge edge) {
   switch (edge) {
-    case PatchEdge::kV0: return {BezierPatch::index(0, 0), 1};
-    case PatchEdge::kU1: return {BezierPatch::index(3, 0), 4};
-    case PatchEdge::kV1: return {BezierPatch::index(0, 3), 1};
-    default: return {BezierPatch::index(0, 0), 4};
+    case PatchEdge::kV0:
+      return {BezierPatch::index(0, 0), 1};
+    case PatchEdge::kU1:
+      return {BezierPatch::index(3, 0), 4};
+    case PatchEdge::kV1:
+      return {BezierPatch::index(0, 3), 1};
+    default:
+      return {BezierPatch::index(0, 0), 4};
   }
 }
 
@@ -114,7 +129,8 @@ bool linkedEdgesCoincide(const BezierPatch& a, PatchEdge edge_a, const BezierPat
 
 std::array<Eigen::Vector3d, 4> edgeControlPoints(const BezierPatch& patch, PatchEdge edge) {
   std::array<Eigen::Vector3d, 4> points;
-  for (int k = 0; k < 4; ++k) points[static_cast<std::size_t>(k)] = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, k))];
+  for (int k = 0; k < 4; ++k)
+    points[static_cast<std::size_t>(k)] = patch.controlPoints()[static_cast<std::size_t>(edgePointIndex(edge, k))];
   return points;
 }
 
@@ -137,23 +153,22 @@ bool PatchTopology::isLinked(std::uint32_t patch, PatchEdge edge) const {
   return patch < patch_count_ && edge_linked_[4 * patch + edgeIndex(edge)];
 }
 
-void PatchTopology::link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t patch_b,
-                         PatchEdge edge_b, bool reversed) {
+void PatchTopology::link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t patch_b, PatchEdge edge_b,
+                         bool reversed) {
   for (std::uint32_t patch : {patch_a, patch_b}) {
     if (patch >= patch_count_) {
-      throw std::invalid_argument("PatchTopology::link: patch " + std::to_string(patch) +
-                                  " does not exist (" + std::to_string(patch_count_) + " patches)");
+      throw std::invalid_argument("PatchTopology::link: patch " + std::to_string(patch) + " does not exist (" +
+                                  std::to_string(patch_count_) + " patches)");
     }
   }
   if (patch_a == patch_b && edge_a == edge_b) {
-    throw std::invalid_argument("PatchTopology::link: edge " + std::string(edgeName(edge_a)) +
-                                " of patch " + std::to_string(patch_a) + " linked to itself");
+    throw std::invalid_argument("PatchTopology::link: edge " + std::string(edgeName(edge_a)) + " of patch " +
+                                std::to_string(patch_a) + " linked to itself");
   }
   for (auto [patch, edge] : {std::pair{patch_a, edge_a}, std::pair{patch_b, edge_b}}) {
     if (edge_linked_[4 * patch + edgeIndex(edge)]) {
-      throw std::invalid_argument("PatchTopology::link: edge " + std::string(edgeName(edge)) +
-                                  " of patch " + std::to_string(patch) +
-                                  " is already linked; an edge meets at most one other edge");
+      throw std::invalid_argument("PatchTopology::link: edge " + std::string(edgeName(edge)) + " of patch " +
+                                  std::to_string(patch) + " is already linked; an edge meets at most one other edge");
     }
   }
   edge_linked_[4 * patch_a + edgeIndex(edge_a)] = true;
@@ -161,8 +176,7 @@ void PatchTopology::link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t 
   links_.push_back(EdgeLink{patch_a, edge_a, patch_b, edge_b, reversed});
 }
 
-PatchTopology PatchTopology::fromCoincidentEdges(const std::vector<BezierPatch>& patches,
-                                                   double tolerance) {
+PatchTopology PatchTopology::fromCoincidentEdges(const std::vector<BezierPatch>& patches, double tolerance) {
   if (!(tolerance >= 0.0)) {
     throw std::invalid_argument("PatchTopology::fromCoincidentEdges: tolerance must be >= 0");
   }
@@ -231,21 +245,19 @@ const BernsteinTable& Tessellator::boundaryTable(int level) {
 const BernsteinTable& Tessellator::interiorTable(int level) {
   if (interior_tables_.size() <= static_cast<std::size_t>(level)) interior_tables_.resize(level + 1);
   if (!interior_tables_[level]) {
-    interior_tables_[level] =
-        std::make_unique<BernsteinTable>(BernsteinTable::uniformInterior(level));
+    interior_tables_[level] = std::make_unique<BernsteinTable>(BernsteinTable::uniformInterior(level));
   }
   return *interior_tables_[level];
 }
 
 const TriangleMesh& Tessellator::tessellateUniform(const std::vector<BezierPatch>& patches,
-                                                    const PatchTopology& topology, int level) {
+                                                   const PatchTopology& topology, int level) {
   requested_levels_.assign(patches.size(), level);
   return tessellate(patches, topology, requested_levels_);
 }
 
 const TriangleMesh& Tessellator::tessellateToError(const std::vector<BezierPatch>& patches,
-                                                     const PatchTopology& topology,
-                                                     double max_error, int max_level) {
+                                                   const PatchTopology& topology, double max_error, int max_level) {
   requested_levels_.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
     requested_levels_[p] = levelForGeometricError(patches[p], max_error, max_level);
@@ -254,15 +266,13 @@ const TriangleMesh& Tessellator::tessellateToError(const std::vector<BezierPatch
 }
 
 const TriangleMesh& Tessellator::tessellateForCamera(const std::vector<BezierPatch>& patches,
-                                                       const PatchTopology& topology,
-                                                       const CameraView& camera,
-                                                       double max_error_pixels, int max_level) {
+                                                     const PatchTopology& topology, const CameraView& camera,
+                                                     double max_error_pixels, int max_level) {
   levelsForScreenError(patches, camera, max_error_pixels, max_level, requested_levels_);
   return tessellate(patches, topology, requested_levels_);
 }
 
-const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patches,
-                                            const PatchTopology& topology,
+const TriangleMesh& Tessellator::tessellate(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
                                             const std::vector<int>& levels) {
   prepareLayout(patches, topology, levels);
   evaluateVertices(patches);
@@ -284,9 +294,8 @@ void Tessellator::prepareLayout(const std::vector<BezierPatch>& patches, const P
   }
   for (std::size_t p = 0; p < levels.size(); ++p) {
     if (levels[p] < 1 || levels[p] > kMaxLevel) {
-      throw std::invalid_argument("Tessellator: level " + std::to_string(levels[p]) + " of patch " +
-                                  std::to_string(p) + " is outside [1, " +
-                                  std::to_string(kMaxLevel) + "]");
+      throw std::invalid_argument("Tessellator: level " + std::to_string(levels[p]) + " of patch " + std::to_string(p) +
+                                  " is outside [1, " + std::to_string(kMaxLevel) + "]");
     }
   }
   for (const EdgeLink& link : topology.links()) {
@@ -295,10 +304,9 @@ void Tessellator::prepareLayout(const std::vector<BezierPatch>& patches, const P
     const double tolerance = kLinkMismatchRelative * std::max(a.scale(), b.scale());
     if (!linkedEdgesCoincide(a, link.edge_a, b, link.edge_b, link.reversed, tolerance)) {
       std::ostringstream message;
-      message << "Tessellator: edge " << edgeName(link.edge_a) << " of patch " << link.patch_a
-              << " and edge " << edgeName(link.edge_b) << " of patch " << link.patch_b
-              << " are linked" << (link.reversed ? " (reversed)" : "")
-              << " but their control points differ by more than " << tolerance;
+      message << "Tessellator: edge " << edgeName(link.edge_a) << " of patch " << link.patch_a << " and edge "
+              << edgeName(link.edge_b) << " of patch " << link.patch_b << " are linked"
+              << (link.reversed ? " (reversed)" : "") << " but their control points differ by more than " << tolerance;
       throw std::invalid_argument(message.str());
     }
   }
@@ -315,9 +323,7 @@ void Tessellator::prepareLayout(const std::vector<BezierPatch>& patches, const P
   }
 }
 
-bool Tessellator::layoutMatches(const PatchTopology& topology) const {
-  return layout_links_ == topology.links();
-}
+bool Tessellator::layoutMatches(const PatchTopology& topology) const { return layout_links_ == topology.links(); }
 
 // Boundary slots: point k (counter-clockwise) of edge e of patch p; corners appear twice. Slots
 // that are one point (a corner of two edges, a collapsed edge, two linked edges) are united.
@@ -329,8 +335,7 @@ struct Tessellator::BoundarySlots {
   }
 };
 
-void Tessellator::buildLayout(const std::vector<BezierPatch>& patches,
-                               const PatchTopology& topology) {
+void Tessellator::buildLayout(const std::vector<BezierPatch>& patches, const PatchTopology& topology) {
   layout_patch_count_ = patches.size();
   layout_links_ = topology.links();
   layout_collapsed_edges_ = collapsed_edges_;
@@ -354,8 +359,7 @@ std::vector<int> Tessellator::sharedEdgeLevels() const {
     for (int e = 0; e < 4; ++e) edge_level[4 * p + e] = layout_requested_levels_[p];
   }
   for (const EdgeLink& link : layout_links_) {
-    const int shared = std::max(layout_requested_levels_[link.patch_a],
-                                layout_requested_levels_[link.patch_b]);
+    const int shared = std::max(layout_requested_levels_[link.patch_a], layout_requested_levels_[link.patch_b]);
     edge_level[4 * link.patch_a + edgeIndex(link.edge_a)] = shared;
     edge_level[4 * link.patch_b + edgeIndex(link.edge_b)] = shared;
   }
@@ -449,9 +453,9 @@ std::vector<std::uint32_t> Tessellator::numberVertices(const std::vector<int>& e
             if (t == 1.0) return &table.weights(m);
             return &table.weights(runsAgainstParameter(e) ? m - k : k);
           };
-          owned_boundary_vertices_.push_back(OwnedBoundaryVertex{
-              root_vertex[root], static_cast<std::uint32_t>(p), uv.x(), uv.y(), weights_of(uv.x()),
-              weights_of(uv.y())});
+          owned_boundary_vertices_.push_back(OwnedBoundaryVertex{root_vertex[root], static_cast<std::uint32_t>(p),
+                                                                 uv.x(), uv.y(), weights_of(uv.x()),
+                                                                 weights_of(uv.y())});
           mesh_.uv.emplace_back(uv.cast<float>());
           mesh_.vertex_patch.push_back(static_cast<std::uint32_t>(p));
         }
@@ -518,10 +522,14 @@ void Tessellator::buildTriangles(const std::vector<int>& edge_level, const Bound
       const int m = edge_level[4 * p + e];
       auto inner = [&](int k) {  // k-th inner-ring vertex facing edge e, counter-clockwise
         switch (e) {
-          case 0: return interior(1 + k, 1);
-          case 1: return interior(n - 1, 1 + k);
-          case 2: return interior(n - 1 - k, n - 1);
-          default: return interior(1, n - 1 - k);
+          case 0:
+            return interior(1 + k, 1);
+          case 1:
+            return interior(n - 1, 1 + k);
+          case 2:
+            return interior(n - 1 - k, n - 1);
+          default:
+            return interior(1, n - 1 - k);
         }
       };
       int outer_k = 0;
@@ -529,9 +537,8 @@ void Tessellator::buildTriangles(const std::vector<int>& edge_level, const Bound
       const int inner_last = n - 2;
       while (outer_k < m || inner_k < inner_last) {
         // Next outer parameter (outer_k+1)/m against next inner (inner_k+2)/n, in integers.
-        const bool advance_outer =
-            inner_k == inner_last ||
-            (outer_k < m && static_cast<long>(outer_k + 1) * n <= static_cast<long>(inner_k + 2) * m);
+        const bool advance_outer = inner_k == inner_last || (outer_k < m && static_cast<long>(outer_k + 1) * n <=
+                                                                                static_cast<long>(inner_k + 2) * m);
         if (advance_outer) {
           emit(boundary(e, outer_k), boundary(e, outer_k + 1), inner(inner_k));
           ++outer_k;
@@ -550,13 +557,11 @@ void Tessellator::evaluateVertices(const std::vector<BezierPatch>& patches) {
     if (layout.level < 2) continue;
     const std::uint32_t first = layout.interior_first_vertex;
     patches[p].evaluateGrid(*layout.interior, *layout.interior,
-                             SurfaceSampleArrays{&mesh_.positions[first], &mesh_.normals[first],
-                                                 &mesh_.tangents_u[first],
-                                                 &mesh_.tangents_v[first]});
+                            SurfaceSampleArrays{&mesh_.positions[first], &mesh_.normals[first],
+                                                &mesh_.tangents_u[first], &mesh_.tangents_v[first]});
   }
   for (const OwnedBoundaryVertex& owned : owned_boundary_vertices_) {
-    const PatchSample sample =
-        patches[owned.patch].sample(*owned.u_weights, owned.u, *owned.v_weights, owned.v);
+    const PatchSample sample = patches[owned.patch].sample(*owned.u_weights, owned.u, *owned.v_weights, owned.v);
     mesh_.positions[owned.vertex] = sample.position.cast<float>();
     mesh_.normals[owned.vertex] = sample.normal.cast<float>();
     mesh_.tangents_u[owned.vertex] = sample.d_du.cast<float>();

@@ -29,24 +29,27 @@ double errorBoundConstant(const BezierPatch& patch) {
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 2; ++i) {
       const double* q = p + 12 * j + 3 * i;
-      second_u = std::max(second_u, squared(q[6] - 2.0 * q[3] + q[0], q[7] - 2.0 * q[4] + q[1], q[8] - 2.0 * q[5] + q[2]));
+      second_u =
+          std::max(second_u, squared(q[6] - 2.0 * q[3] + q[0], q[7] - 2.0 * q[4] + q[1], q[8] - 2.0 * q[5] + q[2]));
     }
   }
   for (int j = 0; j < 2; ++j) {
     for (int i = 0; i < 4; ++i) {
       const double* q = p + 12 * j + 3 * i;
-      second_v = std::max(second_v, squared(q[24] - 2.0 * q[12] + q[0], q[25] - 2.0 * q[13] + q[1], q[26] - 2.0 * q[14] + q[2]));
+      second_v = std::max(second_v,
+                          squared(q[24] - 2.0 * q[12] + q[0], q[25] - 2.0 * q[13] + q[1], q[26] - 2.0 * q[14] + q[2]));
     }
   }
   for (int j = 0; j < 3; ++j) {
     for (int i = 0; i < 3; ++i) {
       const double* q = p + 12 * j + 3 * i;
-      twist = std::max(twist, squared(q[15] - q[12] - q[3] + q[0], q[16] - q[13] - q[4] + q[1], q[17] - q[14] - q[5] + q[2]));
+      twist = std::max(twist,
+                       squared(q[15] - q[12] - q[3] + q[0], q[16] - q[13] - q[4] + q[1], q[17] - q[14] - q[5] + q[2]));
     }
   }
   const double bound_uu = 6.0 * std::sqrt(second_u);  // sup |F_uu|: F_uu is a Bezier patch on 6 * second differences
   const double bound_vv = 6.0 * std::sqrt(second_v);
-  const double bound_uv = 9.0 * std::sqrt(twist);     // sup |F_uv|: F_uv is a Bezier patch on 9 * twists
+  const double bound_uv = 9.0 * std::sqrt(twist);  // sup |F_uv|: F_uv is a Bezier patch on 9 * twists
   return (bound_uu + 2.0 * bound_uv + bound_vv) / 8.0;
 }
 
@@ -61,9 +64,8 @@ int smallestLevelFor(double constant, double allowed, int max_level) {
 
 void requireLevelLimit(int max_level) {
   if (max_level < 1 || max_level > Tessellator::kMaxLevel) {
-    throw std::invalid_argument("tessellation max_level must be in [1, " +
-                                std::to_string(Tessellator::kMaxLevel) + "], got " +
-                                std::to_string(max_level));
+    throw std::invalid_argument("tessellation max_level must be in [1, " + std::to_string(Tessellator::kMaxLevel) +
+                                "], got " + std::to_string(max_level));
   }
 }
 
@@ -94,9 +96,8 @@ namespace {
 // Pixels per metre of error at distance 1 (the focal length in pixels), after checking the query.
 double focalPixels(const CameraView& camera, double max_error_pixels, int max_level) {
   requireLevelLimit(max_level);
-  if (!camera.position.allFinite() || !(camera.vertical_fov_radians > 0.0) ||
-      !(camera.vertical_fov_radians < M_PI) || !(camera.viewport_height_pixels > 0.0) ||
-      !std::isfinite(camera.viewport_height_pixels)) {
+  if (!camera.position.allFinite() || !(camera.vertical_fov_radians > 0.0) || !(camera.vertical_fov_radians < M_PI) ||
+      !(camera.viewport_height_pixels > 0.0) || !std::isfinite(camera.viewport_height_pixels)) {
     throw std::invalid_argument(
         "levelForScreenError: camera needs a finite position, 0 < fov < pi and a viewport "
         "height > 0");
@@ -124,21 +125,19 @@ double distanceToPatchBounds(const BezierPatch& patch, const Eigen::Vector3d& ey
   return (eye.cwiseMax(patch.boundingBoxMin()).cwiseMin(patch.boundingBoxMax()) - eye).norm();
 }
 
-int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
-                           double max_error_pixels, int max_level) {
+int levelForScreenError(const BezierPatch& patch, const CameraView& camera, double max_error_pixels, int max_level) {
   const double focal = focalPixels(camera, max_error_pixels, max_level);
   return screenErrorLevel(patch, camera.position, max_error_pixels / focal, max_level);
 }
 
-void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
-                          double max_error_pixels, int max_level, std::vector<int>& levels) {
+void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera, double max_error_pixels,
+                          int max_level, std::vector<int>& levels) {
   const double error_per_distance = max_error_pixels / focalPixels(camera, max_error_pixels, max_level);
   levels.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
     levels[p] = screenErrorLevel(patches[p], camera.position, error_per_distance, max_level);
   }
 }
-
 
 // ------------------------------------------------------------------------- measured, calibrated
 
@@ -153,7 +152,9 @@ double measuredTessellationError(const BezierPatch& patch, int level) {
           patch.position(static_cast<double>(i) / (samples - 1), static_cast<double>(j) / (samples - 1));
     }
   }
-  const auto at = [&](int i, int j) -> const Eigen::Vector3d& { return grid[static_cast<std::size_t>(j) * samples + i]; };
+  const auto at = [&](int i, int j) -> const Eigen::Vector3d& {
+    return grid[static_cast<std::size_t>(j) * samples + i];
+  };
   double worst = 0.0;
   for (int cj = 0; cj < level; ++cj) {
     for (int ci = 0; ci < level; ++ci) {
@@ -232,8 +233,9 @@ void CalibratedErrorBound::levelsForScreenError(const std::vector<BezierPatch>& 
   levels.resize(patches.size());
   for (std::size_t p = 0; p < patches.size(); ++p) {
     const double distance = distanceToPatchBounds(patches[p], camera.position);
-    levels[p] = distance > 0.0 ? smallestLevel(p, errorBoundConstant(patches[p]), error_per_distance * distance, max_level)
-                               : max_level;
+    levels[p] = distance > 0.0
+                    ? smallestLevel(p, errorBoundConstant(patches[p]), error_per_distance * distance, max_level)
+                    : max_level;
   }
 }
 

@@ -18,21 +18,28 @@ const std::vector<std::pair<std::string, std::string>> kShapeGroups{
 }  // namespace
 
 BodyProperties::BodyProperties(rviz::Property* parent) {
-  description_ = notifying(new rviz::StringProperty(
-      "Robot Description", "robot_description",
-      "Parameter holding the human's URDF (urdf/human.urdf, optionally with a _<id> suffix).", parent), this, &BodyProperties::descriptionChanged);
+  description_ =
+      notifying(new rviz::StringProperty(
+                    "Robot Description", "robot_description",
+                    "Parameter holding the human's URDF (urdf/human.urdf, optionally with a _<id> suffix).", parent),
+                this, &BodyProperties::descriptionChanged);
   const std::string package = ros::package::getPath("dressed_human");
-  body_file_ = notifying(new rviz::StringProperty(
-      "Body Description", QString::fromStdString(package + "/config/bodies/default.yaml"),
-      "YAML file with the skin's cross-sections and the body shape (Eq. 5).", parent), this, &BodyProperties::descriptionChanged);
-  skin_colour_ = notifying(new rviz::ColorProperty("Skin Colour", QColor(222, 184, 158), "Colour of the skin.", parent), this, &BodyProperties::skinColourChanged);
+  body_file_ = notifying(
+      new rviz::StringProperty("Body Description", QString::fromStdString(package + "/config/bodies/default.yaml"),
+                               "YAML file with the skin's cross-sections and the body shape (Eq. 5).", parent),
+      this, &BodyProperties::descriptionChanged);
+  skin_colour_ = notifying(new rviz::ColorProperty("Skin Colour", QColor(222, 184, 158), "Colour of the skin.", parent),
+                           this, &BodyProperties::skinColourChanged);
   shape_category_ = new rviz::Property(
-      "Body Shape", QVariant(), "Eq. 5 scale factors (a, b, c) = (x, y thickness, z length along the bone), "
+      "Body Shape", QVariant(),
+      "Eq. 5 scale factors (a, b, c) = (x, y thickness, z length along the bone), "
       "multiplying the body file's shape; lengths move the joints, so the TF skeleton's proportions change too.",
       parent);
   for (const auto& group : kShapeGroups) {
-    auto* property = notifying(new rviz::VectorProperty(QString::fromStdString(group.second), Ogre::Vector3(1.0f, 1.0f, 1.0f),
-                                              "(a, b, c) for this group, each in [0.2, 5].", shape_category_), this, &BodyProperties::shapeChanged);
+    auto* property =
+        notifying(new rviz::VectorProperty(QString::fromStdString(group.second), Ogre::Vector3(1.0f, 1.0f, 1.0f),
+                                           "(a, b, c) for this group, each in [0.2, 5].", shape_category_),
+                  this, &BodyProperties::shapeChanged);
     shape_groups_.emplace_back(group.first, property);
   }
 }

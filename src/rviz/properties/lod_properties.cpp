@@ -23,9 +23,9 @@ constexpr double kUnattachedViewportPixels = 1000.0;
 }  // namespace
 
 LodProperties::LodProperties(rviz::Property* parent) {
-  mode_ = new rviz::EnumProperty(
-      "Level of Detail", "Automatic",
-      "Automatic: tessellation follows the human's size on screen. Fixed: the level below.", parent);
+  mode_ = new rviz::EnumProperty("Level of Detail", "Automatic",
+                                 "Automatic: tessellation follows the human's size on screen. Fixed: the level below.",
+                                 parent);
   mode_->addOption("Automatic", kAutomatic);
   mode_->addOption("Fixed", kFixed);
   level_ = new rviz::IntProperty("Tessellation Level", 6, "Fixed level: each patch is cut n x n (1-32).", parent);
@@ -34,13 +34,15 @@ LodProperties::LodProperties(rviz::Property* parent) {
   max_error_pixels_ =
       new rviz::FloatProperty("Max Screen Error", 1.0, "Automatic level: largest geometric error in pixels.", parent);
   max_error_pixels_->setMin(0.1);
-  vertex_evaluation_ = notifying(new rviz::EnumProperty(
-      "Vertex Evaluation", "Automatic",
-      "GPU: the vertex shader evaluates the Bezier patches from their control points; rviz's thread only poses "
-      "the control points. CPU: every vertex is evaluated and sent each frame. Automatic: GPU on a graphics card, "
-      "CPU on a software renderer (Mesa llvmpipe), whose vertex shader runs on one CPU thread. Displaced geometry "
-      "is always CPU.",
-      parent), this, &LodProperties::vertexEvaluationChanged);
+  vertex_evaluation_ = notifying(
+      new rviz::EnumProperty(
+          "Vertex Evaluation", "Automatic",
+          "GPU: the vertex shader evaluates the Bezier patches from their control points; rviz's thread only poses "
+          "the control points. CPU: every vertex is evaluated and sent each frame. Automatic: GPU on a graphics card, "
+          "CPU on a software renderer (Mesa llvmpipe), whose vertex shader runs on one CPU thread. Displaced geometry "
+          "is always CPU.",
+          parent),
+      this, &LodProperties::vertexEvaluationChanged);
   vertex_evaluation_->addOption("Automatic", kAutomaticVertices);
   vertex_evaluation_->addOption("GPU", kGpuVertices);
   vertex_evaluation_->addOption("CPU", kCpuVertices);
@@ -66,18 +68,21 @@ bool LodProperties::hideCovered() const { return hide_covered_->getBool(); }
 
 CameraView LodProperties::cameraView(const Ogre::Camera& camera) {
   const Ogre::Vector3 eye = camera.getDerivedPosition();
-  return CameraView{Eigen::Vector3d(eye.x, eye.y, eye.z), camera.getFOVy().valueRadians(),
-                    camera.getViewport() ? static_cast<double>(camera.getViewport()->getActualHeight())
-                                          : kUnattachedViewportPixels};
+  return CameraView{
+      Eigen::Vector3d(eye.x, eye.y, eye.z), camera.getFOVy().valueRadians(),
+      camera.getViewport() ? static_cast<double>(camera.getViewport()->getActualHeight()) : kUnattachedViewportPixels};
 }
 
 bool LodProperties::automatic() const { return mode_->getOptionInt() == kAutomatic; }
 
 VertexSource LodProperties::vertexSource() const {
   switch (vertex_evaluation_->getOptionInt()) {
-    case kGpuVertices: return VertexSource::kRenderer;
-    case kCpuVertices: return VertexSource::kCpu;
-    default: return VertexSource::kAutomatic;
+    case kGpuVertices:
+      return VertexSource::kRenderer;
+    case kCpuVertices:
+      return VertexSource::kCpu;
+    default:
+      return VertexSource::kAutomatic;
   }
 }
 

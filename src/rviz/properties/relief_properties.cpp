@@ -17,7 +17,8 @@ namespace {
 // A float property in [min, max] that asks for a new skin map.
 rviz::FloatProperty* skinFloat(const char* name, double value, const char* help, double min, double max,
                                rviz::Property* parent, ReliefProperties* group) {
-  auto* property = notifying(new rviz::FloatProperty(name, static_cast<float>(value), help, parent), group, &ReliefProperties::skinMapChanged);
+  auto* property = notifying(new rviz::FloatProperty(name, static_cast<float>(value), help, parent), group,
+                             &ReliefProperties::skinMapChanged);
   property->setMin(static_cast<float>(min));
   property->setMax(static_cast<float>(max));
   return property;
@@ -26,49 +27,58 @@ rviz::FloatProperty* skinFloat(const char* name, double value, const char* help,
 }  // namespace
 
 ReliefProperties::ReliefProperties(rviz::Property* parent) {
-  mode_ = notifying(new rviz::EnumProperty(
-      "Relief", "Bump mapping",
-      "Bump mapping: per-pixel normals from the relief maps. Displaced geometry: the relief heights move the "
-      "vertices of a finer mesh (the reference bump mapping approximates; costs far more). Flat: no relief.",
-      parent), this, &ReliefProperties::appearanceChanged);
+  mode_ = notifying(
+      new rviz::EnumProperty(
+          "Relief", "Bump mapping",
+          "Bump mapping: per-pixel normals from the relief maps. Displaced geometry: the relief heights move the "
+          "vertices of a finer mesh (the reference bump mapping approximates; costs far more). Flat: no relief.",
+          parent),
+      this, &ReliefProperties::appearanceChanged);
   mode_->addOption("Bump mapping", static_cast<int>(ReliefMode::kBumpMapping));
   mode_->addOption("Flat", static_cast<int>(ReliefMode::kFlat));
   mode_->addOption("Displaced geometry", static_cast<int>(ReliefMode::kDisplacedGeometry));
-  displacement_level_ = notifying(new rviz::IntProperty(
-      "Displacement Level", 24, "Displaced geometry: each patch is cut n x n, whatever the level of detail (4-32).",
-      mode_), this, &ReliefProperties::appearanceChanged);
+  displacement_level_ = notifying(
+      new rviz::IntProperty("Displacement Level", 24,
+                            "Displaced geometry: each patch is cut n x n, whatever the level of detail (4-32).", mode_),
+      this, &ReliefProperties::appearanceChanged);
   displacement_level_->setMin(4);
   displacement_level_->setMax(Tessellator::kMaxLevel);
-  skin_strength_ = notifying(new rviz::FloatProperty("Skin Relief Strength", 1.0, "Scales the relief's normal tilt.", parent), this, &ReliefProperties::appearanceChanged);
+  skin_strength_ =
+      notifying(new rviz::FloatProperty("Skin Relief Strength", 1.0, "Scales the relief's normal tilt.", parent), this,
+                &ReliefProperties::appearanceChanged);
   skin_strength_->setMin(0.0);
   skin_strength_->setMax(5.0);
-  wrinkle_strength_ = notifying(new rviz::FloatProperty("Wrinkle Strength", 0.6, "Scales the garments' buckling-wrinkle relief.",
-                                              parent), this, &ReliefProperties::appearanceChanged);
+  wrinkle_strength_ = notifying(
+      new rviz::FloatProperty("Wrinkle Strength", 0.6, "Scales the garments' buckling-wrinkle relief.", parent), this,
+      &ReliefProperties::appearanceChanged);
   wrinkle_strength_->setMin(0.0);
   wrinkle_strength_->setMax(5.0);
-  levels_ = notifying(new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", parent), this, &ReliefProperties::skinMapChanged);
+  levels_ = notifying(new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", parent), this,
+                      &ReliefProperties::skinMapChanged);
   levels_->setMin(1);
   levels_->setMax(3);
   cell_size_ = skinFloat("Skin Cell Size", 1.0 / 12.0, "Level-1 cell spacing as a fraction of the relief tile.", 0.01,
                          1.0, parent, this);
-  seed_ = notifying(new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", parent), this, &ReliefProperties::skinMapChanged);
+  seed_ = notifying(new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", parent), this,
+                    &ReliefProperties::skinMapChanged);
   seed_->setMin(0);
   const SkinReliefParameters defaults;
   direction_ = skinFloat("Skin Direction", 0.0,
                          "Degrees from the patch's u axis (along the limb) that the cells are stretched along.", -180.0,
                          180.0, parent, this);
-  stretch_ = skinFloat("Skin Stretch", defaults.direction_stretch,
-                       "Directionality: cell elongation along Skin Direction (1 = none, up to 4).", 1.0, 4.0, parent, this);
+  stretch_ =
+      skinFloat("Skin Stretch", defaults.direction_stretch,
+                "Directionality: cell elongation along Skin Direction (1 = none, up to 4).", 1.0, 4.0, parent, this);
   wobble_ = skinFloat("Skin Wobble", defaults.wobble,
                       "Midpoint displacement of the cell walls, as a fraction of the wall length (0-0.3).", 0.0, 0.3,
                       parent, this);
   jitter_ = skinFloat("Skin Jitter", defaults.jitter,
-                      "Random seed displacement, as a fraction of the cell spacing (0 = hexagons, up to 0.5).", 0.0, 0.5,
-                      parent, this);
+                      "Random seed displacement, as a fraction of the cell spacing (0 = hexagons, up to 0.5).", 0.0,
+                      0.5, parent, this);
   slope_ = skinFloat("Skin Slope", 3.0,  // SkinReliefParameters' default profile
                      "Steepness of the cell cross-section at its wall (0.5-10).", 0.5, 10.0, parent, this);
-  roundness_ = skinFloat("Skin Roundness", defaults.roundness, "0: polygonal cell contours, 1: round.", 0.0, 1.0,
-                         parent, this);
+  roundness_ =
+      skinFloat("Skin Roundness", defaults.roundness, "0: polygonal cell contours, 1: round.", 0.0, 1.0, parent, this);
 }
 
 ReliefMode ReliefProperties::mode() const { return static_cast<ReliefMode>(mode_->getOptionInt()); }
@@ -84,8 +94,10 @@ void ReliefProperties::loadRenamedKeys(const rviz::Config& config, const std::st
   if (!config.mapGetFloat("Relief Strength", &strength)) return;
   const bool renamed = config.mapGetChild("Skin Relief Strength").isValid();
   if (!renamed) skin_strength_->setFloat(strength);
-  ROS_WARN_NAMED("dressed_human", "DressedHuman display '%s': the configuration's 'Relief Strength' is deprecated%s; "
-                 "it is now 'Skin Relief Strength'", display.c_str(), renamed ? " (ignored)" : "");
+  ROS_WARN_NAMED("dressed_human",
+                 "DressedHuman display '%s': the configuration's 'Relief Strength' is deprecated%s; "
+                 "it is now 'Skin Relief Strength'",
+                 display.c_str(), renamed ? " (ignored)" : "");
 }
 
 SkinReliefParameters ReliefProperties::skinParameters() const {

@@ -86,8 +86,7 @@ class Garment {
   static constexpr double kShortestPantsLeg = 1e-6;
 
   // Throws GarmentError if the description does not fit the skeleton.
-  Garment(const GarmentDescription& description, const Skeleton& skeleton,
-          const BodyShape& shape = BodyShape());
+  Garment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape = BodyShape());
 
   void pose(const SkeletonPose& pose) { net_.pose(pose); }
 

@@ -50,10 +50,10 @@ struct ShapeAttachment {
 
 struct ControlPointRule {
   ControlPointKind kind = ControlPointKind::kShape;
-  ShapeAttachment attachment;               // kShape only
-  std::array<std::uint32_t, 2> sources{};   // midpoints: the two averaged; projection: point, plane point
-  int plane_frame = kRootFrame;             // kTangentProjection: the plane's normal is this frame's z
-  std::string piece;                        // "torso", "l_sleeve", "skirt", "l_leg", ...
+  ShapeAttachment attachment;              // kShape only
+  std::array<std::uint32_t, 2> sources{};  // midpoints: the two averaged; projection: point, plane point
+  int plane_frame = kRootFrame;            // kTangentProjection: the plane's normal is this frame's z
+  std::string piece;                       // "torso", "l_sleeve", "skirt", "l_leg", ...
 };
 
 class GarmentControlNet {

@@ -47,12 +47,12 @@ struct GarmentDescription {
   std::string name;
   GarmentType type = GarmentType::kSkirt;
   Eigen::Vector3d colour = Eigen::Vector3d(0.6, 0.6, 0.6);  // RGB in [0, 1]
-  double ease = 0.0;                // metres added to every ring's radii (clearance over skin)
-  std::vector<GarmentRing> rows;    // explicit shape rows, top to bottom (count per type below)
-  std::vector<GarmentRing> sleeve;  // left sleeve rows, shoulder to cuff (4, or none)
-  GarmentLegs legs;                 // skirt, pants, one_piece
-  std::string crotch_frame = "body";                      // pants
-  Eigen::Vector3d crotch = Eigen::Vector3d(0, 0, -0.12);  // pants: where the legs part
+  double ease = 0.0;                                        // metres added to every ring's radii (clearance over skin)
+  std::vector<GarmentRing> rows;                            // explicit shape rows, top to bottom (count per type below)
+  std::vector<GarmentRing> sleeve;                          // left sleeve rows, shoulder to cuff (4, or none)
+  GarmentLegs legs;                                         // skirt, pants, one_piece
+  std::string crotch_frame = "body";                        // pants
+  Eigen::Vector3d crotch = Eigen::Vector3d(0, 0, -0.12);    // pants: where the legs part
   // pants: semi-axes (toward the front, toward the left) of the crotch's twist ring: the eight
   // shape points around the crotch, in the crotch frame's xy plane (its tangent plane; garment.h).
   // crotch_radius places the 4 twist points of the hips patches, crotch_leg_radius those of the

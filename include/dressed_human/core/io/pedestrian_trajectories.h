@@ -54,8 +54,8 @@ struct PersonTrajectory {
 
 struct PedestrianTrajectories {
   TrajectoryFormat format = TrajectoryFormat::kAuto;  // the one read (never kAuto)
-  double sample_rate = 0.0;        // Hz: samples (frame steps) per second
-  std::int64_t first_frame = 0;    // the file's frame numbers
+  double sample_rate = 0.0;                           // Hz: samples (frame steps) per second
+  std::int64_t first_frame = 0;                       // the file's frame numbers
   std::int64_t last_frame = 0;
   std::int64_t frame_step = 1;
   std::vector<PersonTrajectory> people;  // by id

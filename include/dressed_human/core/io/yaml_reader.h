@@ -28,7 +28,8 @@ class YamlReader {
       document = YAML::Load(text);
     } catch (const YAML::ParserException& error) {
       std::ostringstream message;
-      message << source_ << ':' << error.mark.line + 1 << ':' << error.mark.column + 1 << ": not valid YAML: " << error.msg;
+      message << source_ << ':' << error.mark.line + 1 << ':' << error.mark.column + 1
+              << ": not valid YAML: " << error.msg;
       throw Error(message.str());
     }
     if (!document || document.IsNull()) throw Error(source_ + ": " + what + " is empty");
@@ -48,9 +49,9 @@ class YamlReader {
         if (entry.first.IsScalar()) {
           const auto first = seen.emplace(name, entry.first.Mark());
           if (!first.second) {
-            fail(entry.first, child_key, "the key appears twice (first at line " +
-                                             std::to_string(first.first->second.line + 1) +
-                                             "); YAML does not allow a repeated key");
+            fail(entry.first, child_key,
+                 "the key appears twice (first at line " + std::to_string(first.first->second.line + 1) +
+                     "); YAML does not allow a repeated key");
           }
         }
         rejectDuplicateKeys(entry.second, child_key);
@@ -145,16 +146,23 @@ class YamlReader {
 
   static std::string describe(const YAML::Node& node) {
     switch (node.Type()) {
-      case YAML::NodeType::Null: return "nothing (null)";
-      case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
-      case YAML::NodeType::Sequence: return "a list of " + std::to_string(node.size());
-      case YAML::NodeType::Map: return "a mapping";
-      default: return "an undefined value";
+      case YAML::NodeType::Null:
+        return "nothing (null)";
+      case YAML::NodeType::Scalar:
+        return "'" + node.Scalar() + "'";
+      case YAML::NodeType::Sequence:
+        return "a list of " + std::to_string(node.size());
+      case YAML::NodeType::Map:
+        return "a mapping";
+      default:
+        return "an undefined value";
     }
   }
 
  private:
-  static std::string join(const std::string& key, const std::string& name) { return key.empty() ? name : key + "." + name; }
+  static std::string join(const std::string& key, const std::string& name) {
+    return key.empty() ? name : key + "." + name;
+  }
 
   std::string source_;
 };

@@ -20,7 +20,8 @@ class LegIk {
 
  private:
   // The joint angles (y, x, z) that give `bone` the world rotation `wanted` in `pose`.
-  void setJointRotation(std::size_t bone, const Eigen::Quaterniond& wanted, JointAngles& angles, const SkeletonPose& pose) const;
+  void setJointRotation(std::size_t bone, const Eigen::Quaterniond& wanted, JointAngles& angles,
+                        const SkeletonPose& pose) const;
 
   const ForwardKinematics& kinematics_;
   std::array<std::array<std::size_t, 3>, 2> bones_{};  // thigh, shank, foot per side

@@ -25,10 +25,10 @@ struct TrackObservation {
 };
 
 struct PersonTrackSettings {
-  double smoothing = 0.4;          // s: half the window a position is fitted over (0: interpolation only)
-  double max_jump = 1.0;           // m from where the track was heading: further is a new place
-  double max_speed = 3.0;          // m/s between samples (over more than kMinJumpDistance): faster is a new place
-  double max_prediction = 1.0;     // s read past the newest sample (an occluded or late track)
+  double smoothing = 0.4;       // s: half the window a position is fitted over (0: interpolation only)
+  double max_jump = 1.0;        // m from where the track was heading: further is a new place
+  double max_speed = 3.0;       // m/s between samples (over more than kMinJumpDistance): faster is a new place
+  double max_prediction = 1.0;  // s read past the newest sample (an occluded or late track)
   static constexpr double kMinJumpDistance = 0.3;  // m: jitter between close samples is no jump
   static constexpr double kKeptSeconds = 3.0;      // s of samples kept
 };

@@ -19,7 +19,7 @@ namespace dressed_human {
 
 class PlantedFeet {
  public:
-  static constexpr std::size_t kPointsPerFoot = 3;  // heel (under the ankle), mid-foot, toe
+  static constexpr std::size_t kPointsPerFoot = 3;                // heel (under the ankle), mid-foot, toe
   static constexpr std::size_t kPointCount = 2 * kPointsPerFoot;  // left foot first
 
   // The foot bones (l_ankle, r_ankle) of `skeleton` with `shape` applied.
@@ -49,23 +49,23 @@ class PlantedFeet {
   // Once the held foot lifts, the hold fades over this long (in the air: no slide, no pop).
   static constexpr double kReleaseTime = 0.15;  // s
   // A foot near the ground moving faster than this (or than the walk) is swinging, not landing.
-  static constexpr double kLandingSpeed = 0.5;  // m/s
+  static constexpr double kLandingSpeed = 0.5;      // m/s
   static constexpr double kSwingClearance = 0.008;  // m: a swinging foot passes at least this high
   void setWalkingSpeed(double speed) { walking_speed_ = speed; }
 
  private:
-  std::array<int, 2> foot_bone_{};                                   // left, right
-  std::array<Eigen::Vector3d, kPointCount> in_foot_{};               // in the foot bone's frame
-  std::array<Eigen::Vector3d, kPointCount> relative_{};              // scratch: relative to the root
+  std::array<int, 2> foot_bone_{};                       // left, right
+  std::array<Eigen::Vector3d, kPointCount> in_foot_{};   // in the foot bone's frame
+  std::array<Eigen::Vector3d, kPointCount> relative_{};  // scratch: relative to the root
   bool anchored_ = false;
   std::size_t anchor_ = 0;
   Eigen::Vector2d anchor_xy_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d start_xy_ = Eigen::Vector2d::Zero();
   void holdOtherFoot(const Eigen::Vector3d& root, double dt);
-  bool held_ = false;                       // the other foot is held at held_xy_
+  bool held_ = false;  // the other foot is held at held_xy_
   std::size_t held_point_ = 0;
   Eigen::Vector2d held_xy_ = Eigen::Vector2d::Zero();
-  double release_ = 0.0;                    // 1 while held, fading to 0 after lift-off
+  double release_ = 0.0;  // 1 while held, fading to 0 after lift-off
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d last_low_xy_ = Eigen::Vector2d::Zero();
   double walking_speed_ = 0.0;

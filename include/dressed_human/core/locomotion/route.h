@@ -38,12 +38,12 @@ void validateRoute(const Route& route, const std::string& what);
 Route defaultLoop(const Eigen::Vector2d& centre, double yaw);
 
 struct RouteFollowerSettings {
-  double max_turn_rate = 2.0;         // rad/s: a walking person turns 90 degrees in under a step
-  double lookahead_time = 0.35;       // s of walking ahead on the route the heading aims at...
-  double min_lookahead = 0.3;         // m ... but never nearer than this
-  double corner_radius = 0.4;         // m: sharp corners are walked at max_turn_rate * corner_radius
-  double deceleration = 1.0;          // m/s^2 when slowing for a corner or the end
-  double arrival_distance = 0.05;     // m from an open route's last waypoint (or past it): arrived
+  double max_turn_rate = 2.0;      // rad/s: a walking person turns 90 degrees in under a step
+  double lookahead_time = 0.35;    // s of walking ahead on the route the heading aims at...
+  double min_lookahead = 0.3;      // m ... but never nearer than this
+  double corner_radius = 0.4;      // m: sharp corners are walked at max_turn_rate * corner_radius
+  double deceleration = 1.0;       // m/s^2 when slowing for a corner or the end
+  double arrival_distance = 0.05;  // m from an open route's last waypoint (or past it): arrived
 };
 
 class RouteFollower {
@@ -56,16 +56,16 @@ class RouteFollower {
   const Route& route() const { return route_; }
 
   struct Steering {
-    double turn_rate = 0.0;     // rad/s, within max_turn_rate
-    double speed_limit = 0.0;   // m/s: at most this fast here (corners, arrival)
+    double turn_rate = 0.0;    // rad/s, within max_turn_rate
+    double speed_limit = 0.0;  // m/s: at most this fast here (corners, arrival)
   };
   // The steering at `position` with `heading` (rad) when walking at `speed`; advances past the
   // waypoints reached. Allocation-free.
   Steering steer(const Eigen::Vector2d& position, double heading, double speed);
 
-  bool arrived() const { return arrived_; }          // an open route's end reached
-  std::size_t target() const { return target_; }     // index of the waypoint walked toward
-  std::size_t laps() const { return laps_; }         // closed routes: times waypoint 0 was passed again
+  bool arrived() const { return arrived_; }       // an open route's end reached
+  std::size_t target() const { return target_; }  // index of the waypoint walked toward
+  std::size_t laps() const { return laps_; }      // closed routes: times waypoint 0 was passed again
 
  private:
   const Eigen::Vector2d& waypoint(std::size_t i) const { return route_.waypoints[i % route_.waypoints.size()]; }

@@ -41,8 +41,8 @@ class SpeedGait {
   double cycleRate(double speed) const;
   double slowestSpeed() const { return knots_.front().speed; }
   double fastestSpeed() const { return knots_.back().speed; }
-  double legLength() const { return leg_length_; }         // hip joint to the ground, standing
-  double walkSpeed() const { return walk_speed_; }         // the fitted walk's own
+  double legLength() const { return leg_length_; }             // hip joint to the ground, standing
+  double walkSpeed() const { return walk_speed_; }             // the fitted walk's own
   double leftHeelStrike() const { return left_heel_strike_; }  // cycles
   const JointAngles& standing() const { return standing_; }
 
@@ -52,7 +52,7 @@ class SpeedGait {
   double measuredStride(double speed);  // m per cycle, planted feet
 
   std::shared_ptr<const ForwardKinematics> kinematics_;  // shared by copies
-  std::vector<MotionEvaluator> gaits_;  // one per knot
+  std::vector<MotionEvaluator> gaits_;                   // one per knot
   std::vector<Knot> knots_;
   std::vector<std::pair<double, double>> strides_;  // (speed, measured stride), finer than the knots
   // Per side (left, right) the angle index of each kSagittalCurves DOF and the sign that turns

@@ -76,10 +76,10 @@ class TrackedCrowd {
     std::unique_ptr<Walker> walker;
     JointAngles angles{};
     SkeletonPose pose;
-    bool posed = false;            // advanced at least once (pose valid)
-    bool ended = false;            // absent from a message, or occluded too long
-    bool moving = false;           // the heading follows the track (hysteresis)
-    bool place = true;             // the walker is put where the track is (new, or jumped)
+    bool posed = false;   // advanced at least once (pose valid)
+    bool ended = false;   // absent from a message, or occluded too long
+    bool moving = false;  // the heading follows the track (hysteresis)
+    bool place = true;    // the walker is put where the track is (new, or jumped)
   };
   // By id; only humans posed at least once are drawn (Human::posed: the render time has reached
   // the track's first sample).

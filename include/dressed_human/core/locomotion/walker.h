@@ -15,9 +15,9 @@ namespace dressed_human {
 
 struct WalkerSettings {
   RouteFollowerSettings route;
-  double acceleration = 1.5;   // m/s^2: from standing to a brisk walk within a step or two
-  double lean = 0.5;           // of the angle a rigid body would lean at (atan(v w / g))
-  double lean_time = 0.3;      // s: the lean follows the turn this smoothly
+  double acceleration = 1.5;                // m/s^2: from standing to a brisk walk within a step or two
+  double lean = 0.5;                        // of the angle a rigid body would lean at (atan(v w / g))
+  double lean_time = 0.3;                   // s: the lean follows the turn this smoothly
   static constexpr double kMaxSpeed = 3.0;  // m/s: faster is a run, which this gait is not
 };
 
@@ -68,7 +68,8 @@ class Walker {
   double lean_ = 0.0;
   double phase_ = 0.0;
   double walking_ = 0.0;
-  double stride_ = 0.0;  // of the gait's steps taken: 0 standing, 1 full steps (at a lower cadence below the slowest gait)
+  double stride_ =
+      0.0;  // of the gait's steps taken: 0 standing, 1 full steps (at a lower cadence below the slowest gait)
   double idle_time_ = 0.0;
   std::size_t waist_ = 0, torso_ = 0;  // angle indices of the idle sway
 };

@@ -14,12 +14,12 @@
 namespace dressed_human {
 
 struct CrowdWalk {
-  std::string id;          // frames body_<id>, ...
-  Route route;             // in the crowd's fixed frame
+  std::string id;                                   // frames body_<id>, ...
+  Route route;                                      // in the crowd's fixed frame
   Eigen::Vector2d start = Eigen::Vector2d::Zero();  // where it starts, facing the route's first waypoint
-  double speed = 1.2;      // m/s
-  double stature = 1.0;    // times the skeleton's size
-  double start_phase = 0;  // gait cycles
+  double speed = 1.2;                               // m/s
+  double stature = 1.0;                             // times the skeleton's size
+  double start_phase = 0;                           // gait cycles
   // Walks at `speed` without travelling, as on a treadmill: at the route's first waypoint,
   // facing its second (benchmarks keep every human in one place in view).
   bool treadmill = false;
@@ -35,7 +35,8 @@ std::vector<CrowdWalk> defaultCrowdWalks(std::size_t count);
 //   "3": {route: [[0, 0], [4, 0], [4, 3]], route_end: loop, speed: 1.1, stature: 1.05, start_phase: 0.3,
 //         treadmill: false}
 // each optional: a human without a route walks the default layout's loop of its place in the
-// file. A human with a route starts at its last waypoint (a loop) or its first (route_end stand). Throws CrowdFileError naming the file, line and key.
+// file. A human with a route starts at its last waypoint (a loop) or its first (route_end stand). Throws CrowdFileError
+// naming the file, line and key.
 std::vector<CrowdWalk> loadCrowdWalks(const std::string& path);
 
 }  // namespace dressed_human

@@ -24,12 +24,11 @@
 
 namespace dressed_human {
 
-
 struct SurfacePart {
   std::string name;
   ReliefKind relief;
-  Eigen::Vector4f colour;     // RGBA, 0..1
-  const TriangleMesh* mesh;   // owned by the HumanModel, valid until its next update()
+  Eigen::Vector4f colour;    // RGBA, 0..1
+  const TriangleMesh* mesh;  // owned by the HumanModel, valid until its next update()
   // The vertices and triangles to draw: `mesh`'s, with shared vertices split where the patches
   // meeting there give them different (u, v) (patch_corner_split.h): the relief texture is per
   // patch. Per-vertex data (positions, weights, ...) is read at `corners->source`.
@@ -55,8 +54,8 @@ struct SurfacePart {
   // itself and, for garments, the wrinkle strength from `inverse_rest_metric` and
   // `wrinkle_constants` (VertexCompression's formula). See VertexEvaluation.
   bool evaluated = true;
-  const std::vector<BezierPatch>* patches = nullptr;  // posed, in the world frame of update()
-  std::uint64_t layout_id = 0;                        // Tessellator::layoutId() of `mesh`
+  const std::vector<BezierPatch>* patches = nullptr;                  // posed, in the world frame of update()
+  std::uint64_t layout_id = 0;                                        // Tessellator::layoutId() of `mesh`
   const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex
   WrinkleStrengthConstants wrinkle_constants;
   // Encloses the posed part in the world frame of update(), whoever evaluates its vertices: the
@@ -73,7 +72,7 @@ struct SurfacePart {
 enum class VertexEvaluation { kCpu, kRenderer };
 
 struct LevelOfDetail {
-  bool automatic = false;      // true: from the camera's screen-space error; false: `level`
+  bool automatic = false;  // true: from the camera's screen-space error; false: `level`
   int level = Skin::kDefaultLevel;
   int max_level = 16;
   double max_error_pixels = 1.0;
@@ -94,8 +93,8 @@ std::vector<std::string> garmentFileNames(Outfit outfit);
 struct HumanModelSettings {
   Eigen::Vector4f skin_colour{0.87f, 0.72f, 0.62f, 1.0f};
   Outfit outfit = Outfit::kJacketSkirt;
-  std::string garment_directory;   // holds the outfit's garment YAML files
-  double skirt_length = -1.0;      // normalized c in [0, 1] (Eq. 8'); < 0: as the skirt file says
+  std::string garment_directory;  // holds the outfit's garment YAML files
+  double skirt_length = -1.0;     // normalized c in [0, 1] (Eq. 8'); < 0: as the skirt file says
   // Per garment file name ("jacket", "skirt", ...): RGBA replacing the file's colour.
   std::map<std::string, Eigen::Vector4f> garment_colours;
 };
@@ -169,13 +168,13 @@ class HumanModel {
   struct DressedGarment {
     DressedGarment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape);
     Garment garment;
-    std::unique_ptr<Tessellator> tessellator;  // by pointer: automatic_levels_ is keyed by it
-    std::vector<BezierPatch> rest_patches;     // built in the rest pose
+    std::unique_ptr<Tessellator> tessellator;                 // by pointer: automatic_levels_ is keyed by it
+    std::vector<BezierPatch> rest_patches;                    // built in the rest pose
     std::shared_ptr<const CalibratedErrorBound> error_bound;  // calibrated on rest_patches, shared
-    VertexCompression compression;             // the per-vertex compression measure
-    std::uint64_t compressed_layout = 0;       // Tessellator::layoutId() `compression` was prepared for
-    std::vector<float> wrinkle_weights;        // per vertex, last levels used
-    std::vector<Eigen::Vector2f> fold_axes;    // per vertex, last levels used
+    VertexCompression compression;                            // the per-vertex compression measure
+    std::uint64_t compressed_layout = 0;                      // Tessellator::layoutId() `compression` was prepared for
+    std::vector<float> wrinkle_weights;                       // per vertex, last levels used
+    std::vector<Eigen::Vector2f> fold_axes;                   // per vertex, last levels used
   };
   std::vector<DressedGarment> garments_;
   PerReliefKind<double> relief_tile_size_{0.0, 0.0};
@@ -200,7 +199,7 @@ class HumanModel {
     std::shared_ptr<const FoldTileMips> fold_mips;
     ReliefDisplacement settings;
   };
-  std::array<Displacement, 2> displacements_;  // by ReliefKind
+  std::array<Displacement, 2> displacements_;   // by ReliefKind
   std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced
   struct CornerSplit {
     PatchCornerSplit split;

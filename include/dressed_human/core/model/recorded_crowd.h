@@ -49,7 +49,7 @@ class RecordedCrowd {
  private:
   double sample_rate_;
   std::size_t person_count_;
-  std::vector<RecordedPerson> people_;      // by sample, then id
+  std::vector<RecordedPerson> people_;     // by sample, then id
   std::vector<std::size_t> sample_begin_;  // sample s is people_[sample_begin_[s], sample_begin_[s + 1])
 };
 

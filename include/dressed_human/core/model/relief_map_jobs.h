@@ -79,7 +79,7 @@ class ReliefMapJobs {
   void startSkin(const SkinReliefParameters& parameters);
 
   PerReliefKind<Job> jobs_;
-  SkinReliefParameters skin_started_;   // what the running (or last) skin build was started with
+  SkinReliefParameters skin_started_;    // what the running (or last) skin build was started with
   SkinReliefParameters skin_requested_;  // the newest request
 };
 

@@ -15,15 +15,15 @@ enum class VertexSource { kAutomatic, kRenderer, kCpu };  // what the user asked
 
 struct VertexEvaluationChoice {
   VertexEvaluation evaluation = VertexEvaluation::kCpu;
-  bool warn = false;    // the user's choice could not be followed
-  std::string status;   // what to tell the user; empty: nothing
+  bool warn = false;   // the user's choice could not be followed
+  std::string status;  // what to tell the user; empty: nothing
 };
 
 // `renderer_problem`: why the renderer's vertex shader cannot run (empty: it can).
 // `software_renderer`: the renderer's name when it rasterizes on the CPU, empty on a GPU.
 // `max_patches`: the most patches of one part the vertex shader holds.
 VertexEvaluationChoice chooseVertexEvaluation(VertexSource asked, const HumanModel& model,
-                                              const std::string& renderer_problem,
-                                              const std::string& software_renderer, std::size_t max_patches);
+                                              const std::string& renderer_problem, const std::string& software_renderer,
+                                              std::size_t max_patches);
 
 }  // namespace dressed_human

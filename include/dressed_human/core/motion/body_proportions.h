@@ -27,7 +27,7 @@ namespace dressed_human {
 
 struct BodyProportions {
   BodyShape shape;
-  double overall = 1.0;                            // the limbs' mean c
+  double overall = 1.0;  // the limbs' mean c
   // Metres: the source segment of each measured bone (the width between the left and right joint
   // for the hip bones and clavicles); 0 where the bone took the overall factor.
   std::array<double, kBoneCount> source_length{};

@@ -22,19 +22,19 @@ enum class BvhChannel : int { kXposition, kYposition, kZposition, kXrotation, kY
 
 struct BvhJoint {
   std::string name;
-  int parent = -1;                       // joint index; -1 for the root
+  int parent = -1;                                   // joint index; -1 for the root
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();  // from the parent joint, in the parent's frame
   std::vector<BvhChannel> channels;
-  std::size_t first_channel = 0;         // column of its first channel in a frame
+  std::size_t first_channel = 0;  // column of its first channel in a frame
   std::vector<int> children;
   // "End Site" offsets below this joint (the distal end of a leaf segment), in this joint's frame.
   std::vector<Eigen::Vector3d> end_sites;
 };
 
 struct BvhClip {
-  std::vector<BvhJoint> joints;          // parents before children; joints[0] is the root
+  std::vector<BvhJoint> joints;  // parents before children; joints[0] is the root
   std::size_t channel_count = 0;
-  double frame_time = 0.0;               // seconds
+  double frame_time = 0.0;                  // seconds
   std::vector<std::vector<double>> frames;  // frames[f][channel], as written (degrees, units)
 
   int findJoint(const std::string& name) const;  // -1 when absent

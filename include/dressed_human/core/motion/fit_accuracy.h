@@ -29,19 +29,19 @@ struct PositionError {
 };
 
 struct FitAccuracy {
-  PositionError against_capture;     // empty (samples = 0) without a capture skeleton
+  PositionError against_capture;                                 // empty (samples = 0) without a capture skeleton
   std::array<PositionError, kJointCount> joint_against_capture;  // the same per joint
   // Our skeleton on the unsmoothed retargeted angles vs the capture: the floor that the two
   // skeletons' different bone proportions set, whatever the order.
   PositionError unsmoothed_against_capture;
   PositionError against_samples;
-  PositionError root_translation;    // fitted root vs sampled root, walk frame
+  PositionError root_translation;  // fitted root vs sampled root, walk frame
   // With a fitted body (SampledMotion::body_fitted): the height of our lowest foot point (ankle
   // joint or foot bone end) against the capture's lowest foot point, both feet, over the frames
   // where the capture's foot is in stance (within kStanceBand of its lowest in the window).
   PositionError stance_foot_height;
   static constexpr double kStanceBand = 0.02;  // m
-  double mean_rms_degrees = 0.0;     // over driven angle series
+  double mean_rms_degrees = 0.0;               // over driven angle series
   double max_rms_degrees = 0.0;
 };
 

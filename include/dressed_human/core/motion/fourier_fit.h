@@ -11,9 +11,9 @@
 namespace dressed_human {
 
 struct FourierFit {
-  FourierSeries series;        // period as given, phase 0: t = 2 pi time / period
-  double linear_rate = 0.0;    // units per second; 0 unless fitted with the linear term
-  double rms_residual = 0.0;   // root mean square of (sample - model), in the samples' unit
+  FourierSeries series;       // period as given, phase 0: t = 2 pi time / period
+  double linear_rate = 0.0;   // units per second; 0 unless fitted with the linear term
+  double rms_residual = 0.0;  // root mean square of (sample - model), in the samples' unit
   bool reached_tolerance = true;
 };
 

@@ -22,14 +22,14 @@
 namespace dressed_human {
 
 struct PeriodOptions {
-  double min_period = 0.3;        // seconds: faster than any gait cycle
-  double max_period = 0.0;        // seconds; 0: half the record
-  double min_correlation = 0.6;   // the peak must be at least this clear
+  double min_period = 0.3;       // seconds: faster than any gait cycle
+  double max_period = 0.0;       // seconds; 0: half the record
+  double min_correlation = 0.6;  // the peak must be at least this clear
 };
 
 struct PeriodEstimate {
-  double period = 0.0;            // seconds
-  double correlation = 0.0;       // r at the peak
+  double period = 0.0;                  // seconds
+  double correlation = 0.0;             // r at the peak
   std::vector<double> autocorrelation;  // r(k) for k = 0 .. max lag (r(0) = 1), for plots and reports
 };
 

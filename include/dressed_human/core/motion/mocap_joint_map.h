@@ -59,9 +59,9 @@ struct JointMapError : std::runtime_error {
 };
 
 struct BvhJointMap {
-  std::string name;                                // "CMU BVH", "ASF", or the YAML file
-  std::string root;                                // source joint of our body frame (pelvis)
-  std::array<std::string, kJointCount> joints;     // in humanJointNames() order; "" = held at rest
+  std::string name;                             // "CMU BVH", "ASF", or the YAML file
+  std::string root;                             // source joint of our body frame (pelvis)
+  std::array<std::string, kJointCount> joints;  // in humanJointNames() order; "" = held at rest
 };
 
 struct CoordinateRotation {
@@ -71,8 +71,8 @@ struct CoordinateRotation {
 
 struct CoordinateJointMap {
   std::string name;
-  std::array<std::string, 3> root_translation;      // columns along source X, Y, Z; "" = absent (0)
-  std::vector<CoordinateRotation> root_rotation;    // applied in list order (body-fixed)
+  std::array<std::string, 3> root_translation;                      // columns along source X, Y, Z; "" = absent (0)
+  std::vector<CoordinateRotation> root_rotation;                    // applied in list order (body-fixed)
   std::array<std::vector<CoordinateRotation>, kJointCount> joints;  // empty = held at rest
 };
 

@@ -30,14 +30,14 @@ using JointPositions = std::array<Eigen::Vector3d, kJointCount>;
 
 struct SampledMotion {
   std::string source;
-  std::vector<double> times;                 // seconds from the first frame, uniform steps
-  std::vector<JointAngles> angles;           // radians in (-pi, pi]: unwrapping is the fitter's job
-  std::vector<RigidTransform> root;          // our body frame in the capture's world, our axes (z up), metres
-  std::array<bool, kJointCount> driven{};    // false: the source does not move this joint (held at rest)
+  std::vector<double> times;               // seconds from the first frame, uniform steps
+  std::vector<JointAngles> angles;         // radians in (-pi, pi]: unwrapping is the fitter's job
+  std::vector<RigidTransform> root;        // our body frame in the capture's world, our axes (z up), metres
+  std::array<bool, kJointCount> driven{};  // false: the source does not move this joint (held at rest)
   // The source skeleton's own forward kinematics, for the accuracy metric: the proximal joint of
   // every driven bone, our axes, relative to our root. Without a fitted body: relative to the
-  // source root, scaled to our stature (our legs without a mapped head); with one: metres, relative to where our root is placed in
-  // the capture's world. Empty when the source has no skeleton (joint coordinates).
+  // source root, scaled to our stature (our legs without a mapped head); with one: metres, relative to where our root
+  // is placed in the capture's world. Empty when the source has no skeleton (joint coordinates).
   std::vector<JointPositions> reference_joint_positions;
   // With a fitted body: the lowest point of each foot of the capture (the mapped ankle's subtree,
   // joints and end sites; left, right), height in the capture's world, metres, levelled as the root.
@@ -45,13 +45,14 @@ struct SampledMotion {
   // With a fitted body: how fast the capture's floor (the resting lower foot's lowest point, a line
   // fitted in time) rises, m/s; the root and the reference feet are levelled by it.
   double floor_rise_per_second = 0.0;
-  double root_scale = 1.0;       // metres per source unit for the root translation (leg length ratio)
-  double reference_scale = 1.0;  // metres per source unit for the reference positions (stature ratio; leg ratio without a head)
+  double root_scale = 1.0;  // metres per source unit for the root translation (leg length ratio)
+  double reference_scale =
+      1.0;  // metres per source unit for the reference positions (stature ratio; leg ratio without a head)
   // The captured person's proportions (body_proportions.h): set when RetargetOptions::fit_body;
   // otherwise our default body (identity shape).
   bool body_fitted = false;
   BodyProportions proportions;
-  CaptureUnits units;            // of the source, when body_fitted
+  CaptureUnits units;  // of the source, when body_fitted
   // Our root's place relative to the source root, in our body frame (metres): the offset that puts
   // our joints nearest the capture's over the whole record (least squares), when body_fitted.
   Eigen::Vector3d root_offset = Eigen::Vector3d::Zero();

@@ -36,9 +36,9 @@ struct FourierSeries {
 // Root (the "body" frame) in the frame where the motion starts:
 // position = (forward_speed * time + x(t), y(t), z(t)); rotation = Rz(yaw) Ry(pitch) Rx(roll).
 struct RootMotion {
-  double forward_speed = 0.0;                    // m/s along the start frame's x
-  std::array<FourierSeries, 3> translation;      // x, y, z  (z includes the pelvis height)
-  std::array<FourierSeries, 3> rotation;         // roll, pitch, yaw
+  double forward_speed = 0.0;                // m/s along the start frame's x
+  std::array<FourierSeries, 3> translation;  // x, y, z  (z includes the pelvis height)
+  std::array<FourierSeries, 3> rotation;     // roll, pitch, yaw
 };
 constexpr std::array<const char*, 3> kRootTranslationNames = {"x", "y", "z"};
 constexpr std::array<const char*, 3> kRootRotationNames = {"roll", "pitch", "yaw"};
@@ -48,9 +48,9 @@ constexpr std::array<const char*, 3> kRootRotationNames = {"roll", "pitch", "yaw
 // (a period of 1e-300 s is a frequency of 1e300 Hz; a forward speed of 1e300 m/s puts the human
 // 3e300 m away after a second).
 struct MotionLimits {
-  static constexpr double kMinPeriod = 0.1;            // s
-  static constexpr double kMaxPeriod = 60.0;           // s
-  static constexpr double kMaxForwardSpeed = 12.5;     // m/s, the fastest human sprint
+  static constexpr double kMinPeriod = 0.1;         // s
+  static constexpr double kMaxPeriod = 60.0;        // s
+  static constexpr double kMaxForwardSpeed = 12.5;  // m/s, the fastest human sprint
   // Largest |value| a series can reach, 0.5 |a0| + sum_k |(a_k, b_k)|: an angle (joints, root
   // rotation) within a full turn either way, a root translation within 10 m.
   static constexpr double kMaxAngle = 6.283185307179586;  // rad
@@ -62,8 +62,8 @@ struct MotionLimits {
 
 struct Motion {
   std::string name;
-  double period = 1.0;                           // the cycle, seconds: loops and start phase refer to it
-  std::array<FourierSeries, kDofCount> dofs;     // index joint * 3 + dof, joints in skeleton order
+  double period = 1.0;                        // the cycle, seconds: loops and start phase refer to it
+  std::array<FourierSeries, kDofCount> dofs;  // index joint * 3 + dof, joints in skeleton order
   RootMotion root;
   // The captured person's proportions (a fitted motion, body_proportions.h); absent: the motion
   // fits any body. The node requires robot_description to carry them (urdf_body_shape.h).

@@ -25,8 +25,8 @@ class MotionEvaluator {
   struct Clock {
     double period;
     double phase;
-    std::size_t order;       // highest harmonic any series on this clock needs
-    std::size_t table;       // offset of harmonic 1 in cos_/sin_
+    std::size_t order;  // highest harmonic any series on this clock needs
+    std::size_t table;  // offset of harmonic 1 in cos_/sin_
   };
   struct Series {
     std::size_t clock;

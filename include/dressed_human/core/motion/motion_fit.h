@@ -21,11 +21,11 @@
 namespace dressed_human {
 
 struct MotionFitOptions {
-  double period = 0.0;                  // seconds; 0: estimate from the data
-  double tolerance_degrees = 0.5;       // RMS residual an angle series must reach
-  double tolerance_metres = 0.002;      // the same for root translation series
-  std::size_t max_order = 8;            // cap on m
-  std::size_t fixed_order = 0;          // > 0: every series gets exactly this m (no tolerance search)
+  double period = 0.0;              // seconds; 0: estimate from the data
+  double tolerance_degrees = 0.5;   // RMS residual an angle series must reach
+  double tolerance_metres = 0.002;  // the same for root translation series
+  std::size_t max_order = 8;        // cap on m
+  std::size_t fixed_order = 0;      // > 0: every series gets exactly this m (no tolerance search)
   // Frames dropped at the start. -1: automatic, i.e. the leading frames that jump to the rest of
   // the record by more than 15 degrees and 10x the median frame-to-frame step (CMU BVH
   // conversions start with a bind-pose frame).
@@ -36,21 +36,21 @@ struct MotionFitOptions {
 
 struct SeriesFitReport {
   std::size_t order = 0;
-  double rms_residual = 0.0;            // radians for angles, metres for translations
+  double rms_residual = 0.0;  // radians for angles, metres for translations
   bool is_angle = true;
-  bool driven = true;                   // false: held at rest by the source (constant 0)
+  bool driven = true;  // false: held at rest by the source (constant 0)
   bool reached_tolerance = true;
 };
 
 struct MotionFit {
   Motion motion;
   std::array<SeriesFitReport, Motion::kSeriesCount> reports;
-  std::size_t skipped_frames = 0;       // at the start of the record; times count from the next
+  std::size_t skipped_frames = 0;  // at the start of the record; times count from the next
   bool period_estimated = false;
-  PeriodEstimate period_estimate;       // filled when estimated
+  PeriodEstimate period_estimate;  // filled when estimated
   std::size_t cycles = 0;
-  std::size_t frames_used = 0;          // the window: frames 0 .. frames_used-1, whole cycles
-  std::size_t max_order_allowed = 0;    // the cap after the sampling limit (samples per cycle)
+  std::size_t frames_used = 0;                                  // the window: frames 0 .. frames_used-1, whole cycles
+  std::size_t max_order_allowed = 0;                            // the cap after the sampling limit (samples per cycle)
   Eigen::Matrix3d walk_rotation = Eigen::Matrix3d::Identity();  // walk frame in the capture world
   Eigen::Vector3d walk_origin = Eigen::Vector3d::Zero();
   // The fitted data over the window, in Motion::series order: unwrapped angles (radians) and

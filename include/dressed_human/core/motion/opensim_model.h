@@ -66,7 +66,7 @@ struct OpenSimModel {
   std::vector<OpenSimCoordinate> coordinates;
   std::vector<OpenSimJoint> joints;  // from the ground outwards: a joint's parent body is placed by an earlier one
 
-  int findBody(const std::string& body) const;            // -1 when absent
+  int findBody(const std::string& body) const;              // -1 when absent
   int findCoordinate(const std::string& coordinate) const;  // -1 when absent
   // The child body's frame in the parent body's frame, for coordinate values in model units.
   Eigen::Isometry3d jointTransform(std::size_t joint, const std::vector<double>& coordinate_values) const;

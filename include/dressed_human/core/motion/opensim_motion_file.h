@@ -15,11 +15,11 @@ struct OpenSimError : std::runtime_error {
 };
 
 struct OpenSimTable {
-  std::string name;                      // the first header line when it is not key=value
+  std::string name;  // the first header line when it is not key=value
   bool in_degrees = true;
-  std::vector<std::string> labels;       // labels[0] == "time"
-  std::vector<double> times;             // seconds, strictly increasing
-  std::vector<std::vector<double>> rows; // rows[r][column], column 0 is the time again
+  std::vector<std::string> labels;        // labels[0] == "time"
+  std::vector<double> times;              // seconds, strictly increasing
+  std::vector<std::vector<double>> rows;  // rows[r][column], column 0 is the time again
 
   int findColumn(const std::string& label) const;  // -1 when absent
   std::vector<double> column(std::size_t index) const;

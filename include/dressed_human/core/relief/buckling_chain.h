@@ -31,7 +31,7 @@ std::vector<ChainCell> orientChain(const std::string& kinds, bool periodic);
 struct BucklingChain {
   std::vector<BucklingPattern> cells;
   std::vector<Eigen::Isometry3d> cell_to_world;  ///< cell frame -> chain frame (cell 0 = identity)
-  std::vector<double> joint_bend_angles;          ///< between cell i and i+1 (0 for I-I joints)
+  std::vector<double> joint_bend_angles;         ///< between cell i and i+1 (0 for I-I joints)
 };
 
 /// Build the 3D chain for one alpha (open chain, cells laid out along +x from cell 0).

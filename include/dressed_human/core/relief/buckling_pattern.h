@@ -36,8 +36,7 @@ class BucklingPattern {
   /// Throws std::invalid_argument for a bad alpha/cell, std::domain_error per policy, and
   /// std::invalid_argument when the effective alpha is 0 (the footprint has no area).
   BucklingPattern(PatternKind kind, double alpha, const BucklingCell& cell,
-                  OutOfDomainPolicy policy = OutOfDomainPolicy::clampToDomainEdge,
-                  bool split_on_right = false);
+                  OutOfDomainPolicy policy = OutOfDomainPolicy::clampToDomainEdge, bool split_on_right = false);
 
   const BucklingSolution& solution() const { return solution_; }
   const BucklingCell& cell() const { return cell_; }

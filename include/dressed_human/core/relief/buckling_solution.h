@@ -59,11 +59,11 @@ enum class OutOfDomainPolicy {
 struct BucklingSolution {
   PatternKind kind = PatternKind::I;  ///< pattern actually built (may be I after fall back)
   double alpha_requested = 1.0;
-  double alpha = 1.0;   ///< effective alpha of the geometry (differs when clamped)
-  double h1 = 0.0;      ///< rise of the fold/ridge point (P5P6 for I, P7 for Y/X)
-  double w = 0.0;       ///< inward x move of the split point (0 for I)
-  double h2 = 0.0;      ///< sink of the split point below the base plane (0 for I)
-  bool clamped = false;       ///< alpha was raised to alpha_min
+  double alpha = 1.0;    ///< effective alpha of the geometry (differs when clamped)
+  double h1 = 0.0;       ///< rise of the fold/ridge point (P5P6 for I, P7 for Y/X)
+  double w = 0.0;        ///< inward x move of the split point (0 for I)
+  double h2 = 0.0;       ///< sink of the split point below the base plane (0 for I)
+  bool clamped = false;  ///< alpha was raised to alpha_min
   bool fell_back_to_i = false;
 
   /// Angle between the base planes of two Y/X cells joined at their split edges, 2 atan(w/h2)

@@ -34,8 +34,8 @@ class GaussianFoldApproximation {
 };
 
 struct GaussianFitOptions {
-  int samples_per_axis = 48;    ///< fit grid over the footprint (>= 4)
-  int centres_per_axis = 9;     ///< dictionary centre grid (>= 2)
+  int samples_per_axis = 48;  ///< fit grid over the footprint (>= 4)
+  int centres_per_axis = 9;   ///< dictionary centre grid (>= 2)
 };
 
 /// Fit `term_count` (>= 1) Gaussians to the pattern's footprint height. Stops early (fewer terms)

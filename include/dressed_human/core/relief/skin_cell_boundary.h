@@ -19,7 +19,8 @@ inline Eigen::Vector2d wallPoint(const CellLevel& level, const Wall& wall, doubl
 /// Counter-clockwise, in the cell's frame. Where a finer furrow ends on a coarser (inherited)
 /// one, the boundary follows the finer furrow's straight line on to the coarser one's wobble --
 /// the same point on both sides and on every level below.
-std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels, std::size_t level_index, const Cell& cell);
+std::vector<Eigen::Vector2d> boundaryChain(const std::vector<CellLevel>& levels, std::size_t level_index,
+                                           const Cell& cell);
 
 /// One sector of a boundary's fan seen from the cell's centre.
 struct BoundarySector {
@@ -40,7 +41,8 @@ struct BoundaryFanScratch {
 /// `sectors` (cleared first) from the boundary's vertices relative to the centre: one per fan
 /// triangle where the boundary is star-shaped from the centre; where it folds, per angular piece
 /// the nearest boundary crossing, the pockets behind the fold claimed by no sector.
-void boundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors, BoundaryFanScratch& scratch);
+void boundaryFan(const std::vector<Eigen::Vector2d>& relative, std::vector<BoundarySector>& sectors,
+                 BoundaryFanScratch& scratch);
 
 inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 

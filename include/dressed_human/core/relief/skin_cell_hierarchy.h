@@ -26,9 +26,9 @@ namespace skin_detail {
 /// One straight furrow segment bounding a cell, seen from that cell, plus its midpoint-displaced
 /// wobble. Everything is in the owning cell's frame (its periodic image at offset 0).
 struct Wall {
-  Eigen::Vector2d start;     ///< segment start in the shared (canonical) direction
-  Eigen::Vector2d tangent;   ///< unit, shared direction for both cells of the wall
-  Eigen::Vector2d normal;    ///< unit, out of the owning cell
+  Eigen::Vector2d start;    ///< segment start in the shared (canonical) direction
+  Eigen::Vector2d tangent;  ///< unit, shared direction for both cells of the wall
+  Eigen::Vector2d normal;   ///< unit, out of the owning cell
   double length = 0.0;
   double centre_distance = 0.0;  ///< (start - centre) . normal, > 0
   double centre_u = 0.0;         ///< (centre - start) . tangent / length
@@ -40,19 +40,19 @@ struct Wall {
 };
 
 struct Cell {
-  Eigen::Vector2d centre;          ///< seed, in the cell's frame (level 1: inside [0,1)^2)
+  Eigen::Vector2d centre;                ///< seed, in the cell's frame (level 1: inside [0,1)^2)
   std::vector<Eigen::Vector2d> polygon;  ///< straight cell polygon, counter-clockwise
   int first_wall = 0, wall_count = 0;
-  int parent = -1;                 ///< index on the previous level (-1 on level 1)
-  std::vector<int> children;       ///< indices on the next level
-  double wobble_margin = 0.0;      ///< max |wobble| of its walls (bounding-box padding)
+  int parent = -1;             ///< index on the previous level (-1 on level 1)
+  std::vector<int> children;   ///< indices on the next level
+  double wobble_margin = 0.0;  ///< max |wobble| of its walls (bounding-box padding)
 };
 
 struct CellLevel {
-  double spacing = 0.0;       ///< lattice spacing of the seeds (before stretching)
-  double depth = 0.0;         ///< relief depth in tile units
+  double spacing = 0.0;                                  ///< lattice spacing of the seeds (before stretching)
+  double depth = 0.0;                                    ///< relief depth in tile units
   Eigen::Matrix2d metric = Eigen::Matrix2d::Identity();  ///< G: |d|^2 = d^T G d (stretch)
-  int subdivisions = 0;       ///< wobble profile has 2^subdivisions segments
+  int subdivisions = 0;                                  ///< wobble profile has 2^subdivisions segments
   std::vector<Cell> cells;
   std::vector<Wall> walls;
   std::vector<double> wobble_samples;  ///< (2^subdivisions + 1) samples per profile
@@ -78,7 +78,8 @@ inline double outwardWobble(const CellLevel& level, const Wall& wall, double u) 
   const int segments = 1 << level.subdivisions;
   const double position = u * segments;
   const int segment = std::min(static_cast<int>(position), segments - 1);
-  const double* samples = level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
+  const double* samples =
+      level.wobble_samples.data() + static_cast<std::size_t>(wall.wobble) * static_cast<std::size_t>(segments + 1);
   const double fraction = position - segment;
   return wall.wobble_sign * (samples[segment] + fraction * (samples[segment + 1] - samples[segment]));
 }

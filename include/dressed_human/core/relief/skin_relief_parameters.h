@@ -18,12 +18,12 @@ struct SkinReliefParameters {
   int wobble_subdivisions = 3;    ///< midpoint-displacement depth, 0..6
   double wobble_roughness = 0.5;  ///< amplitude factor per subdivision, [0, 1]
   BezierProfile profile = BezierProfile::fromEdgeSlope(3.0);  ///< cross-section ("slope")
-  double roundness = 0.0;         ///< 0 = polygonal contours, 1 = round, [0, 1]
-  double direction_angle = 0.0;   ///< radians from +u, direction the cells are stretched along
-  double direction_stretch = 1.0; ///< >= 1, 1 = no directionality
-  int directional_levels = 3;     ///< the stretch applies to levels 1..directional_levels
+  double roundness = 0.0;                                     ///< 0 = polygonal contours, 1 = round, [0, 1]
+  double direction_angle = 0.0;                            ///< radians from +u, direction the cells are stretched along
+  double direction_stretch = 1.0;                          ///< >= 1, 1 = no directionality
+  int directional_levels = 3;                              ///< the stretch applies to levels 1..directional_levels
   std::array<double, 3> level_depth{{0.08, 0.05, 0.035}};  ///< relief depth / level spacing, >= 0
-  std::uint32_t seed = 1;         ///< RNG seed (std::mt19937): same seed -> same map
+  std::uint32_t seed = 1;                                  ///< RNG seed (std::mt19937): same seed -> same map
 };
 
 }  // namespace dressed_human

@@ -20,17 +20,17 @@ namespace dressed_human {
 namespace skin_detail {
 
 struct RasterSector {
-  double direction_x, direction_y;  // start ray of the sector, from the centre
-  double gradient_x, gradient_y;  // of the reference's s (its ray hit, max over walls)
-  double boundary_x, boundary_y;  // of the ray ratio to the boundary polygon: < 1 inside
+  double direction_x, direction_y;        // start ray of the sector, from the centre
+  double gradient_x, gradient_y;          // of the reference's s (its ray hit, max over walls)
+  double boundary_x, boundary_y;          // of the ray ratio to the boundary polygon: < 1 inside
   double crossing_above, crossing_below;  // qx / dy where a pixel row leaves the sector, NaN never
 };
 
 struct RasterCell {
   double centre_x = 0.0, centre_y = 0.0;
   double low_x = 0.0, low_y = 0.0, high_x = 0.0, high_y = 0.0;  // boundary's bounding box
-  int first_sector = 0, sector_count = 0;  // 0: left to the per-pixel path
-  int first_vertex = 0, vertex_count = 0;  // boundary polygon, relative to the centre
+  int first_sector = 0, sector_count = 0;                       // 0: left to the per-pixel path
+  int first_vertex = 0, vertex_count = 0;                       // boundary polygon, relative to the centre
   int parent = -1;
 };
 

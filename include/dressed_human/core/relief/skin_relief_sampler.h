@@ -39,8 +39,8 @@ class SkinReliefSampler {
   int roundnessExponent() const { return roundness_exponent_; }  ///< 0 = max over walls (polygonal)
   const BezierProfileTable& profileTable() const { return profile_table_; }
   /// One wall's ray hit as the reference computes it (s and its gradient at centre + q, q . n > 0).
-  static void wallRayHit(const skin_detail::CellLevel& level, const skin_detail::Wall& wall, const Eigen::Vector2d& q, double& s,
-                         Eigen::Vector2d& gradient);
+  static void wallRayHit(const skin_detail::CellLevel& level, const skin_detail::Wall& wall, const Eigen::Vector2d& q,
+                         double& s, Eigen::Vector2d& gradient);
 
   struct FastHit {
     int cell = -1;
@@ -55,7 +55,8 @@ class SkinReliefSampler {
     bool valid[3] = {false, false, false};
   };
   /// The fast path at a wrapped point (x, y in [0, 1)); cells_out, if given, gets each level's cell.
-  ReliefSample evaluateFast(double x, double y, int first_level, int end_level, FastCache* cache, int* cells_out = nullptr) const;
+  ReliefSample evaluateFast(double x, double y, int first_level, int end_level, FastCache* cache,
+                            int* cells_out = nullptr) const;
 
  private:
   // Cells of more walls than this take the reference path (a Voronoi cell of a jittered
@@ -82,12 +83,12 @@ class SkinReliefSampler {
 
   // Fast path (skin_relief_sampler.cpp).
   struct PackedSegment {
-    double numerator = 0.0;          // ray parameter at the hit = numerator / denominator
-    double inverse_numerator = 0.0;  // 0 when numerator <= 0 (the reference keeps the straight hit)
-    double slope = 0.0;              // outward wobble per unit u
-    double start_u = 0.0;            // segment start in u
-    double offset = 0.0;             // outward wobble at start_u
-    double step = 0.0;               // outward wobble change over the segment
+    double numerator = 0.0;                     // ray parameter at the hit = numerator / denominator
+    double inverse_numerator = 0.0;             // 0 when numerator <= 0 (the reference keeps the straight hit)
+    double slope = 0.0;                         // outward wobble per unit u
+    double start_u = 0.0;                       // segment start in u
+    double offset = 0.0;                        // outward wobble at start_u
+    double step = 0.0;                          // outward wobble change over the segment
     double gradient_x = 0.0, gradient_y = 0.0;  // gradient of s on this segment
   };
   struct PackedWall {
@@ -97,7 +98,7 @@ class SkinReliefSampler {
     double inverse_outer;     // 1 / (centre_distance + wobble_extent)
     double inverse_inner;     // 1 / (centre_distance - wobble_extent), +inf when that is <= 0
     double wobble_extent;
-    double wobble_threshold;  // q . n above this: the wobble test must look at this wall
+    double wobble_threshold;      // q . n above this: the wobble test must look at this wall
     double tangent_x, tangent_y;  // unit tangent / length: q . t gives u units
     double centre_u;
     int first_segment;  // into PackedLevel::segments, -1 straight
@@ -121,7 +122,7 @@ class SkinReliefSampler {
     const PackedCell* cell = nullptr;
     const PackedWall* walls = nullptr;
     double qx = 0.0, qy = 0.0;
-    bool near_wobble = false;  // some wall's wobble test can move the point
+    bool near_wobble = false;            // some wall's wobble test can move the point
     double projection[kMaxPackedWalls];  // q . n per wall
   };
   struct LevelResult {

@@ -32,10 +32,10 @@ enum class WrinkleSurface {
 struct WrinkleMapSpec {
   int width_pixels = 512;
   int height_pixels = 512;
-  BucklingCell cell;            ///< rest L_x, L_y of every cell
-  std::string chain = "X";      ///< pattern sequence repeated across u ("X", "YY", "YXY", "I", ...)
-  int cells_around = 8;         ///< cells across u; the repeated chain must close periodically
-  int rows = 4;                 ///< cells along v
+  BucklingCell cell;        ///< rest L_x, L_y of every cell
+  std::string chain = "X";  ///< pattern sequence repeated across u ("X", "YY", "YXY", "I", ...)
+  int cells_around = 8;     ///< cells across u; the repeated chain must close periodically
+  int rows = 4;             ///< cells along v
   /// Compression per cell, row-major (rows x cells_around); a single value applies to all cells,
   /// `rows` values apply per row. alpha = 1 flat, smaller = more compressed (buckling_solution.h).
   std::vector<double> alpha{0.7};
@@ -46,7 +46,7 @@ struct WrinkleMapSpec {
   /// blur (of 0.59 / harmonics cells); 20 is the fewest even count that keeps the RMS error within
   /// 5 % of h1 for I, Y and X at alpha 0.6 and 0.8 (docs/relief/smooth_fold_rms_vs_harmonics.png).
   int smooth_harmonics_per_cell = 20;
-  double amplitude = 1.0;       ///< scales relief (heights and slopes), >= 0
+  double amplitude = 1.0;  ///< scales relief (heights and slopes), >= 0
 };
 
 /// Throws std::invalid_argument naming the bad field (sizes, alpha count or range, chain that

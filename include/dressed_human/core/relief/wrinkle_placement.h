@@ -80,9 +80,10 @@ struct PrincipalStretch {
   double alpha = 1.0;     ///< min(1, smallest): the compression coefficient
   double smallest = 1.0;  ///< smallest principal stretch (may exceed 1: stretched everywhere)
   double largest = 1.0;
-  Eigen::Vector2d direction_uv = Eigen::Vector2d::UnitX();  ///< compression direction in (u, v), unit in the rest metric
-  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();     ///< the same on the posed surface, unit length
-  bool degenerate = false;  ///< a Jacobian of rank < 2 (a pole): reported as alpha = 1
+  Eigen::Vector2d direction_uv =
+      Eigen::Vector2d::UnitX();                          ///< compression direction in (u, v), unit in the rest metric
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< the same on the posed surface, unit length
+  bool degenerate = false;                               ///< a Jacobian of rank < 2 (a pole): reported as alpha = 1
 };
 
 /// Principal stretches of rest -> posed from the two Jacobians [d_du d_dv].
@@ -94,28 +95,28 @@ PrincipalStretch measureStretch(const std::vector<BezierPatch>& rest, const std:
                                 const SurfacePoint& at);
 
 struct WrinklePlacementOptions {
-  double alpha_threshold = 0.9;   ///< alpha above this: no wrinkles (see the header comment)
+  double alpha_threshold = 0.9;  ///< alpha above this: no wrinkles (see the header comment)
   double region_percentile = 0.1;
   int samples_per_side = 17;      ///< region sampling grid per patch (samples_per_side^2)
   double knee_half_width = 0.10;  ///< metres along the thigh
   double elbow_half_width = 0.08;
   double waist_half_width = 0.08;
-  double span_half_length = 0.15; ///< knee/elbow spans reach this far either side of the joint (m)
-  double cell_length = 0.05;      ///< rest 2 L_y of a wrinkle cell along the compression (m)
-  int cells_around = 4;           ///< wrinkle cells around each patch (even: "YY" must close)
-  double reference_alpha = 0.85;  ///< compression at which the pattern rule compares curls
+  double span_half_length = 0.15;  ///< knee/elbow spans reach this far either side of the joint (m)
+  double cell_length = 0.05;       ///< rest 2 L_y of a wrinkle cell along the compression (m)
+  int cells_around = 4;            ///< wrinkle cells around each patch (even: "YY" must close)
+  double reference_alpha = 0.85;   ///< compression at which the pattern rule compares curls
   OutOfDomainPolicy out_of_domain = OutOfDomainPolicy::clampToDomainEdge;
   double saturation_alpha = 0.6;  ///< VertexCompression: wrinkle strength 1 at and below this
 };
 
 /// alpha -> the wrinkles of one cell.
 struct WrinkleChoice {
-  bool wrinkled = false;          ///< alpha below the threshold
-  std::string chain = "I";        ///< "I", "YY" or "X", repeated around
-  double alpha = 1.0;             ///< measured
-  double alpha_effective = 1.0;   ///< after the threshold, before the domain clamp
-  BucklingSolution solution;      ///< of the chain's first pattern at alpha_effective
-  double amplitude = 0.0;         ///< solution.h1 in metres (cell in metres)
+  bool wrinkled = false;         ///< alpha below the threshold
+  std::string chain = "I";       ///< "I", "YY" or "X", repeated around
+  double alpha = 1.0;            ///< measured
+  double alpha_effective = 1.0;  ///< after the threshold, before the domain clamp
+  BucklingSolution solution;     ///< of the chain's first pattern at alpha_effective
+  double amplitude = 0.0;        ///< solution.h1 in metres (cell in metres)
 };
 
 /// Throws std::invalid_argument naming the first bad option.
@@ -168,15 +169,15 @@ struct RegionCompression {
   double alpha_minimum = 1.0;  ///< smallest local alpha
   SurfacePoint most_compressed;
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< local compression direction there (posed)
-  WrinkleChoice wrinkles;      ///< at alpha, with the region's chain and cell
+  WrinkleChoice wrinkles;                                ///< at alpha, with the region's chain and cell
 };
 
 /// Rest geometry of one garment's wrinkle cells, per patch.
 struct PatchWrinkleLayout {
-  int rows = 1;               ///< cells along u (down the garment, the bone axis)
-  int cells_around = 4;       ///< cells along v
-  BucklingCell cell;          ///< metres
-  double turn_per_cell = 0.0; ///< radians, around the limb
+  int rows = 1;                ///< cells along u (down the garment, the bone axis)
+  int cells_around = 4;        ///< cells along v
+  BucklingCell cell;           ///< metres
+  double turn_per_cell = 0.0;  ///< radians, around the limb
   std::string chain = "I";
 };
 
@@ -225,11 +226,10 @@ struct PoseWrinkleMap {
 
 /// A row's alpha is the region_percentile quantile of the local measure over the row, but where
 /// the row holds samples of a knee or elbow region it is that region's alpha_span (the smallest
-/// if several), as for the region's pattern choice (hence the pose: the joint's axis). Throws std::invalid_argument for a tile size below 8 or a
-/// wrong patch count. Cost: the placement's samples plus one makeWrinkleMap per wrinkled patch
+/// if several), as for the region's pattern choice (hence the pose: the joint's axis). Throws std::invalid_argument for
+/// a tile size below 8 or a wrong patch count. Cost: the placement's samples plus one makeWrinkleMap per wrinkled patch
 /// (flat tiles are skipped).
 PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::vector<BezierPatch>& posed,
                                   const SkeletonPose& pose, int tile_pixels = 128);
-
 
 }  // namespace dressed_human

@@ -24,7 +24,7 @@ struct RasterCamera {
 
 struct RasterMaterial {
   Eigen::Vector3d colour = Eigen::Vector3d(0.7, 0.7, 0.7);  // diffuse k_d per channel, [0, 1]
-  double ambient = 0.18;                                     // added to Eq. 12's I (then clamped)
+  double ambient = 0.18;                                    // added to Eq. 12's I (then clamped)
   double back_face_factor = 0.55;  // inside of open garments: darker, shaded with the flipped normal
 };
 

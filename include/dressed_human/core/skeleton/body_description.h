@@ -24,13 +24,13 @@ struct SkinSection {
 };
 
 struct SkinSegmentSpec {
-  std::string bone;          // a bone name of the skeleton, or "body" (the root frame)
-  int bone_index = -1;       // -1 for "body"
+  std::string bone;     // a bone name of the skeleton, or "body" (the root frame)
+  int bone_index = -1;  // -1 for "body"
   // Joined: this segment's first section (z = 0, at its proximal joint) is also the end of its
   // parent bone's segment, which then has no distal cap. Otherwise the proximal end is closed.
   bool joined_to_parent = false;
-  double proximal_cap = 0.0;  // dome height beyond the first section (> 0 unless joined)
-  double distal_cap = 0.0;    // dome height beyond the last section (> 0 unless a child joins)
+  double proximal_cap = 0.0;          // dome height beyond the first section (> 0 unless joined)
+  double distal_cap = 0.0;            // dome height beyond the last section (> 0 unless a child joins)
   std::vector<SkinSection> sections;  // >= 2, z strictly increasing
 };
 

@@ -17,7 +17,8 @@
 namespace dressed_human {
 
 template <typename Error>
-void readBodyShapeYaml(const YamlReader<Error>& reader, const YAML::Node& node, const std::string& key, BodyShape& shape) {
+void readBodyShapeYaml(const YamlReader<Error>& reader, const YAML::Node& node, const std::string& key,
+                       BodyShape& shape) {
   reader.requireMap(node, key);
   const auto& layout = humanBoneLayout();
   for (const auto& entry : node) {

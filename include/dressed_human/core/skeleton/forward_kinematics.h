@@ -18,7 +18,7 @@ struct RigidTransform {
 };
 
 struct SkeletonPose {
-  RigidTransform root;                               // body frame in the world
+  RigidTransform root;  // body frame in the world
   // Parent -> child transform of every URDF revolute joint, as TF publishes it: for DOF 0 the
   // joint origin (scaled) times the rotation about y; for DOFs 1 and 2 a pure rotation.
   std::array<RigidTransform, kDofCount> dof_transforms;

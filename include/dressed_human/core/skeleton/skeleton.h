@@ -46,23 +46,23 @@ struct SkeletonError : std::runtime_error {
 };
 
 struct Bone {
-  std::string name;          // frame name without suffix, REP-155 style: "l_knee" is the shank
-  std::string anatomical;    // "left shank"
-  int parent = -1;           // parent bone index; -1: the root frame "body"
-  int joint = -1;            // articulated joint moving this bone; -1: fixed to its parent
+  std::string name;        // frame name without suffix, REP-155 style: "l_knee" is the shank
+  std::string anatomical;  // "left shank"
+  int parent = -1;         // parent bone index; -1: the root frame "body"
+  int joint = -1;          // articulated joint moving this bone; -1: fixed to its parent
   // Pose of this bone's frame in its parent's frame with all angles zero. The translation is the
   // proximal joint position, expressed in the parent frame (Eq. 5 scales it by the parent's a,b,c).
   Eigen::Vector3d rest_translation = Eigen::Vector3d::Zero();
   Eigen::Quaterniond rest_rotation = Eigen::Quaterniond::Identity();
-  double length = 0.0;       // along +z, from the bone's cylinder visual
-  double radius = 0.0;       // of that cylinder: a first guess for the skin
+  double length = 0.0;  // along +z, from the bone's cylinder visual
+  double radius = 0.0;  // of that cylinder: a first guess for the skin
 };
 
 struct ArticulatedJoint {
-  std::string name;                              // = the name of the bone it moves
+  std::string name;  // = the name of the bone it moves
   int bone = -1;
   std::array<std::string, kDofsPerJoint> urdf_joints;  // e.g. l_knee_ry, l_knee_rx, l_knee_rz (+suffix)
-  std::array<std::string, 2> intermediate_links;      // l_knee_ry_link, l_knee_rx_link (+suffix)
+  std::array<std::string, 2> intermediate_links;       // l_knee_ry_link, l_knee_rx_link (+suffix)
 };
 
 class Skeleton {
@@ -88,7 +88,7 @@ class Skeleton {
   // The proportions the URDF was generated with; identity for a URDF that records none.
   const BodyShape& bodyShape() const { return body_shape_; }
 
-  const std::string& suffix() const { return suffix_; }            // "" or "_<id>"
+  const std::string& suffix() const { return suffix_; }  // "" or "_<id>"
   std::string frameName(const std::string& plain) const { return plain + suffix_; }
   std::string rootFrame() const { return frameName("body"); }
   // The same skeleton for another human of one TF tree: every frame and URDF joint name with

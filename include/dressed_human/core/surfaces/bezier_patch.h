@@ -99,16 +99,13 @@ class BezierPatch {
   PatchSample sample(double u, double v) const;
 
   // Hot-path forms taking precomputed weights (no parameter checks, no allocation).
-  PatchSample sample(const BernsteinWeights& u_weights, double u,
-                     const BernsteinWeights& v_weights, double v) const;
+  PatchSample sample(const BernsteinWeights& u_weights, double u, const BernsteinWeights& v_weights, double v) const;
   // Evaluates the u_table.size() x v_table.size() grid into `out`.
-  void evaluateGrid(const BernsteinTable& u_table, const BernsteinTable& v_table,
-                     const SurfaceSampleArrays& out) const;
+  void evaluateGrid(const BernsteinTable& u_table, const BernsteinTable& v_table, const SurfaceSampleArrays& out) const;
 
  private:
   // Unit normal from d_du x d_dv, or the limit normal when that cross product (nearly) vanishes.
-  Eigen::Vector3d unitNormal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv, double u,
-                              double v) const;
+  Eigen::Vector3d unitNormal(const Eigen::Vector3d& d_du, const Eigen::Vector3d& d_dv, double u, double v) const;
   Eigen::Vector3d limitNormal(double u, double v) const;
 
   ControlPoints control_points_;  // packed: also the 3 x 16 matrix the evaluation contracts against

@@ -30,7 +30,7 @@ struct PatchSurface {
 // (angle increasing, u along the angle, v along z), then bottom cap, then top cap. Normals point
 // outwards. Throws std::invalid_argument on a bad ring count, non-finite values, radii <= 0 or
 // negative cap heights.
-PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings,
-                                       double bottom_cap_height, double top_cap_height);
+PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings, double bottom_cap_height,
+                                     double top_cap_height);
 
 }  // namespace dressed_human

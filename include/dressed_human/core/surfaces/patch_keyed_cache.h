@@ -43,8 +43,9 @@ class PatchKeyedCache {
                    const std::vector<const std::vector<BezierPatch>*>& asked) {
     if (held.size() != asked.size()) return false;
     for (std::size_t s = 0; s < held.size(); ++s) {
-      if (!std::equal(held[s].begin(), held[s].end(), asked[s]->begin(), asked[s]->end(),
-                      [](const BezierPatch& a, const BezierPatch& b) { return a.controlPoints() == b.controlPoints(); })) {
+      if (!std::equal(
+              held[s].begin(), held[s].end(), asked[s]->begin(), asked[s]->end(),
+              [](const BezierPatch& a, const BezierPatch& b) { return a.controlPoints() == b.controlPoints(); })) {
         return false;
       }
     }

@@ -69,17 +69,17 @@ struct SkinError : std::runtime_error {
 
 // One segment as the Skin built it.
 struct SkinSegment {
-  std::string name;           // bone name, or "body" for the root-frame (pelvis) segment
-  int bone = -1;              // -1: the root frame
-  int joined_parent = -1;     // segment this one continues (shares the joint ring with), or -1
-  int joined_child = -1;      // segment continuing this one, or -1
+  std::string name;        // bone name, or "body" for the root-frame (pelvis) segment
+  int bone = -1;           // -1: the root frame
+  int joined_parent = -1;  // segment this one continues (shares the joint ring with), or -1
+  int joined_child = -1;   // segment continuing this one, or -1
   std::uint32_t first_patch = 0;
-  std::uint32_t stack_count = 0;           // 4 patches per stack
-  std::uint32_t proximal_cap_first = 0;    // 4 patches, if has_proximal_cap
-  std::uint32_t distal_cap_first = 0;      // 4 patches, if has_distal_cap
+  std::uint32_t stack_count = 0;         // 4 patches per stack
+  std::uint32_t proximal_cap_first = 0;  // 4 patches, if has_proximal_cap
+  std::uint32_t distal_cap_first = 0;    // 4 patches, if has_distal_cap
   bool has_proximal_cap = false;
   bool has_distal_cap = false;
-  std::uint32_t part = 0;     // connected closed surface this segment belongs to
+  std::uint32_t part = 0;  // connected closed surface this segment belongs to
 };
 
 // A chained joint: where segment `parent`'s last stack meets segment `child`'s first stack.
@@ -126,9 +126,9 @@ class Skin {
   // 12 control points of an elliptic ring (4 Bezier quarter arcs, shared ends), local frame.
   using Ring = std::array<Eigen::Vector3d, 12>;
   struct SegmentRings {
-    std::vector<Ring> rows;       // 3 * stacks + 1 rows; the joint ring (row 0) when joined
-    std::array<Ring, 3> proximal_cap;  // pole-side rows of the proximal dome (pole first)
-    std::array<Ring, 3> distal_cap;    // rows after the last section (pole last)
+    std::vector<Ring> rows;                // 3 * stacks + 1 rows; the joint ring (row 0) when joined
+    std::array<Ring, 3> proximal_cap;      // pole-side rows of the proximal dome (pole first)
+    std::array<Ring, 3> distal_cap;        // rows after the last section (pole last)
     std::vector<Eigen::Vector3d> profile;  // (z, radius_x, radius_y) of the sections, shape applied
   };
 
@@ -150,8 +150,8 @@ class Skin {
   std::uint32_t numberPatches();
   void linkPatches(std::uint32_t patch_count);
 
-  void transformRing(const Ring& local, const Eigen::Matrix3d& rotation,
-                     const Eigen::Vector3d& translation, Ring& world) const;
+  void transformRing(const Ring& local, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation,
+                     Ring& world) const;
   // Writes segment s's patches from its posed rings.
   void assembleSegment(std::size_t s, const SegmentRings& posed);
 

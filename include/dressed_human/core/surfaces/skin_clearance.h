@@ -34,7 +34,8 @@ class SkinClearance {
   // (measured radially from the bone axis), +infinity beyond the segment's ends and caps.
   double clearance(const SkeletonPose& pose, std::size_t s, const Eigen::Vector3d& p) const;
   // Minimum over the given segments (all when empty).
-  double clearance(const SkeletonPose& pose, const Eigen::Vector3d& p, const std::vector<std::size_t>& segments = {}) const;
+  double clearance(const SkeletonPose& pose, const Eigen::Vector3d& p,
+                   const std::vector<std::size_t>& segments = {}) const;
 
   // The sections of segment s (z, radius_x, radius_y; Eq. 5 applied), caps as heights.
   struct Profile {

@@ -39,8 +39,8 @@ struct EdgeLink {
   bool reversed;
 
   bool operator==(const EdgeLink& other) const {
-    return patch_a == other.patch_a && edge_a == other.edge_a && patch_b == other.patch_b &&
-           edge_b == other.edge_b && reversed == other.reversed;
+    return patch_a == other.patch_a && edge_a == other.edge_a && patch_b == other.patch_b && edge_b == other.edge_b &&
+           reversed == other.reversed;
   }
 };
 
@@ -51,13 +51,11 @@ class PatchTopology {
 
   // Throws std::invalid_argument for an unknown patch, an edge linked to itself or an edge that
   // is already linked (a patch edge meets at most one other: the surface is a 2-manifold).
-  void link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t patch_b, PatchEdge edge_b,
-            bool reversed);
+  void link(std::uint32_t patch_a, PatchEdge edge_a, std::uint32_t patch_b, PatchEdge edge_b, bool reversed);
 
   // Links every pair of non-collapsed edges whose control points coincide to within `tolerance`
   // (metres), in either direction. Throws if an edge matches more than one other edge.
-  static PatchTopology fromCoincidentEdges(const std::vector<BezierPatch>& patches,
-                                             double tolerance);
+  static PatchTopology fromCoincidentEdges(const std::vector<BezierPatch>& patches, double tolerance);
 
   std::size_t patchCount() const { return patch_count_; }
   const std::vector<EdgeLink>& links() const { return links_; }
@@ -71,13 +69,13 @@ class PatchTopology {
 
 struct TriangleMesh {
   std::vector<Eigen::Vector3f> positions;
-  std::vector<Eigen::Vector3f> normals;      // unit; limit normal at poles
-  std::vector<Eigen::Vector3f> tangents_u;   // dF/du (zero along a collapsed v-edge)
-  std::vector<Eigen::Vector3f> tangents_v;   // dF/dv
-  std::vector<Eigen::Vector2f> uv;           // (u, v) in the patch that owns the vertex
-  std::vector<std::uint32_t> vertex_patch;   // that patch
-  std::vector<std::uint32_t> indices;        // 3 per triangle, counter-clockwise around the normal
-  std::vector<std::uint32_t> triangle_patch; // patch each triangle lies on
+  std::vector<Eigen::Vector3f> normals;       // unit; limit normal at poles
+  std::vector<Eigen::Vector3f> tangents_u;    // dF/du (zero along a collapsed v-edge)
+  std::vector<Eigen::Vector3f> tangents_v;    // dF/dv
+  std::vector<Eigen::Vector2f> uv;            // (u, v) in the patch that owns the vertex
+  std::vector<std::uint32_t> vertex_patch;    // that patch
+  std::vector<std::uint32_t> indices;         // 3 per triangle, counter-clockwise around the normal
+  std::vector<std::uint32_t> triangle_patch;  // patch each triangle lies on
 
   std::size_t vertexCount() const { return positions.size(); }
   std::size_t triangleCount() const { return indices.size() / 3; }
@@ -105,11 +103,10 @@ double geometricErrorBound(const BezierPatch& patch, int level);
 int levelForGeometricError(const BezierPatch& patch, double max_error, int max_level);
 // Smallest level in [1, max_level] whose error, projected at the nearest point of the control
 // net's bounding box, is <= max_error_pixels (max_level if none is, or if the camera is inside).
-int levelForScreenError(const BezierPatch& patch, const CameraView& camera,
-                           double max_error_pixels, int max_level);
+int levelForScreenError(const BezierPatch& patch, const CameraView& camera, double max_error_pixels, int max_level);
 // levelForScreenError for every patch, the query checked once (this runs every frame).
-void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
-                          double max_error_pixels, int max_level, std::vector<int>& levels);
+void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera, double max_error_pixels,
+                          int max_level, std::vector<int>& levels);
 
 // The largest distance between the patch and its level-n grid triangulation at the same (u, v),
 // sampled on a 4x finer grid in every cell and taken over both diagonals: what
@@ -139,8 +136,8 @@ class CalibratedErrorBound {
   // Patch `index` (of the reference) as `live` is now, at `level` >= 1.
   double bound(std::size_t index, const BezierPatch& live, int level) const;
   // levelsForScreenError with this bound; `patches` must be the reference's patches, posed.
-  void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera,
-                            double max_error_pixels, int max_level, std::vector<int>& levels) const;
+  void levelsForScreenError(const std::vector<BezierPatch>& patches, const CameraView& camera, double max_error_pixels,
+                            int max_level, std::vector<int>& levels) const;
 
  private:
   int smallestLevel(std::size_t index, double constant, double allowed, int max_level) const;
@@ -161,32 +158,27 @@ class Tessellator {
   // overwritten by the next call. With unchanged topology, levels and poles, a call allocates
   // nothing: it only re-evaluates vertices. Throws std::invalid_argument on size mismatches, bad
   // levels, or linked edges whose control points do not coincide.
-  const TriangleMesh& tessellate(const std::vector<BezierPatch>& patches,
-                                 const PatchTopology& topology, const std::vector<int>& levels);
+  const TriangleMesh& tessellate(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                 const std::vector<int>& levels);
   // The same mesh without evaluating the surface: uv, vertex_patch, indices and triangle_patch
   // are filled, positions, normals and tangents are sized but left as they were. For renderers
   // that evaluate the patches themselves at (vertex_patch, uv) -- a vertex shader -- and re-send
   // the vertices only when layoutId() changes. Same checks and exceptions as tessellate().
   const TriangleMesh& layout(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
                              const std::vector<int>& levels);
-  const TriangleMesh& tessellateUniform(const std::vector<BezierPatch>& patches,
-                                         const PatchTopology& topology, int level = kDefaultLevel);
-  const TriangleMesh& tessellateToError(const std::vector<BezierPatch>& patches,
-                                          const PatchTopology& topology, double max_error,
-                                          int max_level = kMaxLevel);
-  const TriangleMesh& tessellateForCamera(const std::vector<BezierPatch>& patches,
-                                            const PatchTopology& topology,
-                                            const CameraView& camera, double max_error_pixels,
-                                            int max_level = kMaxLevel);
+  const TriangleMesh& tessellateUniform(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                        int level = kDefaultLevel);
+  const TriangleMesh& tessellateToError(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                        double max_error, int max_level = kMaxLevel);
+  const TriangleMesh& tessellateForCamera(const std::vector<BezierPatch>& patches, const PatchTopology& topology,
+                                          const CameraView& camera, double max_error_pixels, int max_level = kMaxLevel);
 
   const TriangleMesh& mesh() const { return mesh_; }
   // The levels used by the last call (after promoting level 1 to 2 where stitching needs it).
   const std::vector<int>& levels() const { return levels_; }
   // (u, v) of each triangle corner in the triangle's own patch (3 per triangle): where a shared
   // vertex's `uv` belongs to the other patch, this still says where it lies on this one.
-  const std::vector<Eigen::Vector2d>& triangleCornerParameters() const {
-    return corner_parameters_;
-  }
+  const std::vector<Eigen::Vector2d>& triangleCornerParameters() const { return corner_parameters_; }
   // How many times the vertex/triangle layout was rebuilt (it is rebuilt only when needed).
   std::size_t layoutBuildCount() const { return layout_build_count_; }
   // Unique across all tessellators of the process and changed by every layout rebuild: a
