@@ -74,11 +74,9 @@ bool DrawnHuman::inView(const Ogre::Camera* camera) const {
 }
 
 void DrawnHuman::resetReliefVisibility(double skin_cell_size) {
-  // Skin cells at the cell size's fraction of a tile (one per patch); cloth folds about half a
-  // buckling cell apart (cells_around cells per tile, kFoldTilesPerPatch tiles per patch).
-  const double skin = model_.reliefTileSize(ReliefKind::kSkin) * skin_cell_size;
-  const double cloth =
-      model_.reliefTileSize(ReliefKind::kCloth) / (2.0 * garmentWrinkleMapSpec().cells_around * kFoldTilesPerPatch);
+  model_.setSkinCellSize(skin_cell_size);
+  const double skin = model_.reliefFeatureSize(ReliefKind::kSkin);
+  const double cloth = model_.reliefFeatureSize(ReliefKind::kCloth);
   relief_visibility_[ReliefKind::kSkin] = skin > 0.0 ? std::make_unique<ReliefVisibility>(skin) : nullptr;
   relief_visibility_[ReliefKind::kCloth] = cloth > 0.0 ? std::make_unique<ReliefVisibility>(cloth) : nullptr;
   visual_.setReliefShown(ReliefKind::kSkin, true);

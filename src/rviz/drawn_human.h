@@ -64,8 +64,9 @@ class DrawnHuman {
     return stamp.isZero() || (ros::Time::now() - stamp).toSec() <= kFreshSeconds;
   }
 
-  // The feature sizes of both reliefs after a model or skin relief change (`skin_cell_size`: the
-  // skin relief's cell size as a fraction of its tile); both shown until judged again.
+  // The skin cells' size on the body (`skin_cell_size`: their spacing on the forearm, m;
+  // HumanModel::setSkinCellSize) and the feature sizes of both reliefs after it or the model
+  // changed; both shown until judged again. Throws std::invalid_argument for a bad size.
   void resetReliefVisibility(double skin_cell_size);
   // Relief as displaced geometry (map null: bump mapping), as the display's relief properties say.
   void setDisplacement(const ReliefMapJobs& jobs, bool displaced, float skin_strength, float wrinkle_strength);

@@ -53,6 +53,10 @@ DressedHumanDisplay::DressedHumanDisplay()
   connect(relief_properties_.get(), &ReliefProperties::appearanceChanged, this, &DressedHumanDisplay::updateAppearance);
   connect(relief_properties_.get(), &ReliefProperties::skinMapChanged, this,
           &DressedHumanDisplay::regenerateSkinRelief);
+  connect(relief_properties_.get(), &ReliefProperties::skinSizeChanged, this,
+          &DressedHumanDisplay::resizeSkinRelief);
+  connect(relief_properties_.get(), &ReliefProperties::clothMapChanged, this,
+          &DressedHumanDisplay::regenerateClothRelief);
   connect(lod_properties_.get(), &LodProperties::vertexEvaluationChanged, this,
           &DressedHumanDisplay::updateVertexEvaluation);
   connect(debug_properties_.get(), &DebugProperties::changed, this, &DressedHumanDisplay::updateAppearance);
@@ -77,7 +81,7 @@ void DressedHumanDisplay::onInitialize() {
   garment_properties_->updateVisibility();
   crowd_properties_->updateVisibility();
   regenerateSkinRelief();
-  relief_jobs_.startCloth();
+  regenerateClothRelief();
   loadCrowdFile();  // and the robot description, and every human
 }
 
@@ -240,7 +244,7 @@ void DressedHumanDisplay::configure(DrawnHuman& human, bool report) {
   for (const FinishedReliefMap& done : normal_maps_) {
     human.visual().setNormalMap(done);
   }
-  human.resetReliefVisibility(relief_properties_->skinParameters().cell_size);
+  applySkinCellSize(human);
   applyVertexEvaluation(human, report);
   applyAppearance(human);
 }
@@ -330,7 +334,21 @@ void DressedHumanDisplay::applyAppearance(DrawnHuman& human) {
 void DressedHumanDisplay::regenerateSkinRelief() {
   // Built off rviz's thread; a change meanwhile is built when the running map is done.
   relief_jobs_.requestSkin(relief_properties_->skinParameters());
-  for (auto& human : humans_) human.second->resetReliefVisibility(relief_properties_->skinParameters().cell_size);
+}
+
+void DressedHumanDisplay::regenerateClothRelief() { relief_jobs_.requestCloth(relief_properties_->foldSoftness()); }
+
+void DressedHumanDisplay::resizeSkinRelief() {
+  for (auto& human : humans_) applySkinCellSize(*human.second);
+}
+
+void DressedHumanDisplay::applySkinCellSize(DrawnHuman& human) {
+  try {
+    human.resetReliefVisibility(relief_properties_->skinCellSize());
+    status_.clear("Skin cell size");
+  } catch (const std::exception& error) {
+    status_.error("Skin cell size", error.what());
+  }
 }
 
 void DressedHumanDisplay::pollReliefMaps() {

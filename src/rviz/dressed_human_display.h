@@ -54,8 +54,12 @@ class DressedHumanDisplay : public rviz::Display {
   void updateVertexEvaluation();
   void updateAppearance();
   void regenerateSkinRelief();
+  void regenerateClothRelief();
+  void resizeSkinRelief();
 
  private:
+  // The skin cells' size on `human`'s body from the property; a bad size is the display's error.
+  void applySkinCellSize(DrawnHuman& human);
   // A human of the robot description's skeleton with `suffix` ("" or "_<id>") on its frames,
   // dressed and coloured as the properties (and, for a crowd, the crowd file) say.
   // `stature`: its size against the skeleton's (a crowd message's); NaN: read from its TF.

@@ -55,9 +55,10 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     }
     // Split shared vertices only where a relief texture is drawn: they cost vertices (+27 % at
     // level 8, +118 % at level 2), and a relief too small to see is not drawn.
-    const PatchCornerSplit* corners = relief_shown_[source.relief] ? source.corners : nullptr;
+    SurfaceMeshObject::ReliefTexturing texturing;
+    if (relief_shown_[source.relief]) texturing = {source.corners, source.relief_tiles, source.relief_tiles_id};
     if (source.evaluated) {
-      part.mesh->update(*source.mesh, corners, source.relief_weight, source.fold_axis, source.hidden_patches,
+      part.mesh->update(*source.mesh, texturing, source.relief_weight, source.fold_axis, source.hidden_patches,
                         source.bounds);
       continue;
     }
@@ -65,7 +66,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
     const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[ReliefKind::kCloth];
     part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, corners, source.inverse_rest_metric, source.hidden_patches, source.layout_id,
+    part.mesh->updateLayout(*source.mesh, texturing, source.inverse_rest_metric, source.hidden_patches, source.layout_id,
                             source.bounds);
   }
 }

@@ -73,7 +73,16 @@ void SurfaceMeshObject::addTriangles(const std::vector<std::uint32_t>& indices, 
   }
 }
 
-void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit* corners,
+Eigen::Vector2f SurfaceMeshObject::reliefCoordinate(const TriangleMesh& mesh, const ReliefTexturing& texturing,
+                                                    std::size_t i) {
+  const PatchCornerSplit* corners = texturing.corners;
+  const Eigen::Vector2f& uv = corners ? corners->uv[i] : mesh.uv[i];
+  if (texturing.tiles == nullptr) return uv;
+  const std::uint32_t patch = corners ? corners->patch[i] : mesh.vertex_patch[i];
+  return uv.cwiseProduct((*texturing.tiles)[patch]);
+}
+
+void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& texturing,
                                const std::vector<float>* relief_weight, const std::vector<Eigen::Vector2f>* fold_axis,
                                const std::vector<bool>* hidden_patches, const Eigen::AlignedBox3f& bounds) {
   layout_id_ = 0;
@@ -85,7 +94,8 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit*
                                 " relief weights and " + std::to_string(fold_axis ? fold_axis->size() : vertices) +
                                 " fold axes");
   }
-  if (corners) checkCorners(*corners, vertices);
+  const PatchCornerSplit* corners = texturing.corners;
+  checkTexturing(mesh, texturing);
   const std::vector<std::uint32_t>& indices = corners ? corners->indices : mesh.indices;
   const std::size_t count = corners ? corners->source.size() : vertices;
   if (!beginFilling(count, indices.size())) return;
@@ -94,7 +104,7 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit*
     const Eigen::Vector3f& p = mesh.positions[v];
     const Eigen::Vector3f& n = mesh.normals[v];
     const Eigen::Vector3f& t = mesh.tangents_u[v];
-    const Eigen::Vector2f& uv = corners ? corners->uv[i] : mesh.uv[v];
+    const Eigen::Vector2f uv = reliefCoordinate(mesh, texturing, i);
     object_->position(p.x(), p.y(), p.z());
     object_->normal(n.x(), n.y(), n.z());
     object_->tangent(t.x(), t.y(), t.z());
@@ -107,11 +117,13 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const PatchCornerSplit*
   setBounds(bounds);
 }
 
-void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCornerSplit* corners,
+void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const ReliefTexturing& texturing,
                                      const std::vector<Eigen::Vector4f>* inverse_rest_metric,
                                      const std::vector<bool>* hidden_patches, std::uint64_t layout_id,
                                      const Eigen::AlignedBox3f& bounds) {
-  if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_ ||
+  const PatchCornerSplit* corners = texturing.corners;
+  const std::uint64_t tiles = texturing.tiles ? texturing.tiles_id : 0;
+  if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_ || tiles != tiles_sent_ ||
       hidden_patches != hidden_sent_) {
     const std::size_t vertices = layout.uv.size();
     if (layout.vertex_patch.size() != vertices ||
@@ -121,7 +133,7 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCorn
                                   std::to_string(inverse_rest_metric ? inverse_rest_metric->size() : vertices) +
                                   " rest metrics");
     }
-    if (corners) checkCorners(*corners, vertices);
+    checkTexturing(layout, texturing);
     const std::vector<std::uint32_t>& indices = corners ? corners->indices : layout.indices;
     const std::size_t count = corners ? corners->source.size() : vertices;
     if (!beginFilling(count, indices.size())) return;
@@ -131,27 +143,44 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const PatchCorn
       object_->position(layout.uv[v].x(), layout.uv[v].y(), static_cast<float>(layout.vertex_patch[v]));
       const Eigen::Vector4f metric = inverse_rest_metric ? (*inverse_rest_metric)[v] : Eigen::Vector4f::Zero();
       object_->textureCoord(metric.x(), metric.y(), metric.z(), metric.w());
-      const Eigen::Vector2f& uv = corners ? corners->uv[i] : layout.uv[v];
+      const Eigen::Vector2f uv = reliefCoordinate(layout, texturing, i);
       object_->textureCoord(uv.x(), uv.y());
     }
     addTriangles(indices, layout, hidden_patches);
     object_->end();
     layout_id_ = layout_id;  // only now: a layout that failed above is tried again next frame
     split_sent_ = corners != nullptr;
+    tiles_sent_ = tiles;
     hidden_sent_ = hidden_patches;
   }
   setBounds(bounds);
 }
 
-void SurfaceMeshObject::checkCorners(const PatchCornerSplit& corners, std::size_t vertices) {
-  if (corners.uv.size() != corners.source.size()) {
-    throw std::invalid_argument("corner split with " + std::to_string(corners.source.size()) + " sources has " +
-                                std::to_string(corners.uv.size()) + " uv");
+void SurfaceMeshObject::checkTexturing(const TriangleMesh& mesh, const ReliefTexturing& texturing) {
+  const std::size_t vertices = mesh.uv.size();
+  if (const PatchCornerSplit* corners = texturing.corners) {
+    if (corners->uv.size() != corners->source.size() || corners->patch.size() != corners->source.size()) {
+      throw std::invalid_argument("corner split with " + std::to_string(corners->source.size()) + " sources has " +
+                                  std::to_string(corners->uv.size()) + " uv and " +
+                                  std::to_string(corners->patch.size()) + " patches");
+    }
+    for (const std::uint32_t source : corners->source) {
+      if (source >= vertices) {
+        throw std::invalid_argument("corner split refers to vertex " + std::to_string(source) + " of a mesh of " +
+                                    std::to_string(vertices));
+      }
+    }
   }
-  for (const std::uint32_t source : corners.source) {
-    if (source >= vertices) {
-      throw std::invalid_argument("corner split refers to vertex " + std::to_string(source) + " of a mesh of " +
-                                  std::to_string(vertices));
+  if (texturing.tiles == nullptr) return;
+  const std::vector<std::uint32_t>& patches = texturing.corners ? texturing.corners->patch : mesh.vertex_patch;
+  if (!texturing.corners && patches.size() != vertices) {
+    throw std::invalid_argument("mesh with " + std::to_string(vertices) + " vertices has " +
+                                std::to_string(patches.size()) + " vertex patches");
+  }
+  for (const std::uint32_t patch : patches) {
+    if (patch >= texturing.tiles->size()) {
+      throw std::invalid_argument("relief tiles for " + std::to_string(texturing.tiles->size()) +
+                                  " patches, a vertex on patch " + std::to_string(patch));
     }
   }
 }

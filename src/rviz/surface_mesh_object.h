@@ -26,24 +26,33 @@ class SurfaceMeshObject {
   SurfaceMeshObject(const SurfaceMeshObject&) = delete;
   SurfaceMeshObject& operator=(const SurfaceMeshObject&) = delete;
 
-  // Vertices and triangles as `corners` says (SurfacePart::corners: the mesh's, shared vertices
-  // split per patch), each with its patch's (u, v); null: the mesh's own (fewer vertices, for a
-  // surface drawn without its relief texture). Second texture coordinate, per vertex:
+  // How the relief texture lies on the surface: `corners`, the vertices and triangles
+  // (SurfacePart::corners: the mesh's, shared vertices split per patch, each with its patch's
+  // (u, v); null: the mesh's own, fewer vertices, for a surface drawn without its relief
+  // texture), and `tiles`, the tiles per patch its (u, v) are scaled by (SurfacePart::relief_tiles;
+  // null: one), which change only with `tiles_id`.
+  struct ReliefTexturing {
+    const PatchCornerSplit* corners = nullptr;
+    const std::vector<Eigen::Vector2f>* tiles = nullptr;
+    std::uint64_t tiles_id = 0;
+  };
+
+  // Vertices and triangles as `texturing` says. Second texture coordinate, per vertex:
   // `relief_weight` (how much relief shows; null: 1) and `fold_axis` (which way garment folds
   // run, SurfacePart::fold_axis; null: zeros). `bounds`: encloses the posed surface
   // (SurfacePart::bounds). `hidden_patches`: triangles on these patches are left out
   // (SurfacePart::hidden_patches; null: none). Throws std::invalid_argument for per-vertex or
   // per-patch data of another size.
-  void update(const TriangleMesh& mesh, const PatchCornerSplit* corners, const std::vector<float>* relief_weight,
+  void update(const TriangleMesh& mesh, const ReliefTexturing& texturing, const std::vector<float>* relief_weight,
               const std::vector<Eigen::Vector2f>* fold_axis, const std::vector<bool>* hidden_patches,
               const Eigen::AlignedBox3f& bounds);
   // Per vertex the owner's (u, v, patch) as the position, the garment's rest metric
   // (VertexCompression::inverseRestMetric; null: zeros) as texture coordinate 0 and the
-  // vertex's own patch (u, v) (`corners`, or null as above) as texture coordinate 1; triangles
-  // on `hidden_patches` left out as above. Nothing is sent while `layout_id`, whether `corners`
-  // is given and `hidden_patches` stay the same; `bounds` (the posed surface's) is set every
+  // vertex's relief texture coordinate (`texturing` as above) as texture coordinate 1; triangles
+  // on `hidden_patches` left out as above. Nothing is sent while `layout_id`, whether corners are
+  // given, the tiles and `hidden_patches` stay the same; `bounds` (the posed surface's) is set every
   // frame, since the (u, v, patch) positions say nothing about where the surface is.
-  void updateLayout(const TriangleMesh& layout, const PatchCornerSplit* corners,
+  void updateLayout(const TriangleMesh& layout, const ReliefTexturing& texturing,
                     const std::vector<Eigen::Vector4f>* inverse_rest_metric, const std::vector<bool>* hidden_patches,
                     std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds);
   void setMaterial(const std::string& material);
@@ -59,12 +68,15 @@ class SurfaceMeshObject {
   std::size_t rebuild_count_ = 0;                   // buffer (re)creations
   std::uint64_t layout_id_ = 0;                     // of the layout the buffers hold; 0: evaluated vertices
   bool split_sent_ = false;                         // the buffers hold the corner split of that layout
+  std::uint64_t tiles_sent_ = 0;                    // with these tiles per patch
   const std::vector<bool>* hidden_sent_ = nullptr;  // and left out these patches' triangles
   bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
+  // Split vertex i's relief texture coordinate (vertex i of `mesh` without corners).
+  static Eigen::Vector2f reliefCoordinate(const TriangleMesh& mesh, const ReliefTexturing& texturing, std::size_t i);
   void addTriangles(const std::vector<std::uint32_t>& indices, const TriangleMesh& mesh,
                     const std::vector<bool>* hidden_patches);
   void setBounds(const Eigen::AlignedBox3f& bounds);
-  static void checkCorners(const PatchCornerSplit& corners, std::size_t vertices);
+  static void checkTexturing(const TriangleMesh& mesh, const ReliefTexturing& texturing);
 };
 
 }  // namespace dressed_human

@@ -66,8 +66,7 @@ std::vector<SkeletonPose> walkPoses(const std::string& source, const Skeleton& s
 
 // The garment's map before issue 21: the exact Y-Y tile with L_y = L_x, once per patch.
 ReliefMap previousWrinkleMap() {
-  WrinkleMapSpec spec = garmentWrinkleMapSpec();
-  spec.surface = WrinkleSurface::exactFolds;
+  WrinkleMapSpec spec = garmentWrinkleMapSpec(0.0);
   spec.cell.half_length_y = spec.cell.half_width_x;
   return transposed(makeWrinkleMap(spec));
 }
@@ -92,7 +91,7 @@ int run(const std::string& source, const std::string& directory) {
   const BodyDescription body = loadBodyDescriptionFile(source + "/config/bodies/default.yaml", skeleton);
   const std::vector<SkeletonPose> poses = walkPoses(source, skeleton, body.shape);
   const FoldTiles smooth = garmentFoldTiles();
-  const FoldTiles exact = garmentFoldTiles(512, WrinkleSurface::exactFolds);
+  const FoldTiles exact = garmentFoldTiles(512, 0.0);
   const ReliefMap before = previousWrinkleMap();
   WrinklePlacementOptions previous_options;
   previous_options.alpha_threshold = 0.98;

@@ -51,6 +51,7 @@ TEST(PatchCornerSplit, EveryTriangleSeesItsOwnPatchParameters) {
       const std::uint32_t v = split.indices[c];
       EXPECT_EQ(split.source[v], mesh.indices[c]) << "same position";
       EXPECT_LT((split.uv[v] - corners[c].cast<float>()).norm(), 1e-5f) << "corner " << c;
+      EXPECT_EQ(split.patch[v], mesh.triangle_patch[c / 3]) << "corner " << c;
       if (v >= mesh.vertexCount()) copied.insert(mesh.indices[c]);
     }
     for (std::size_t i = 0; i < mesh.vertexCount(); ++i) EXPECT_EQ(split.source[i], i);

@@ -27,7 +27,7 @@ TEST(ReliefMapJobs, BuildsBothMapsOffThisThread) {
   ReliefMapJobs jobs;
   EXPECT_TRUE(jobs.poll().empty());
   jobs.requestSkin(SkinReliefParameters());
-  jobs.startCloth();
+  jobs.requestCloth();
   const std::vector<FinishedReliefMap> done = pollFor(jobs, 2);
   ASSERT_EQ(done.size(), 2u);
   for (const FinishedReliefMap& map : done) {
@@ -67,7 +67,7 @@ TEST(ReliefMapJobs, JobsAskingForTheSameMapShareOneBuild) {
   for (int h = 0; h < 10; ++h) {
     humans.push_back(std::make_unique<ReliefMapJobs>());
     humans.back()->requestSkin(SkinReliefParameters());
-    humans.back()->startCloth();
+    humans.back()->requestCloth();
   }
   EXPECT_EQ(ReliefMapJobs::buildCount() - before, 2u) << "one skin and one cloth build for ten humans";
   std::vector<std::vector<FinishedReliefMap>> done;
@@ -88,7 +88,7 @@ TEST(ReliefMapJobs, JobsAskingForTheSameMapShareOneBuild) {
   // An eleventh human, after the builds ended, gets them at once without a new build.
   ReliefMapJobs late;
   late.requestSkin(SkinReliefParameters());
-  late.startCloth();
+  late.requestCloth();
   EXPECT_EQ(late.poll().size(), 2u);
   EXPECT_EQ(late.map(ReliefKind::kSkin), skin);
   EXPECT_EQ(ReliefMapJobs::buildCount() - before, 2u);
@@ -132,6 +132,44 @@ TEST(ReliefMapJobs, ABadParameterComesBackAsAnErrorAndKeepsTheLastMap) {
   EXPECT_FALSE(done[0].map);
   EXPECT_NE(done[0].error.find("levels"), std::string::npos) << done[0].error;
   EXPECT_EQ(jobs.map(ReliefKind::kSkin), good);
+}
+
+// Fold softness (issue 40): another softness is another cloth map, built as asked; 0 is the exact
+// folds; one outside [0, kMaxFoldSoftness] comes back as an error naming it, the last map kept.
+TEST(ReliefMapJobs, FoldSoftnessBuildsItsOwnClothMap) {
+  ReliefMapJobs jobs;
+  jobs.requestCloth(0.0);
+  ASSERT_EQ(pollFor(jobs, 1).size(), 1u);
+  const std::shared_ptr<const ReliefMap> exact = jobs.map(ReliefKind::kCloth);
+  ASSERT_TRUE(exact);
+  EXPECT_EQ(exact->heights, garmentFoldTiles(512, 0.0).strong.heights);
+  EXPECT_EQ(garmentWrinkleMapSpec(0.0).surface, WrinkleSurface::exactFolds);
+  jobs.requestCloth(0.2);
+  ASSERT_EQ(pollFor(jobs, 1).size(), 1u);
+  const std::shared_ptr<const ReliefMap> soft = jobs.map(ReliefKind::kCloth);
+  ASSERT_TRUE(soft);
+  EXPECT_NE(soft->heights, exact->heights);
+  EXPECT_EQ(soft->heights, garmentFoldTiles(512, 0.2).strong.heights);
+  jobs.requestCloth(kMaxFoldSoftness + 0.1);
+  const std::vector<FinishedReliefMap> done = pollFor(jobs, 1);
+  ASSERT_EQ(done.size(), 1u);
+  EXPECT_FALSE(done[0].map);
+  EXPECT_NE(done[0].error.find("fold softness"), std::string::npos) << done[0].error;
+  EXPECT_EQ(jobs.map(ReliefKind::kCloth), soft);
+}
+
+// The blur a softness asks for is what the harmonics give, never more (and within one harmonic).
+TEST(ReliefMapJobs, FoldBlurComesFromWholeHarmonics) {
+  for (const double blur : {0.01, 0.03, 0.0296, 0.12, 0.2, 0.3}) {
+    const int harmonics = smoothHarmonicsForBlur(blur);
+    EXPECT_LE(smoothFoldBlur(harmonics), blur + 1e-12) << blur;
+    if (harmonics > 1) {
+      EXPECT_GT(smoothFoldBlur(harmonics - 1), blur) << blur;
+    }
+  }
+  EXPECT_EQ(smoothHarmonicsForBlur(smoothFoldBlur(20)), 20);  // the earlier fixed 20 harmonics
+  EXPECT_THROW(smoothHarmonicsForBlur(0.0), std::invalid_argument);
+  EXPECT_THROW(smoothHarmonicsForBlur(-1.0), std::invalid_argument);
 }
 
 TEST(ReliefMapJobs, SameSkinParametersComparesTheUserFields) {

@@ -53,20 +53,27 @@ TEST(ReliefVisibility, HidesWhereItWouldFadeToNothingAndShowsAgainWithHysteresis
   EXPECT_THROW(ReliefVisibility(std::nan("")), std::invalid_argument);
 }
 
-TEST(ReliefVisibility, TheModelsTileSizesAreItsPatchSizes) {
+TEST(ReliefVisibility, TheModelsFeatureSizes) {
   using namespace garment_test;
   HumanModelSettings settings;
   settings.outfit = Outfit::kJacketSkirt;
   settings.garment_directory = sourcePath("config/garments");
-  const HumanModel model(skeleton(), body(), settings);
-  const double skin = model.reliefTileSize(ReliefKind::kSkin);
-  const double cloth = model.reliefTileSize(ReliefKind::kCloth);
-  EXPECT_GT(skin, 0.03);  // limb patches a quarter of a limb around, trunk patches larger
-  EXPECT_LT(skin, 0.3);
-  EXPECT_GT(cloth, skin);  // garments have few, large patches
-  EXPECT_LT(cloth, 0.8);
+  HumanModel model(skeleton(), body(), settings);
+  // Skin: its largest cells, a millimetre or so on the body (skin_relief_tiling.h), whatever
+  // the patches' size.
+  const double skin = model.reliefFeatureSize(ReliefKind::kSkin);
+  EXPECT_GT(skin, 0.8e-3);
+  EXPECT_LT(skin, 2e-3);
+  model.setSkinCellSize(2.0 * SkinReliefTiling::measuredForearmSpacing());
+  EXPECT_NEAR(model.reliefFeatureSize(ReliefKind::kSkin), 2.0 * skin, 1e-12);
+  EXPECT_THROW(model.setSkinCellSize(0.0), std::invalid_argument);
+  // Cloth: folds half a buckling cell apart, 2 cells per fold tile and 3 tiles per patch: a few
+  // centimetres on the garments' large patches.
+  const double cloth = model.reliefFeatureSize(ReliefKind::kCloth);
+  EXPECT_GT(cloth, 0.005);
+  EXPECT_LT(cloth, 0.07);
   settings.outfit = Outfit::kNone;
-  EXPECT_EQ(HumanModel(skeleton(), body(), settings).reliefTileSize(ReliefKind::kCloth), 0.0);
+  EXPECT_EQ(HumanModel(skeleton(), body(), settings).reliefFeatureSize(ReliefKind::kCloth), 0.0);
 }
 
 }  // namespace

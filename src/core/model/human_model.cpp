@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "dressed_human/core/garments/garment_file.h"
+#include "dressed_human/core/model/relief_map_jobs.h"
 #include "dressed_human/core/model/relief_visibility.h"
 #include "dressed_human/core/surfaces/covered_patches.h"
 #include "dressed_human/core/surfaces/patch_keyed_cache.h"
@@ -104,7 +105,10 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 }
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
-    : settings_(settings), skin_(skeleton, body), skin_error_bound_(CalibratedErrorBound::shared(skin_.patches())) {
+    : settings_(settings),
+      skin_(skeleton, body),
+      skin_error_bound_(CalibratedErrorBound::shared(skin_.patches())),
+      skin_tiling_(skin_) {
   parts_.push_back(surfacePart("skin", ReliefKind::kSkin, settings_.skin_colour));
   parts_.back().closed = true;  // every skin part is a closed surface (skin.h)
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
@@ -128,15 +132,24 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
     parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
   }
   corner_splits_.resize(parts_.size());
-  relief_tile_size_[ReliefKind::kSkin] = typicalPatchSize(skin_.patches());
   std::vector<BezierPatch> cloth;
   for (const DressedGarment& dressed : garments_) {
     cloth.insert(cloth.end(), dressed.rest_patches.begin(), dressed.rest_patches.end());
   }
-  if (!cloth.empty()) relief_tile_size_[ReliefKind::kCloth] = typicalPatchSize(cloth);
+  if (!cloth.empty()) cloth_patch_size_ = typicalPatchSize(cloth);
   std::vector<const std::vector<BezierPatch>*> rest{&skin_.patches()};  // built in the same rest pose
   for (const DressedGarment& dressed : garments_) rest.push_back(&dressed.rest_patches);
   covered_ = sharedCoveredPatches(rest);
+}
+
+void HumanModel::setSkinCellSize(double forearm_cell_spacing) {
+  skin_tiling_.setForearmCellSpacing(forearm_cell_spacing);
+  ++skin_tiles_id_;
+}
+
+double HumanModel::reliefFeatureSize(ReliefKind kind) const {
+  if (kind == ReliefKind::kSkin) return skin_tiling_.largestCellSpacing();
+  return cloth_patch_size_ / (2.0 * garmentWrinkleMapSpec().cells_around * kFoldTilesPerPatch);
 }
 
 Eigen::AlignedBox3f HumanModel::bounds() const {
@@ -242,6 +255,10 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
       corners.layout_id = part.layout_id;
     }
     part.corners = &corners.split;
+    if (p == 0) {
+      part.relief_tiles = &skin_tiling_.tilesPerPatch();
+      part.relief_tiles_id = skin_tiles_id_;
+    }
     if (p > 0) {
       DressedGarment& dressed = garments_[p - 1];
       VertexCompression& compression = dressed.compression;
@@ -272,6 +289,7 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     }
     if (displacement.map) {
       ReliefDisplacement settings = displacement.settings;
+      settings.patch_tiles = part.relief_tiles;
       settings.weights = part.relief_weight;
       settings.fold_axes = part.fold_axis;
       settings.patch_levels = levels;

@@ -4,13 +4,16 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace dressed_human {
 
 struct ReliefMapJobs::SharedBuild {
   ReliefKind kind;
-  SkinReliefParameters skin;  // the key, with kind (unused for cloth)
+  SkinReliefParameters skin;  // the key, with kind: the skin's parameters, the cloth's softness
+  double fold_softness = 0.0;
   std::shared_future<FinishedReliefMap> result;
 };
 
@@ -24,19 +27,23 @@ std::atomic<std::size_t> builds{0};
 // The build of (kind, skin) in the registry, or a new one running `build` on its own thread;
 // what it throws comes back as the result's error.
 template <typename Build>
-std::shared_ptr<ReliefMapJobs::SharedBuild> obtain(ReliefKind kind, const SkinReliefParameters& skin, Build build) {
+std::shared_ptr<ReliefMapJobs::SharedBuild> obtain(ReliefKind kind, const SkinReliefParameters& skin,
+                                                   double fold_softness, Build build) {
   std::lock_guard<std::mutex> lock(registry_mutex);
   registry.erase(std::remove_if(registry.begin(), registry.end(), [](const auto& entry) { return entry.expired(); }),
                  registry.end());
   for (const std::weak_ptr<ReliefMapJobs::SharedBuild>& entry : registry) {
     std::shared_ptr<ReliefMapJobs::SharedBuild> shared = entry.lock();
-    if (shared && shared->kind == kind && (kind == ReliefKind::kCloth || sameSkinParameters(shared->skin, skin))) {
+    const bool same = kind == ReliefKind::kCloth ? shared && shared->fold_softness == fold_softness
+                                                 : shared && sameSkinParameters(shared->skin, skin);
+    if (shared && shared->kind == kind && same) {
       return shared;
     }
   }
   auto shared = std::make_shared<ReliefMapJobs::SharedBuild>();
   shared->kind = kind;
   shared->skin = skin;
+  shared->fold_softness = fold_softness;
   shared->result = std::async(std::launch::async, [kind, build] {
                      FinishedReliefMap done;
                      done.kind = kind;
@@ -75,7 +82,11 @@ ReliefMap transposed(const ReliefMap& map) {
   return out;
 }
 
-WrinkleMapSpec garmentWrinkleMapSpec() {
+WrinkleMapSpec garmentWrinkleMapSpec(double fold_softness) {
+  if (!(fold_softness >= 0.0 && fold_softness <= kMaxFoldSoftness)) {
+    throw std::invalid_argument("fold softness " + std::to_string(fold_softness) + " is outside [0, " +
+                                std::to_string(kMaxFoldSoftness) + "] buckling cells");
+  }
   // Y-Y chains (SPEC §4), the pattern wrinkle placement picks for the default garments' patches
   // (their surfaces turn about half a bend angle per cell; wrinkle_placement.h), at a strong
   // compression; a few large cells per patch, as cloth buckles at the scale of a hand, not of a
@@ -91,16 +102,20 @@ WrinkleMapSpec garmentWrinkleMapSpec() {
   // Cells square once compressed (2 L_x = 2 alpha L_y): the tile is square in space as in
   // pixels, so its slopes turn with the lookups of oriented_folds.h.
   spec.cell.half_length_y = spec.cell.half_width_x / spec.alpha[0];
-  // Soft folds, not the exact tile's creases (issue 21): the tile blurred through its own Fourier
-  // series, within 5 % of the exact folds' height (wrinkle_map.h).
-  spec.surface = WrinkleSurface::smoothFolds;
+  // Soft folds (issue 40): the exact tile blurred through its own Fourier series, as far as the
+  // cloth's softness says; 0 keeps the exact creases.
+  if (fold_softness > 0.0) {
+    spec.surface = WrinkleSurface::smoothFolds;
+    spec.smooth_harmonics_per_cell = smoothHarmonicsForBlur(fold_softness);
+  } else {
+    spec.surface = WrinkleSurface::exactFolds;
+  }
   return spec;
 }
 
-FoldTiles garmentFoldTiles(int pixels, WrinkleSurface surface) {
-  WrinkleMapSpec strong = garmentWrinkleMapSpec();
+FoldTiles garmentFoldTiles(int pixels, double fold_softness) {
+  WrinkleMapSpec strong = garmentWrinkleMapSpec(fold_softness);
   strong.width_pixels = strong.height_pixels = pixels;
-  strong.surface = surface;
   WrinkleMapSpec slight = strong;
   slight.chain = "I";
   return FoldTiles(transposed(makeWrinkleMap(slight)), transposed(makeWrinkleMap(strong)));
@@ -124,7 +139,7 @@ void ReliefMapJobs::requestSkin(const SkinReliefParameters& parameters) {
 
 void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
   // A 512^2 map takes a noticeable fraction of a second; a bad parameter throws inside the job.
-  jobs_[ReliefKind::kSkin].running = obtain(ReliefKind::kSkin, parameters, [parameters] {
+  jobs_[ReliefKind::kSkin].running = obtain(ReliefKind::kSkin, parameters, 0.0, [parameters] {
     FinishedReliefMap done;
     auto map = std::make_shared<const ReliefMap>(SkinRelief(parameters).render(kSkinMapSize, kSkinMapSize));
     done.normal_map = std::make_shared<const EncodedNormalMap>(encodeNormalMapMips(*map));
@@ -134,15 +149,21 @@ void ReliefMapJobs::startSkin(const SkinReliefParameters& parameters) {
   skin_started_ = parameters;
 }
 
-void ReliefMapJobs::startCloth() {
-  jobs_[ReliefKind::kCloth].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), [] {
+void ReliefMapJobs::requestCloth(double fold_softness) {
+  cloth_requested_ = fold_softness;
+  if (!busy(ReliefKind::kCloth)) startCloth(fold_softness);
+}
+
+void ReliefMapJobs::startCloth(double fold_softness) {
+  jobs_[ReliefKind::kCloth].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), fold_softness, [fold_softness] {
     FinishedReliefMap done;
-    auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles());
+    auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles(512, fold_softness));
     done.normal_map = std::make_shared<const EncodedNormalMap>(encodeFoldTilesMips(*tiles));
     done.map = std::shared_ptr<const ReliefMap>(tiles, &tiles->strong);
     done.fold_tiles = std::move(tiles);
     return done;
   });
+  cloth_started_ = fold_softness;
 }
 
 float ReliefMapJobs::clothHeightToTile() {
@@ -164,6 +185,7 @@ std::vector<FinishedReliefMap> ReliefMapJobs::poll() {
     }
     job.running.reset();
     if (kind == ReliefKind::kSkin && !sameSkinParameters(skin_requested_, skin_started_)) startSkin(skin_requested_);
+    if (kind == ReliefKind::kCloth && cloth_requested_ != cloth_started_) startCloth(cloth_requested_);
   }
   return finished;
 }

@@ -67,6 +67,16 @@ void checkReliefDisplacement(const ReliefDisplacement& displacement) {
     throw std::invalid_argument("relief displacement: fold tiles are laid out per patch; tiling " +
                                 std::to_string(displacement.tiling) + " must be 1");
   }
+  if (displacement.patch_tiles != nullptr) {
+    if (displacement.folds != nullptr) {
+      throw std::invalid_argument("relief displacement: fold tiles are laid out per patch; no tiles per patch");
+    }
+    for (const Eigen::Vector2f& tiles : *displacement.patch_tiles) {
+      if (!(tiles.minCoeff() > 0.0f) || !tiles.allFinite()) {
+        throw std::invalid_argument("relief displacement: tiles per patch must be finite and > 0");
+      }
+    }
+  }
   const bool mips = displacement.map_mips != nullptr || displacement.fold_mips != nullptr;
   if (mips && displacement.patch_levels == nullptr) {
     throw std::invalid_argument("relief displacement: mip chains need the patches' tessellation levels");
@@ -104,6 +114,18 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     throw std::invalid_argument("relief displacement: " + std::to_string(base.vertex_patch.size()) +
                                 " vertex patches for " + std::to_string(n) + " vertices");
   }
+  if (displacement.patch_tiles != nullptr) {
+    if (base.vertex_patch.size() != n) {
+      throw std::invalid_argument("relief displacement: " + std::to_string(base.vertex_patch.size()) +
+                                  " vertex patches for " + std::to_string(n) + " vertices");
+    }
+    for (const std::uint32_t patch : base.vertex_patch) {
+      if (patch >= displacement.patch_tiles->size()) {
+        throw std::invalid_argument("relief displacement: vertex on patch " + std::to_string(patch) + " of " +
+                                    std::to_string(displacement.patch_tiles->size()) + " with tiles");
+      }
+    }
+  }
   out.positions.resize(n);
   out.normals.resize(n);
   out.tangents_u = base.tangents_u;
@@ -112,7 +134,6 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
   out.vertex_patch = base.vertex_patch;
   out.indices = base.indices;
   out.triangle_patch = base.triangle_patch;
-  const double tiling = displacement.tiling;
   const std::vector<int>* patch_levels = displacement.patch_levels;
   for (std::size_t i = 0; i < n; ++i) {
     double uv_spacing = 0.0;  // between this vertex and the next, in patch coordinates
@@ -132,25 +153,29 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     const double amplitude = displacement.amplitude * (displacement.folds ? 1.0f : weight);
     const Eigen::Vector2f axis = displacement.fold_axes ? (*displacement.fold_axes)[i] : Eigen::Vector2f::Zero();
     const Eigen::Vector2d uv = base.uv[i].cast<double>();
+    const Eigen::Vector2d tiles = displacement.patch_tiles != nullptr
+                                      ? Eigen::Vector2d((*displacement.patch_tiles)[base.vertex_patch[i]].cast<double>())
+                                      : Eigen::Vector2d::Constant(displacement.tiling);
     ReliefSample relief;
     if (displacement.folds) {
       relief = displacement.fold_mips ? orientedFolds(*displacement.fold_mips, uv, axis, weight, uv_spacing)
                                       : orientedFolds(*displacement.folds, uv, axis, weight);
     } else {
-      relief = displacement.map_mips ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiling, uv.y() * tiling,
-                                                          uv_spacing * tiling * map->width)
-                                     : sampleReliefMap(*map, uv.x() * tiling, uv.y() * tiling);
+      relief = displacement.map_mips ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiles.x(),
+                                                          uv.y() * tiles.y(), uv_spacing * tiles.maxCoeff() * map->width)
+                                     : sampleReliefMap(*map, uv.x() * tiles.x(), uv.y() * tiles.y());
     }
     const double lu = fu.norm(), lv = fv.norm();
     // At a pole one derivative vanishes: the tile has no size there and nothing moves.
-    const double metres_per_tile = std::sqrt(lu * lv) / tiling;
+    const double metres_per_tile = std::sqrt(lu * lv / tiles.prod());
     out.positions[i] = (base.positions[i].cast<double>() +
                         normal * (amplitude * displacement.height_to_tile * relief.height * metres_per_tile))
                            .cast<float>();
     Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
     if (lu > 1e-12 && lv > 1e-12) {
-      const double scale = amplitude * std::sqrt(lu * lv);
-      gradient = scale * (relief.slope.x() * fu / (lu * lu) + relief.slope.y() * fv / (lv * lv));
+      // The map's slopes per tile, turned into per patch parameter by the tiles along each.
+      const double scale = amplitude * metres_per_tile;
+      gradient = scale * (relief.slope.x() * tiles.x() * fu / (lu * lu) + relief.slope.y() * tiles.y() * fv / (lv * lv));
       gradient -= gradient.dot(normal) * normal;
     }
     out.normals[i] = (normal - gradient).normalized().cast<float>();

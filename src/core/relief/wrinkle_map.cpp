@@ -4,6 +4,7 @@
 #include "dressed_human/core/relief/fourier_low_pass.h"
 #include "dressed_human/core/relief/gaussian_fold_fit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -82,7 +83,21 @@ std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const Bucklin
   return fit;
 }
 
+
+// exp(-2 pi^2 sigma^2 k^2) = 1/1000 at k = kBlurTimesHarmonics / sigma (fourier_low_pass.cpp's taper).
+const double kBlurTimesHarmonics = std::sqrt(std::log(1000.0) / (2.0 * M_PI * M_PI));
 }  // namespace
+
+int smoothHarmonicsForBlur(double blur_cells) {
+  if (!(blur_cells > 0.0) || !std::isfinite(blur_cells)) {
+    std::ostringstream message;
+    message << "fold blur must be finite and > 0 cells, got " << blur_cells;
+    throw std::invalid_argument(message.str());
+  }
+  return std::max(1, static_cast<int>(std::ceil(kBlurTimesHarmonics / blur_cells - 1e-9)));
+}
+
+double smoothFoldBlur(int harmonics_per_cell) { return kBlurTimesHarmonics / harmonics_per_cell; }
 
 ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
   requirePositive(spec.width_pixels, "width_pixels");

@@ -16,6 +16,11 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
   }
   out.source.resize(vertices);
   out.uv.assign(mesh.uv.begin(), mesh.uv.end());
+  if (mesh.vertex_patch.size() != vertices) {
+    throw std::invalid_argument("splitPatchCorners: " + std::to_string(mesh.vertex_patch.size()) +
+                                " vertex patches for " + std::to_string(vertices) + " vertices");
+  }
+  out.patch.assign(mesh.vertex_patch.begin(), mesh.vertex_patch.end());
   for (std::size_t i = 0; i < vertices; ++i) out.source[i] = static_cast<std::uint32_t>(i);
   out.indices.resize(mesh.indices.size());
   // Corner parameters are exact grid fractions and the vertex's uv their float: a tolerance far
@@ -36,11 +41,13 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
     const auto same = [&](const Eigen::Vector2f& other) {
       return (uv - other).cwiseAbs().maxCoeff() <= kSameParameter;
     };
-    if (same(mesh.uv[vertex])) {
+    const std::uint32_t patch = mesh.triangle_patch[c / 3];
+    // Another patch's vertex is copied even where its (u, v) happens to be the same (a welded
+    // pole): the patches' relief tiles may differ (SurfacePart::relief_tiles).
+    if (same(mesh.uv[vertex]) && mesh.vertex_patch[vertex] == patch) {
       out.indices[c] = vertex;
       continue;
     }
-    const std::uint32_t patch = mesh.triangle_patch[c / 3];
     std::uint32_t* link = &first_copy[vertex];
     while (*link != kNone && !(copy_patch[*link - vertices] == patch && same(out.uv[*link]))) {
       link = &next_copy[*link - vertices];
@@ -51,6 +58,7 @@ void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector
       *link = copy;  // before the push_backs, which may move next_copy
       out.source.push_back(vertex);
       out.uv.push_back(uv);
+      out.patch.push_back(patch);
       next_copy.push_back(kNone);
       copy_patch.push_back(patch);
     }

@@ -8,6 +8,8 @@
 #include <rviz/properties/float_property.h>
 #include <rviz/properties/int_property.h>
 
+#include "dressed_human/core/model/relief_map_jobs.h"
+#include "dressed_human/core/model/skin_relief_tiling.h"
 #include "dressed_human/core/surfaces/tessellation.h"
 #include "properties/notifying.h"
 
@@ -53,12 +55,28 @@ ReliefProperties::ReliefProperties(rviz::Property* parent) {
       &ReliefProperties::appearanceChanged);
   wrinkle_strength_->setMin(0.0);
   wrinkle_strength_->setMax(5.0);
+  fold_softness_ = notifying(
+      new rviz::FloatProperty("Fold Softness", static_cast<float>(kDefaultFoldSoftness),
+                              "How round the garments' fold creases are, as thick or soft fabric folds: the exact "
+                              "buckling folds blurred by this much of a fold's width (0: the exact, sharp creases; "
+                              "0.12: an everyday jacket or skirt; up to 0.3).",
+                              parent),
+      this, &ReliefProperties::clothMapChanged);
+  fold_softness_->setMin(0.0);
+  fold_softness_->setMax(static_cast<float>(kMaxFoldSoftness));
   levels_ = notifying(new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", parent), this,
                       &ReliefProperties::skinMapChanged);
   levels_->setMin(1);
   levels_->setMax(3);
-  cell_size_ = skinFloat("Skin Cell Size", 1.0 / 12.0, "Level-1 cell spacing as a fraction of the relief tile.", 0.01,
-                         1.0, parent, this);
+  cell_size_ = notifying(
+      new rviz::FloatProperty("Skin Cell Size (m)", static_cast<float>(SkinReliefTiling::measuredForearmSpacing()),
+                              "Spacing of the skin's cells on the forearm, in metres (measured: about 1 cell per "
+                              "mm^2 of adult forearm); the face, hands, trunk and limbs keep their measured "
+                              "proportion to it. The relief shows only where its cells are a few pixels wide.",
+                              parent),
+      this, &ReliefProperties::skinSizeChanged);
+  cell_size_->setMin(1e-4f);
+  cell_size_->setMax(0.05f);
   seed_ = notifying(new rviz::IntProperty("Skin Seed", 1, "Random seed of the skin cells.", parent), this,
                     &ReliefProperties::skinMapChanged);
   seed_->setMin(0);
@@ -90,6 +108,13 @@ float ReliefProperties::skinStrength() const { return skin_strength_->getFloat()
 float ReliefProperties::wrinkleStrength() const { return wrinkle_strength_->getFloat(); }
 
 void ReliefProperties::loadRenamedKeys(const rviz::Config& config, const std::string& display) {
+  float fraction = 0.0f;
+  if (config.mapGetFloat("Skin Cell Size", &fraction)) {
+    ROS_WARN_NAMED("dressed_human",
+                   "DressedHuman display '%s': the configuration's 'Skin Cell Size' (%g of a patch's relief tile) "
+                   "is ignored; the skin's cells are now sized in metres on the body: 'Skin Cell Size (m)'",
+                   display.c_str(), fraction);
+  }
   float strength = 0.0f;
   if (!config.mapGetFloat("Relief Strength", &strength)) return;
   const bool renamed = config.mapGetChild("Skin Relief Strength").isValid();
@@ -103,7 +128,7 @@ void ReliefProperties::loadRenamedKeys(const rviz::Config& config, const std::st
 SkinReliefParameters ReliefProperties::skinParameters() const {
   SkinReliefParameters parameters;
   parameters.levels = levels_->getInt();
-  parameters.cell_size = cell_size_->getFloat();
+  parameters.cell_size = 1.0 / kSkinCellsPerTile;  // the tile's cells; their size on the body: skinCellSize()
   parameters.seed = static_cast<std::uint32_t>(seed_->getInt());
   parameters.direction_angle = direction_->getFloat() * M_PI / 180.0;
   parameters.direction_stretch = stretch_->getFloat();
@@ -113,6 +138,10 @@ SkinReliefParameters ReliefProperties::skinParameters() const {
   parameters.roundness = roundness_->getFloat();
   return parameters;
 }
+
+double ReliefProperties::skinCellSize() const { return cell_size_->getFloat(); }
+
+double ReliefProperties::foldSoftness() const { return fold_softness_->getFloat(); }
 
 void ReliefProperties::updateVisibility() { displacement_level_->setHidden(mode() != ReliefMode::kDisplacedGeometry); }
 

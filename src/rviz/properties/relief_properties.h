@@ -27,19 +27,28 @@ class ReliefProperties : public QObject {
   // "Wrinkle Strength", the cloth's) still sets it, with a deprecation warning naming `display`;
   // where both keys are saved, the new one wins.
   void loadRenamedKeys(const rviz::Config& config, const std::string& display);
+  // A configuration saved before issue 40 holds "Skin Cell Size" as a fraction of a patch's tile:
+  // it has no size in metres, so it is ignored with a warning naming `display`.
   SkinReliefParameters skinParameters() const;
+  // Level-1 skin cell spacing on the forearm (m); the other regions in their measured proportion.
+  double skinCellSize() const;
+  // The garments' fold softness (garmentWrinkleMapSpec: cells; 0 exact creases).
+  double foldSoftness() const;
   // Displacement Level shows only with displaced geometry.
   void updateVisibility();
 
  Q_SIGNALS:
   void appearanceChanged();  // mode, strengths, displacement level
   void skinMapChanged();     // a skin-relief parameter: the map must be built again
+  void skinSizeChanged();    // the skin cells' size on the body: the tiling changes, not the map
+  void clothMapChanged();    // the fold softness: the cloth map must be built again
 
  private:
   rviz::EnumProperty* mode_;
   rviz::IntProperty* displacement_level_;
   rviz::FloatProperty* skin_strength_;
   rviz::FloatProperty* wrinkle_strength_;
+  rviz::FloatProperty* fold_softness_;
   rviz::IntProperty* levels_;
   rviz::FloatProperty* cell_size_;
   rviz::IntProperty* seed_;

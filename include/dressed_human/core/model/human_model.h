@@ -21,6 +21,7 @@
 #include "dressed_human/core/surfaces/tessellation.h"
 #include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/model/relief_kind.h"
+#include "dressed_human/core/model/skin_relief_tiling.h"
 
 namespace dressed_human {
 
@@ -42,6 +43,11 @@ struct SurfacePart {
   // null: every patch is drawn. `drawn_triangles` counts the others.
   const std::vector<bool>* hidden_patches = nullptr;
   std::size_t drawn_triangles = 0;
+  // Per patch of `mesh`: how many times the relief tile repeats along u and along v on it (the
+  // skin's, sized in metres: skin_relief_tiling.h); null: once per patch (the garments' fold
+  // tiles place themselves, oriented_folds.h). `relief_tiles_id` changes whenever they do.
+  const std::vector<Eigen::Vector2f>* relief_tiles = nullptr;
+  std::uint64_t relief_tiles_id = 0;
   // Per vertex of `mesh`, how much of the relief shows there, in [0, 1]; null: all of it. For
   // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
   // wrinkles behind a bent knee, none on a straight leg.
@@ -146,10 +152,16 @@ class HumanModel {
   // the triangles for the same screen error).
   const CalibratedErrorBound& partErrorBound(std::size_t part) const;
   const Skin& skin() const { return skin_; }
-  // The size (m) of one relief tile on the parts of `kind`: the reliefs are tiled once per patch,
-  // so this is the typical patch size at rest (typicalPatchSize); 0 for cloth without garments.
-  // A relief's features are a fraction of it (ReliefVisibility).
-  double reliefTileSize(ReliefKind kind) const { return relief_tile_size_[kind]; }
+  // The skin relief's level-1 cell spacing on the forearm (m, > 0), the other regions in their
+  // measured proportion (skin_relief_tiling.h); from the next update() on. Throws
+  // std::invalid_argument for a spacing that is not positive and finite.
+  void setSkinCellSize(double forearm_cell_spacing);
+  const SkinReliefTiling& skinTiling() const { return skin_tiling_; }
+  // Metres between neighbouring features of the relief of `kind` (what ReliefVisibility judges):
+  // the skin's largest cells; the garments' folds, about half a buckling cell apart on a typical
+  // patch (cells_around cells per fold tile, kFoldTilesPerPatch tiles per patch). 0 for cloth
+  // without garments.
+  double reliefFeatureSize(ReliefKind kind) const;
   // Encloses every part as posed by the last update() (empty before).
   Eigen::AlignedBox3f bounds() const;
 
@@ -177,7 +189,9 @@ class HumanModel {
     std::vector<Eigen::Vector2f> fold_axes;                   // per vertex, last levels used
   };
   std::vector<DressedGarment> garments_;
-  PerReliefKind<double> relief_tile_size_{0.0, 0.0};
+  SkinReliefTiling skin_tiling_;  // built on the skin at rest
+  std::uint64_t skin_tiles_id_ = 1;
+  double cloth_patch_size_ = 0.0;  // typicalPatchSize of the garments at rest
   std::vector<SurfacePart> parts_;
   struct AutomaticLevels {
     std::vector<int> levels;        // per patch, the level in use

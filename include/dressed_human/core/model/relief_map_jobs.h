@@ -22,6 +22,14 @@
 
 namespace dressed_human {
 
+// How soft the garments' fold creases are by default: the exact folds blurred by a Gaussian of
+// this standard deviation, in buckling cells (the fold's width). An everyday woven jacket or
+// skirt folds in round creases (docs/relief_distance.md shows how it reads at 1-5 m); 0 draws
+// the exact, creased profile of the seed (a thin, stiff sheet).
+constexpr double kDefaultFoldSoftness = 0.12;
+// Largest fold softness a user may set: beyond a third of a cell the folds blur into each other.
+constexpr double kMaxFoldSoftness = 0.3;
+
 // One finished build: the map and its texture, or what the build threw.
 struct FinishedReliefMap {
   ReliefKind kind = ReliefKind::kSkin;
@@ -51,8 +59,9 @@ class ReliefMapJobs {
   // Starts building the skin map for `parameters` (kSkinMapSize square); while one is building,
   // the request waits and poll() starts it when that one ends (if the parameters differ).
   void requestSkin(const SkinReliefParameters& parameters);
-  // Starts building the garments' fold tiles (garmentFoldTiles()).
-  void startCloth();
+  // Starts building the garments' fold tiles (garmentFoldTiles(512, fold_softness)); while one
+  // is building, the request waits as the skin's does.
+  void requestCloth(double fold_softness = kDefaultFoldSoftness);
   // Heights of the wrinkle map per tile width (for HumanModel::setDisplacement).
   static float clothHeightToTile();
 
@@ -77,20 +86,25 @@ class ReliefMapJobs {
   };
   bool busy(ReliefKind kind) const;
   void startSkin(const SkinReliefParameters& parameters);
+  void startCloth(double fold_softness);
 
   PerReliefKind<Job> jobs_;
   SkinReliefParameters skin_started_;    // what the running (or last) skin build was started with
   SkinReliefParameters skin_requested_;  // the newest request
+  double cloth_started_ = -1.0;          // the fold softness of the running (or last) cloth build
+  double cloth_requested_ = -1.0;
 };
 
+
 // The garments' strong fold tile before its transpose: Y-Y chains at a strong compression, cells
-// square once compressed (see relief_map_jobs.cpp).
-WrinkleMapSpec garmentWrinkleMapSpec();
+// square once compressed (see relief_map_jobs.cpp), drawn with `fold_softness` (cells; 0: exact
+// folds). Throws std::invalid_argument for a softness outside [0, kMaxFoldSoftness].
+WrinkleMapSpec garmentWrinkleMapSpec(double fold_softness = kDefaultFoldSoftness);
 // The garments' two fold tiles (oriented_folds.h): I and garmentWrinkleMapSpec()'s Y-Y, both
 // transposed so that they compress along u, `pixels` square (throws std::invalid_argument as
-// makeWrinkleMap for a bad size), drawn as `surface` (the display's: smooth folds). About 0.4 s
-// for both at 512.
-FoldTiles garmentFoldTiles(int pixels = 512, WrinkleSurface surface = WrinkleSurface::smoothFolds);
+// makeWrinkleMap for a bad size), with `fold_softness` as garmentWrinkleMapSpec. About 0.4 s for
+// both at 512.
+FoldTiles garmentFoldTiles(int pixels = 512, double fold_softness = kDefaultFoldSoftness);
 // The map with u and v swapped (heights and slopes).
 ReliefMap transposed(const ReliefMap& map);
 

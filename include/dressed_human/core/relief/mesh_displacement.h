@@ -40,6 +40,9 @@ struct ReliefDisplacement {
   const std::vector<ReliefMap>* map_mips = nullptr;
   const FoldTileMips* fold_mips = nullptr;
   const std::vector<int>* patch_levels = nullptr;
+  /// Optional: per patch, tiles along u and along v (SurfacePart::relief_tiles, whole numbers
+  /// >= 1), in place of `tiling`; vertices read theirs through the mesh's vertex_patch.
+  const std::vector<Eigen::Vector2f>* patch_tiles = nullptr;
 };
 
 /// Height and slopes of the map at tile coordinates (any real values: the map wraps),

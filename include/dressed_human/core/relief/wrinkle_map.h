@@ -49,6 +49,14 @@ struct WrinkleMapSpec {
   double amplitude = 1.0;  ///< scales relief (heights and slopes), >= 0
 };
 
+/// smoothFolds' harmonics per cell for a Gaussian blur of `blur_cells` standard deviation (in
+/// cells, > 0): the fewest whose last is cut at 1/1000 of the blur's transfer, so the blur is
+/// 0.59 / harmonics cells, at most `blur_cells`. Throws std::invalid_argument for a blur that is
+/// not positive and finite.
+int smoothHarmonicsForBlur(double blur_cells);
+/// The blur (cells) `harmonics_per_cell` harmonics stand for.
+double smoothFoldBlur(int harmonics_per_cell);
+
 /// Throws std::invalid_argument naming the bad field (sizes, alpha count or range, chain that
 /// does not close around u, amplitude).
 ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec);

@@ -19,12 +19,13 @@ namespace dressed_human {
 struct PatchCornerSplit {
   std::vector<std::uint32_t> source;   ///< per split vertex: the mesh vertex it copies
   std::vector<Eigen::Vector2f> uv;     ///< per split vertex: (u, v) in the patch of its triangles
+  std::vector<std::uint32_t> patch;    ///< per split vertex: that patch
   std::vector<std::uint32_t> indices;  ///< 3 per triangle, into the split vertices
 };
 
-/// The mesh's vertices first (source i = i, their own uv), then one copy per (vertex, patch,
-/// (u, v)) where a patch's triangles give the vertex another (u, v) than its own (at a welded
-/// pole, one patch's triangles give it several). `corner_parameters`: 3 per triangle
+/// The mesh's vertices first (source i = i, their own uv and patch), then one copy per (vertex,
+/// patch, (u, v)) where a patch other than the vertex's own, or another (u, v), meets it (at a
+/// welded pole, one patch's triangles give it several). `corner_parameters`: 3 per triangle
 /// (Tessellator::triangleCornerParameters). Throws std::invalid_argument when the counts do not
 /// match the mesh.
 void splitPatchCorners(const TriangleMesh& mesh, const std::vector<Eigen::Vector2d>& corner_parameters,
