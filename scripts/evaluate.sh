@@ -7,7 +7,9 @@
 # scripts/make_evaluation.py checks that the folder is one whole run of one clean commit and only
 # then publishes it to docs/ and the README. How long the run took is written with its figures.
 #
-# Usage: [PEER_MIRROR=<bare clone of spencer_people_tracking>] scripts/evaluate.sh
+# Usage: [PEER_MIRROR=<bare clone of spencer_people_tracking>] [RELIEF_BEFORE_DEVEL=<devel space of an
+#        earlier build, e.g. a worktree of the commit before issue 40 built with the targets
+#        dressed_human_rviz and skeleton_publisher>] scripts/evaluate.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -27,7 +29,7 @@ mkdir -p "$ROOT/build/evaluation"
 mkdir "$RESULTS" "$OUT"   # never an existing folder: nothing from another run can be in it
 export DRESSED_HUMAN_DOCS=$OUT   # where the chart scripts write what belongs in docs/
 {
-  echo "command: scripts/evaluate.sh${PEER_MIRROR:+ with PEER_MIRROR=$PEER_MIRROR}"
+  echo "command: scripts/evaluate.sh${PEER_MIRROR:+ with PEER_MIRROR=$PEER_MIRROR}${RELIEF_BEFORE_DEVEL:+ RELIEF_BEFORE_DEVEL=$RELIEF_BEFORE_DEVEL}"
   echo "commit: $COMMIT"
   echo "started: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo -n "host: $(hostname), $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, "
@@ -100,6 +102,13 @@ $PY bench/relief_flicker.py --markdown "$OUT/relief_flicker.md"
 mkdir -p "$OUT/relief"
 $PY bench/skin_distance.py --chart "$OUT/relief/skin_distance.png" --closeup "$OUT/relief/skin_closeup.png" \
   --markdown "$OUT/skin_distance.md"
+before=()
+if [ -n "${RELIEF_BEFORE_DEVEL:-}" ]; then
+  before=(--before-devel "$RELIEF_BEFORE_DEVEL")
+  echo "relief before: $(git -C "$RELIEF_BEFORE_DEVEL" rev-parse HEAD) ($RELIEF_BEFORE_DEVEL)" >> "$RESULTS/run.txt"
+fi
+$PY bench/relief_distance.py --figure "$OUT/relief_distance.png" --markdown "$OUT/relief_distance.md" \
+  --json "$OUT/relief_distance.json" "${before[@]}"
 
 echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ), $(( $(date +%s) - STARTED )) s after it started" >> "$RESULTS/run.txt"
 

@@ -515,6 +515,7 @@ def main():
         relief_switch=read_text(os.path.join(DOCS, "relief_switch.md")),
         relief_flicker=read_text(os.path.join(DOCS, "relief_flicker.md")),
         skin_distance=read_text(os.path.join(DOCS, "skin_distance.md")),
+        relief_distance=read_text(os.path.join(DOCS, "relief_distance.md")),
         stability=stability)
     readme = readme_speed_section(results, machine, skeleton_lines, rviz_verdict)
     with open(os.path.join(DOCS, "EVALUATION.md"), "w") as f:
@@ -675,6 +676,18 @@ with `Relief: Flat`; what the relief adds over the skin's and the garments' pixe
 is the nearest distance, cropped to the skin: relief (left), flat (right).
 
 {skin_distance}
+
+### The relief at the distances users view from (issue 40)
+
+![Relief at 0.3-5 m, flat, before and after](relief_distance.png)
+
+`bench/relief_distance.py`: one human frozen in a bent pose (the walk's phase 0.5, replayed at speed
+0), its body seen from 0.5, 1, 2.5 and 5 m and its hand and head from 0.3 m; per view the flat shot,
+then the default relief of the build this run was given as "before" (if any) and of this commit.
+The skin's cells are sized in metres per body region (README, the rviz display); the garments'
+folds are the exact folds blurred by `Fold Softness`.
+
+{relief_distance}
 
 ## The display against rviz's RobotModel
 

@@ -53,8 +53,7 @@ DressedHumanDisplay::DressedHumanDisplay()
   connect(relief_properties_.get(), &ReliefProperties::appearanceChanged, this, &DressedHumanDisplay::updateAppearance);
   connect(relief_properties_.get(), &ReliefProperties::skinMapChanged, this,
           &DressedHumanDisplay::regenerateSkinRelief);
-  connect(relief_properties_.get(), &ReliefProperties::skinSizeChanged, this,
-          &DressedHumanDisplay::resizeSkinRelief);
+  connect(relief_properties_.get(), &ReliefProperties::skinSizeChanged, this, &DressedHumanDisplay::resizeSkinRelief);
   connect(relief_properties_.get(), &ReliefProperties::clothMapChanged, this,
           &DressedHumanDisplay::regenerateClothRelief);
   connect(lod_properties_.get(), &LodProperties::vertexEvaluationChanged, this,

@@ -66,8 +66,8 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
     const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[ReliefKind::kCloth];
     part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, texturing, source.inverse_rest_metric, source.hidden_patches, source.layout_id,
-                            source.bounds);
+    part.mesh->updateLayout(*source.mesh, texturing, source.inverse_rest_metric, source.hidden_patches,
+                            source.layout_id, source.bounds);
   }
 }
 

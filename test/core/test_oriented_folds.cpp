@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 
 #include <Eigen/Eigenvalues>
@@ -19,9 +20,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-const FoldTiles& tiles() {
-  static const FoldTiles folds = garmentFoldTiles(128);
-  return folds;
+// The fold tiles at a fold softness (garmentWrinkleMapSpec), built once each.
+const FoldTiles& tiles(double softness = kDefaultFoldSoftness) {
+  static std::map<double, FoldTiles> built;
+  auto found = built.find(softness);
+  if (found == built.end()) found = built.emplace(softness, garmentFoldTiles(128, softness)).first;
+  return found->second;
 }
 
 // A flat patch, `width` along u (x) and `height` along v (y), squeezed to `alpha` of its length
@@ -44,13 +48,14 @@ struct CompressedPatch {
 
 // The direction the drawn folds run, on the posed surface: the level-set tangent of the dominant
 // slope over one tile (structure tensor of the slopes in texture coordinates), mapped to 3D.
-Eigen::Vector3d drawnFoldDirection(const CompressedPatch& patch, const VertexStretch& stretch) {
+Eigen::Vector3d drawnFoldDirection(const CompressedPatch& patch, const VertexStretch& stretch,
+                                   double softness = kDefaultFoldSoftness) {
   Eigen::Matrix2d tensor = Eigen::Matrix2d::Zero();
   constexpr int kSide = 48;
   for (int i = 0; i < kSide; ++i) {
     for (int j = 0; j < kSide; ++j) {
       const Eigen::Vector2d at((i + 0.5) / kSide, (j + 0.5) / kSide);  // one patch
-      const Eigen::Vector2d slope = orientedFolds(tiles(), at, stretch.fold_axis, stretch.strength).slope;
+      const Eigen::Vector2d slope = orientedFolds(tiles(softness), at, stretch.fold_axis, stretch.strength).slope;
       tensor += slope * slope.transpose();
     }
   }
@@ -139,21 +144,26 @@ TEST(OrientedFolds, FoldAxisFollowsTheCompressionAndIsContinuous) {
 // twice as long as wide (its (u, v) angles are not space angles) and at slight, middle and
 // strong compression (the I tile, both blended, the Y-Y tile).
 TEST(OrientedFolds, FoldsRunAcrossTheCompressionWithin15Degrees) {
-  double worst = 90.0;
-  for (const double alpha : {0.87, 0.8, 0.6}) {
-    for (int degrees = 0; degrees < 180; degrees += 15) {
-      const CompressedPatch patch(0.3, 0.15, degrees * kPi / 180.0, alpha);
-      const VertexStretch stretch = patch.stretch();
-      ASSERT_GT(stretch.strength, 0.1f);
-      const Eigen::Vector3d compression =
-          principalStretch(patch.rest_du, patch.rest_dv, patch.posed_du, patch.posed_dv).direction;
-      const double angle = degreesBetweenLines(drawnFoldDirection(patch, stretch), compression);
-      worst = std::min(worst, angle);
-      EXPECT_GE(angle, 75.0) << "compression at " << degrees << " deg, alpha " << alpha << ": folds at " << angle
-                             << " deg to it";
+  // Softness from issue 21's (20 harmonics a cell) to the default and the softest a user may set
+  // (issue 40). The exact folds (softness 0, the seed's profile) do not pass: their diamond creases
+  // outweigh the ridges, which is why the display blurs them.
+  for (const double softness : {smoothFoldBlur(20), kDefaultFoldSoftness, kMaxFoldSoftness}) {
+    double worst = 90.0;
+    for (const double alpha : {0.87, 0.8, 0.6}) {
+      for (int degrees = 0; degrees < 180; degrees += 15) {
+        const CompressedPatch patch(0.3, 0.15, degrees * kPi / 180.0, alpha);
+        const VertexStretch stretch = patch.stretch();
+        ASSERT_GT(stretch.strength, 0.1f);
+        const Eigen::Vector3d compression =
+            principalStretch(patch.rest_du, patch.rest_dv, patch.posed_du, patch.posed_dv).direction;
+        const double angle = degreesBetweenLines(drawnFoldDirection(patch, stretch, softness), compression);
+        worst = std::min(worst, angle);
+        EXPECT_GE(angle, 75.0) << "softness " << softness << ", compression at " << degrees << " deg, alpha " << alpha
+                               << ": folds at " << angle << " deg to it";
+      }
     }
+    std::printf("softness %.2f: folds at %.1f deg or more to the compression (90 = across)\n", softness, worst);
   }
-  std::printf("folds at %.1f deg or more to the compression (90 = across)\n", worst);
 }
 
 TEST(OrientedFolds, UncompressedOrStretchedClothIsSmooth) {

@@ -155,14 +155,15 @@ void ReliefMapJobs::requestCloth(double fold_softness) {
 }
 
 void ReliefMapJobs::startCloth(double fold_softness) {
-  jobs_[ReliefKind::kCloth].running = obtain(ReliefKind::kCloth, SkinReliefParameters(), fold_softness, [fold_softness] {
-    FinishedReliefMap done;
-    auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles(512, fold_softness));
-    done.normal_map = std::make_shared<const EncodedNormalMap>(encodeFoldTilesMips(*tiles));
-    done.map = std::shared_ptr<const ReliefMap>(tiles, &tiles->strong);
-    done.fold_tiles = std::move(tiles);
-    return done;
-  });
+  jobs_[ReliefKind::kCloth].running =
+      obtain(ReliefKind::kCloth, SkinReliefParameters(), fold_softness, [fold_softness] {
+        FinishedReliefMap done;
+        auto tiles = std::make_shared<const FoldTiles>(garmentFoldTiles(512, fold_softness));
+        done.normal_map = std::make_shared<const EncodedNormalMap>(encodeFoldTilesMips(*tiles));
+        done.map = std::shared_ptr<const ReliefMap>(tiles, &tiles->strong);
+        done.fold_tiles = std::move(tiles);
+        return done;
+      });
   cloth_started_ = fold_softness;
 }
 

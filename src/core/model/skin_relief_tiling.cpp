@@ -36,13 +36,18 @@ const std::vector<SkinRegion>& skinRegions() {
   // ridges per plateau: "3D reconstruction of skin pathological tissue: the understanding of
   // microrelief pattern and dermal ridge", Skin Res Technol 20(2):213-217, 2014; the area ratio
   // 1.40 assumes the same rete ridge density at both sites. No measured size of the face's or the
-  // back of the hand's cells was found in the sources reachable here (docs/relief_distance.md):
+  // back of the hand's cells was found in the sources reachable here (README, the rviz display):
   // those regions take the forearm's.
   static const std::vector<SkinRegion> regions{
-      {"forearm", {"l_elbow", "r_elbow"}, 1.0, "Trojahn et al. 2015: 1.0 closed polygons per mm^2, adult volar forearm"},
+      {"forearm",
+       {"l_elbow", "r_elbow"},
+       1.0,
+       "Trojahn et al. 2015: 1.0 closed polygons per mm^2, adult volar forearm"},
       {"hand", {"l_wrist", "r_wrist"}, 1.0, "not measured here: the forearm's"},
       {"face and neck", {"head", "neck"}, 1.0, "not measured here: the forearm's"},
-      {"trunk", {"body", "waist", "torso"}, 1.0 * 14.37 / 10.27,
+      {"trunk",
+       {"body", "waist", "torso"},
+       1.0 * 14.37 / 10.27,
        "Skin Res Technol 2014;20:213: abdominal plateaus hold 14.37/10.27 the forearm's rete ridges"},
       {"limbs", {}, 1.0, "not measured here: the forearm's"},
   };
@@ -72,8 +77,7 @@ SkinReliefTiling::SkinReliefTiling(const Skin& skin) : segments_(skin.segments()
 
 void SkinReliefTiling::setForearmCellSpacing(double forearm_cell_spacing) {
   if (!(forearm_cell_spacing > 0.0) || !std::isfinite(forearm_cell_spacing)) {
-    throw std::invalid_argument("skin cell size " + std::to_string(forearm_cell_spacing) +
-                                " m must be finite and > 0");
+    throw std::invalid_argument("skin cell size " + std::to_string(forearm_cell_spacing) + " m must be finite and > 0");
   }
   const std::vector<SkinRegion>& regions = skinRegions();
   std::vector<double> region_spacing;

@@ -153,17 +153,19 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     const double amplitude = displacement.amplitude * (displacement.folds ? 1.0f : weight);
     const Eigen::Vector2f axis = displacement.fold_axes ? (*displacement.fold_axes)[i] : Eigen::Vector2f::Zero();
     const Eigen::Vector2d uv = base.uv[i].cast<double>();
-    const Eigen::Vector2d tiles = displacement.patch_tiles != nullptr
-                                      ? Eigen::Vector2d((*displacement.patch_tiles)[base.vertex_patch[i]].cast<double>())
-                                      : Eigen::Vector2d::Constant(displacement.tiling);
+    const Eigen::Vector2d tiles =
+        displacement.patch_tiles != nullptr
+            ? Eigen::Vector2d((*displacement.patch_tiles)[base.vertex_patch[i]].cast<double>())
+            : Eigen::Vector2d::Constant(displacement.tiling);
     ReliefSample relief;
     if (displacement.folds) {
       relief = displacement.fold_mips ? orientedFolds(*displacement.fold_mips, uv, axis, weight, uv_spacing)
                                       : orientedFolds(*displacement.folds, uv, axis, weight);
     } else {
-      relief = displacement.map_mips ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiles.x(),
-                                                          uv.y() * tiles.y(), uv_spacing * tiles.maxCoeff() * map->width)
-                                     : sampleReliefMap(*map, uv.x() * tiles.x(), uv.y() * tiles.y());
+      relief = displacement.map_mips
+                   ? sampleReliefLevels(*displacement.map_mips, uv.x() * tiles.x(), uv.y() * tiles.y(),
+                                        uv_spacing * tiles.maxCoeff() * map->width)
+                   : sampleReliefMap(*map, uv.x() * tiles.x(), uv.y() * tiles.y());
     }
     const double lu = fu.norm(), lv = fv.norm();
     // At a pole one derivative vanishes: the tile has no size there and nothing moves.
@@ -175,7 +177,8 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     if (lu > 1e-12 && lv > 1e-12) {
       // The map's slopes per tile, turned into per patch parameter by the tiles along each.
       const double scale = amplitude * metres_per_tile;
-      gradient = scale * (relief.slope.x() * tiles.x() * fu / (lu * lu) + relief.slope.y() * tiles.y() * fv / (lv * lv));
+      gradient =
+          scale * (relief.slope.x() * tiles.x() * fu / (lu * lu) + relief.slope.y() * tiles.y() * fv / (lv * lv));
       gradient -= gradient.dot(normal) * normal;
     }
     out.normals[i] = (normal - gradient).normalized().cast<float>();

@@ -83,7 +83,6 @@ std::shared_ptr<const GaussianFoldApproximation> cachedGaussianFit(const Bucklin
   return fit;
 }
 
-
 // exp(-2 pi^2 sigma^2 k^2) = 1/1000 at k = kBlurTimesHarmonics / sigma (fourier_low_pass.cpp's taper).
 const double kBlurTimesHarmonics = std::sqrt(std::log(1000.0) / (2.0 * M_PI * M_PI));
 }  // namespace

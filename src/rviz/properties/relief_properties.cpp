@@ -1,5 +1,6 @@
 #include "properties/relief_properties.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <ros/console.h>
@@ -59,7 +60,8 @@ ReliefProperties::ReliefProperties(rviz::Property* parent) {
       new rviz::FloatProperty("Fold Softness", static_cast<float>(kDefaultFoldSoftness),
                               "How round the garments' fold creases are, as thick or soft fabric folds: the exact "
                               "buckling folds blurred by this much of a fold's width (0: the exact, sharp creases; "
-                              "0.12: an everyday jacket or skirt; up to 0.3).",
+                              "0.12, the default and the most: an everyday jacket or skirt; softer, the folds would "
+                              "no longer run across the bend).",
                               parent),
       this, &ReliefProperties::clothMapChanged);
   fold_softness_->setMin(0.0);
@@ -141,7 +143,10 @@ SkinReliefParameters ReliefProperties::skinParameters() const {
 
 double ReliefProperties::skinCellSize() const { return cell_size_->getFloat(); }
 
-double ReliefProperties::foldSoftness() const { return fold_softness_->getFloat(); }
+// The property's float may lie a rounding above the largest softness the core accepts.
+double ReliefProperties::foldSoftness() const {
+  return std::min(static_cast<double>(fold_softness_->getFloat()), kMaxFoldSoftness);
+}
 
 void ReliefProperties::updateVisibility() { displacement_level_->setHidden(mode() != ReliefMode::kDisplacedGeometry); }
 

@@ -24,11 +24,13 @@ namespace dressed_human {
 
 // How soft the garments' fold creases are by default: the exact folds blurred by a Gaussian of
 // this standard deviation, in buckling cells (the fold's width). An everyday woven jacket or
-// skirt folds in round creases (docs/relief_distance.md shows how it reads at 1-5 m); 0 draws
-// the exact, creased profile of the seed (a thin, stiff sheet).
+// skirt folds in round creases, not in the diamonds of the exact profile (docs/relief_distance.md
+// shows both at 0.3-5 m); 0 draws the exact, creased profile of the seed (a thin, stiff sheet).
 constexpr double kDefaultFoldSoftness = 0.12;
-// Largest fold softness a user may set: beyond a third of a cell the folds blur into each other.
-constexpr double kMaxFoldSoftness = 0.3;
+// Largest fold softness a user may set: blurred further (4 harmonics a cell or fewer), the Y-Y
+// chains' junctions outweigh their ridges and the folds no longer run across the compression
+// (test_oriented_folds.cpp checks the direction at 0, the default and this).
+constexpr double kMaxFoldSoftness = 0.12;
 
 // One finished build: the map and its texture, or what the build threw.
 struct FinishedReliefMap {
@@ -94,7 +96,6 @@ class ReliefMapJobs {
   double cloth_started_ = -1.0;          // the fold softness of the running (or last) cloth build
   double cloth_requested_ = -1.0;
 };
-
 
 // The garments' strong fold tile before its transpose: Y-Y chains at a strong compression, cells
 // square once compressed (see relief_map_jobs.cpp), drawn with `fold_softness` (cells; 0: exact
