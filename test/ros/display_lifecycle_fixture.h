@@ -173,11 +173,15 @@ class DisplayLifecycleTest : public ::testing::Test {
   }
   // The human tiny on screen (rviz's default orbit distance in a 60 px view) or large (a 1200 px
   // view 2 m from its body frame), then ten frames.
-  void viewHuman(bool near) {
+  void viewHuman(bool near) { viewHuman(near ? 1200 : 60, near ? QVariant(2.0) : default_distance_); }
+  // The human in a panel `height` pixels high from `distance` (m; invalid: rviz's default view's).
+  void viewHuman(int height, const QVariant& distance) {
     focusOnHuman();
-    const int height = near ? 1200 : 60;
     panel_->resize(height * 4 / 3, height);
-    manager_->getViewManager()->getCurrent()->subProp("Distance")->setValue(near ? QVariant(2.0) : default_distance_);
+    manager_->getViewManager()
+        ->getCurrent()
+        ->subProp("Distance")
+        ->setValue(distance.isValid() ? distance : default_distance_);
     frames(10);
   }
   // rviz's default view in the suite's 320 x 240 panel again.

@@ -88,12 +88,14 @@ std::vector<std::string> fragmentPrograms() {
   return names;
 }
 
-// The relief is drawn with the plain material where its features are under two pixels on
+// The relief is drawn with the plain material where its features are 3 pixels or fewer on
 // screen: the default view (about 9 m away) in a window 60 pixels high (every relief under a
-// pixel: plain), 1200 pixels high with the camera 2 m from the human (the skin's 8 mm cells
-// about 5 px, the garments' folds more: relief, the garments' oriented folds), and back; "Hide Unseen
-// Relief" off keeps the relief whatever the size. (Until issue 21 the garments' folds were three
-// times as large and showed from the default view too; now they fade out before 2.5 px.)
+// pixel: lit per vertex), 1200 pixels high with the camera 2 m from the human (the garments' folds,
+// a few centimetres, are tens of pixels: their oriented folds; the skin's cells, at their true
+// size of about a millimetre since issue 40, under a pixel: plain), 0.5 m away (the skin's cells
+// about 5 px: its relief too), and back; "Hide Unseen Relief" off keeps the relief whatever the
+// size. (Until issue 21 the garments' folds were three times as large and showed from the default
+// view too; until issue 40 the skin's cells were a twelfth of a patch, 8 mm, and showed from 2 m.)
 TEST_F(DisplayLifecycleTest, UnseenReliefIsDrawnWithThePlainMaterial) {
   ASSERT_NE(display_, nullptr) << "the dressed_human/DressedHuman plugin did not load";
   display_->subProp("Relief")->setValue("Bump mapping");
@@ -102,19 +104,31 @@ TEST_F(DisplayLifecycleTest, UnseenReliefIsDrawnWithThePlainMaterial) {
     return std::count(programs.begin(), programs.end(), name);
   };
   // Too small for the relief is here also too small for per-pixel lighting: lit per vertex.
-  const std::string plain = "dressed_human/VertexLitFragment", skin = "dressed_human/ReliefSurfaceFragment",
-                    folds = "dressed_human/FoldSurfaceFragment";
-  for (const bool near : {false, true, false}) {
-    viewHuman(near);
+  const std::string vertex_lit = "dressed_human/VertexLitFragment", plain = "dressed_human/PlainSurfaceFragment",
+                    skin = "dressed_human/ReliefSurfaceFragment", folds = "dressed_human/FoldSurfaceFragment";
+  struct View {
+    int height;
+    QVariant distance;
+    std::string skin_program, garment_program;
+  };
+  const std::vector<View> views{{60, QVariant(), vertex_lit, vertex_lit},
+                                {1200, QVariant(2.0), plain, folds},
+                                {1200, QVariant(0.5), skin, folds},
+                                {60, QVariant(), vertex_lit, vertex_lit}};
+  for (const View& view : views) {
+    viewHuman(view.height, view.distance);
     const std::vector<std::string> programs = fragmentPrograms();
     std::string listed;
     for (const std::string& program : programs) listed += program + " ";
     ASSERT_EQ(programs.size(), 3u) << "skin, skirt and jacket";
-    if (!near) {
-      EXPECT_EQ(count(programs, plain), 3) << "60 px: " << listed;
+    const std::string where = std::to_string(view.height) + " px at " +
+                              (view.distance.isValid() ? view.distance.toString().toStdString() + " m" : "rviz's") +
+                              ": " + listed;
+    if (view.skin_program == view.garment_program) {
+      EXPECT_EQ(count(programs, view.skin_program), 3) << where;
     } else {
-      EXPECT_EQ(count(programs, skin), 1) << "1200 px at 2 m: " << listed;
-      EXPECT_EQ(count(programs, folds), 2) << "1200 px at 2 m: " << listed;
+      EXPECT_EQ(count(programs, view.skin_program), 1) << where;
+      EXPECT_EQ(count(programs, view.garment_program), 2) << where;
     }
   }
   display_->subProp("Hide Unseen Relief")->setValue(false);

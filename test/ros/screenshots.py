@@ -12,7 +12,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 # Placeholders of test/ros/data/display_test.rviz a test need not set.
+# SKIN_CELL_SIZE: the display's default, the skin's cells at their true size (issue 40).
 DEFAULT_REPLACEMENTS = {"ROBOT_DESCRIPTION": "robot_description", "SHOW_SKELETON": "false", "LEGS_THICKNESS": "1.0", "VERTEX_EVALUATION": "GPU",
+                        "SKIN_CELL_SIZE": "0.00107457",
                         "GARMENT_COLOURS_FROM_FILES": "true", "UPPER_GARMENT_COLOUR": "56; 82; 148",
                         "LOWER_GARMENT_COLOUR": "184; 56; 77"}
 

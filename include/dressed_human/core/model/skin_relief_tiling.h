@@ -20,9 +20,10 @@
 namespace dressed_human {
 
 // Level-1 cells across the skin map's tile (its SkinReliefParameters::cell_size is the inverse):
-// enough that the tile's repeat is not seen among irregular cells, few enough that a cell keeps
-// 32 pixels of the 512-pixel map.
-constexpr int kSkinCellsPerTile = 16;
+// the map's cell count before issue 40, so a cell keeps 43 pixels of the 512-pixel map and the map
+// costs what it did. A patch narrower than a tile still takes a whole one (its cells smaller than
+// its region's): a cell size larger than a twelfth of a patch gives the former look, 12 cells a patch.
+constexpr int kSkinCellsPerTile = 12;
 
 struct SkinRegion {
   std::string name;
