@@ -58,7 +58,7 @@ TEST(SkinReliefTiling, CellsAreTheirRegionsMeasuredSizeOnEveryPatch) {
     }
   }
   for (std::size_t r = 0; r < regions.size(); ++r) EXPECT_GT(patches_per_region[r], 0) << regions[r].name;
-  // About a millimetre: a cell per mm^2 of forearm (Trojahn et al. 2015).
+  // About a millimetre: a cell per mm^2 of forearm (Trojahn et al. 2014).
   EXPECT_NEAR(SkinReliefTiling::measuredForearmSpacing(), 1.07e-3, 0.01e-3);
   EXPECT_NEAR(tiling.largestCellSpacing(), cellSpacingForArea(regions[3].cell_area_mm2), 1e-12);
 }

@@ -28,21 +28,21 @@ float wholeTiles(double length, double tile) { return static_cast<float>(std::ma
 }  // namespace
 
 const std::vector<SkinRegion>& skinRegions() {
-  // Skin cells (closed polygons of the primary furrows) per mm^2 of adult volar forearm: 1.0
-  // (SD 0.7) at 18-30 years and 1.0 (SD 0.9) at 60-80 (3.1 in children): Trojahn C, Dobos G,
-  // Schario M, Ludriksone L, Blume-Peytavi U, Kottner J, "Relation between skin micro-topography,
-  // roughness, and skin age", Skin Res Technol 21(1):69-75, 2015 (Visioscan VC98 images).
-  // Abdomen against medial forearm: plateaus "deeper and wider", 14.37 against 10.27 rete
-  // ridges per plateau: "3D reconstruction of skin pathological tissue: the understanding of
-  // microrelief pattern and dermal ridge", Skin Res Technol 20(2):213-217, 2014; the area ratio
-  // 1.40 assumes the same rete ridge density at both sites. No measured size of the face's or the
-  // back of the hand's cells was found in the sources reachable here (README, the rviz display):
-  // those regions take the forearm's.
+  // Skin cells (closed polygons of the primary and secondary lines) per mm^2 of volar forearm,
+  // imaged with a Visioscan VC98 in 38 subjects: 3.1 (SD 1.1) in children, 1.0 (SD 0.7) in young
+  // adults, 1.0 (SD 0.9) in older adults: Trojahn C, Dobos G, Schario M, et al., Skin Res Technol,
+  // published online 3 June 2014 (as summarised at dermakos.it; the paper itself was not
+  // reachable here). Abdomen against medial forearm: plateaus "deeper and wider", 14.37 against
+  // 10.27 rete ridges per plateau: "3D reconstruction of skin pathological tissue: the
+  // understanding of microrelief pattern and dermal ridge", Skin Res Technol 20(2):213-217, 2014
+  // (PMID 23981137); the area ratio 1.40 assumes the same rete ridge density at both sites. No
+  // measured size of the face's or the back of the hand's cells was found in the sources reachable
+  // here (README, the rviz display): those regions take the forearm's.
   static const std::vector<SkinRegion> regions{
       {"forearm",
        {"l_elbow", "r_elbow"},
        1.0,
-       "Trojahn et al. 2015: 1.0 closed polygons per mm^2, adult volar forearm"},
+       "Trojahn et al. 2014: 1.0 closed polygons per mm^2, adult volar forearm"},
       {"hand", {"l_wrist", "r_wrist"}, 1.0, "not measured here: the forearm's"},
       {"face and neck", {"head", "neck"}, 1.0, "not measured here: the forearm's"},
       {"trunk",
