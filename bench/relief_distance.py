@@ -102,7 +102,7 @@ def crop(image, mask, size):
     top, bottom = max(rows.min() - 10, 0), min(rows.max() + 10, image.shape[0])
     left, right = max(columns.min() - 10, 0), min(columns.max() + 10, image.shape[1])
     piece = Image.fromarray(image[top:bottom, left:right].astype(numpy.uint8))
-    piece.thumbnail(size, Image.LANCZOS) if piece.width > size[0] or piece.height > size[1] else None
+    piece.thumbnail(size, Image.LANCZOS)  # only ever shrinks
     canvas = Image.new("RGB", size, (48, 48, 48))
     canvas.paste(piece, ((size[0] - piece.width) // 2, (size[1] - piece.height) // 2))
     return canvas

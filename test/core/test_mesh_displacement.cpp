@@ -136,6 +136,75 @@ TEST(MeshDisplacement, RejectsBadSettingsByName) {
   EXPECT_NE(message({&map, 1.0f, 1.0f, std::nanf("")}).find("amplitude"), std::string::npos);
 }
 
+// Tiles per patch (the skin's, skin_relief_tiling.h): 2 tiles along u and 3 along v on the 1 m
+// patch, so a tile is 0.5 m x 0.33 m and heights scale by their geometric mean; positions and
+// normals against the analytic surface z = A h(2 x) sqrt(1/6), dz/dx = A h'(2 x) 2 sqrt(1/6).
+// The same tiles along u and v give exactly what the scalar tiling gives.
+TEST(MeshDisplacement, TilesPerPatchFollowTheAnalyticDisplacedSurface) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 32);
+  const ReliefMap map = sineMap(512, 0.01);
+  const std::vector<Eigen::Vector2f> tiles{Eigen::Vector2f(2.0f, 3.0f)};
+  ReliefDisplacement displacement;
+  displacement.map = &map;
+  displacement.amplitude = 1.5f;
+  displacement.patch_tiles = &tiles;
+  TriangleMesh displaced;
+  displaceMesh(base, displacement, displaced);
+  const double metres_per_tile = std::sqrt(1.0 / 6.0);
+  double worst_position = 0.0, worst_normal = 0.0;
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    const double x = base.positions[i].x();
+    const double z = 1.5 * 0.01 * std::sin(2.0 * kPi * 2.0 * x) * metres_per_tile;
+    const double dzdx = 1.5 * 0.01 * 2.0 * kPi * std::cos(2.0 * kPi * 2.0 * x) * 2.0 * metres_per_tile;
+    worst_position = std::max(
+        worst_position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
+    worst_normal = std::max(worst_normal,
+                            (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
+  }
+  EXPECT_LT(worst_position, 2e-6);
+  EXPECT_LT(worst_normal, 1e-3);
+
+  const std::vector<Eigen::Vector2f> square{Eigen::Vector2f(2.0f, 2.0f)};
+  displacement.patch_tiles = &square;
+  TriangleMesh per_patch, scalar;
+  displaceMesh(base, displacement, per_patch);
+  displacement.patch_tiles = nullptr;
+  displacement.tiling = 2.0f;
+  displaceMesh(base, displacement, scalar);
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    EXPECT_LT((per_patch.positions[i] - scalar.positions[i]).norm(), 1e-7f) << i;
+    EXPECT_LT((per_patch.normals[i] - scalar.normals[i]).norm(), 1e-6f) << i;
+  }
+}
+
+TEST(MeshDisplacement, RejectsBadTilesPerPatchByName) {
+  const std::vector<BezierPatch> patches{flatPatch()};
+  Tessellator tessellator;
+  const TriangleMesh& base = tessellator.tessellateUniform(patches, PatchTopology(1), 4);
+  const ReliefMap map = sineMap(8, 0.05);
+  TriangleMesh out;
+  const auto message = [&](const std::vector<Eigen::Vector2f>& tiles, const FoldTiles* folds = nullptr) {
+    ReliefDisplacement displacement;
+    displacement.map = &map;
+    displacement.patch_tiles = &tiles;
+    displacement.folds = folds;
+    try {
+      displaceMesh(base, displacement, out);
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message({Eigen::Vector2f(1.0f, 4.0f)}), "no error");
+  EXPECT_NE(message({Eigen::Vector2f(0.0f, 1.0f)}).find("tiles per patch must be finite and > 0"), std::string::npos);
+  EXPECT_NE(message({Eigen::Vector2f(1.0f, std::nanf(""))}).find("tiles per patch"), std::string::npos);
+  EXPECT_NE(message({}).find("vertex on patch 0 of 0 with tiles"), std::string::npos);
+  const FoldTiles folds(map, map);
+  EXPECT_NE(message({Eigen::Vector2f(1.0f, 1.0f)}, &folds).find("no tiles per patch"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace dressed_human
 
