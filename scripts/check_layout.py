@@ -6,7 +6,10 @@
 - the core includes nothing of ROS, rviz or Ogre;
 - no file in src/ or include/ is over MAX_FILE_LINES lines, no function in the core over
   MAX_FUNCTION_LINES;
-- the README's layout section names every core folder.
+- the README's layout section names every core folder;
+- no Qt connection by SIGNAL()/SLOT() strings, which fail only at run time (issue 38);
+- no test builds a temporary file's path from TempDir() itself: ctest runs tests in parallel
+  processes, and a fixed name under TempDir() is shared between them (test/core/temp_file_path.h).
 
 Prints each violation with its file and line and exits 1 if there is any.
 Usage: scripts/check_layout.py [repository root]
@@ -19,6 +22,9 @@ LAYERS = ["io", "skeleton", "motion", "locomotion", "surfaces", "garments", "rel
 MAX_FILE_LINES = 600
 MAX_FUNCTION_LINES = 120
 CORE_INCLUDE = re.compile(r'^\s*#\s*include\s*"dressed_human/core/([^/"]+)/[^"]+"')
+QT_STRING_CONNECTION = re.compile(r'\b(SIGNAL|SLOT)\s*\(')
+SHARED_TEMP_PATH = re.compile(r'TempDir\(\)\s*\+')
+TEMP_PATH_HELPER = os.path.join("test", "core", "temp_file_path.h")
 FORBIDDEN_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](ros/|rviz/|tf2_ros/|Ogre|OGRE|OgreMain)')
 
 
@@ -67,6 +73,14 @@ def long_functions(lines):
     return found
 
 
+def matching_lines(root, folder, pattern):
+    for path in source_files(root, folder):
+        with open(path, encoding="utf-8") as source:
+            for number, line in enumerate(source, 1):
+                if pattern.search(strip_code_line(line)):
+                    yield os.path.relpath(path, root), number, line.strip()
+
+
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     problems = []
@@ -98,6 +112,12 @@ def main():
                 count = sum(1 for _ in source)
             if count > MAX_FILE_LINES:
                 problems.append(f"{os.path.relpath(path, root)}: {count} lines (at most {MAX_FILE_LINES})")
+    for folder in ("src", "include"):
+        for path, number, line in matching_lines(root, folder, QT_STRING_CONNECTION):
+            problems.append(f"{path}:{number}: a Qt connection by string; connect member-function pointers: {line}")
+    for path, number, line in matching_lines(root, "test", SHARED_TEMP_PATH):
+        if path != TEMP_PATH_HELPER:
+            problems.append(f"{path}:{number}: a temporary path shared by parallel tests; use tempFilePath(): {line}")
     with open(os.path.join(root, "README.md"), encoding="utf-8") as readme:
         text = readme.read()
     layout = text[text.find("## Layout"):]

@@ -7,11 +7,13 @@
 #include <set>
 #include <string>
 
+#include "temp_file_path.h"
+
 namespace dressed_human {
 namespace {
 
 std::string writeCrowdFile(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
+  const std::string path = tempFilePath(name);
   std::ofstream(path) << text;
   return path;
 }

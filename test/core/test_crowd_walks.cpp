@@ -7,13 +7,15 @@
 #include <fstream>
 #include <string>
 
+#include "temp_file_path.h"
+
 #include "dressed_human/core/model/crowd_appearance.h"
 
 namespace dressed_human {
 namespace {
 
 std::string writeFile(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
+  const std::string path = tempFilePath(name);
   std::ofstream(path) << text;
   return path;
 }

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <fstream>
 
+#include "temp_file_path.h"
+
 namespace dressed_human {
 namespace {
 
@@ -38,7 +40,7 @@ TEST(MeshRasterizer, CoversTheProjectedAreaAndKeepsTheNearestSurface) {
   EXPECT_EQ(rgb[centre], 255);  // lit head-on: Eq. 12 gives 1 (+ ambient, clamped)
   EXPECT_EQ(rgb[centre + 2], 0);
   EXPECT_EQ(rgb[0], 255);  // background white
-  const std::string path = ::testing::TempDir() + "/raster.png";
+  const std::string path = tempFilePath("raster.png");
   raster.writePng(path);
   std::ifstream file(path, std::ios::binary);
   char magic[4] = {};

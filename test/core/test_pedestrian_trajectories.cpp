@@ -9,13 +9,15 @@
 #include <fstream>
 #include <string>
 
+#include "temp_file_path.h"
+
 namespace dressed_human {
 namespace {
 
 const std::string kSharedPeople = std::string(DRESSED_HUMAN_SHARED_DIR) + "/data/people/";
 
 std::string writeFile(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
+  const std::string path = tempFilePath(name);
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }

@@ -10,6 +10,8 @@
 #include <iterator>
 #include <string>
 
+#include "temp_file_path.h"
+
 namespace dressed_human {
 namespace {
 
@@ -21,7 +23,7 @@ TEST(PngWriter, ChecksumsMatchKnownValues) {
 }
 
 TEST(PngWriter, WritesAValidLookingFile) {
-  const std::string path = ::testing::TempDir() + "relief_test.png";
+  const std::string path = tempFilePath("relief_test.png");
   std::vector<std::uint8_t> pixels(300 * 250 * 3);  // > 65535 bytes: several stored blocks
   for (std::size_t at = 0; at < pixels.size(); ++at) pixels[at] = static_cast<std::uint8_t>(at * 7);
   writePng8(path, 300, 250, 3, pixels);

@@ -10,6 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "temp_file_path.h"
+
 namespace dressed_human {
 namespace {
 
@@ -27,7 +29,7 @@ std::string messageOf(const std::string& path) {
 }
 
 TEST(TextFile, ReadsEveryByteOfAFile) {
-  const std::string path = testing::TempDir() + "text_file_bytes.txt";
+  const std::string path = tempFilePath("text_file_bytes.txt");
   const std::string bytes = std::string("line one\nline two\0with a NUL\r\n", 30);
   std::ofstream(path, std::ios::binary) << bytes;
   EXPECT_EQ(readWholeFileOrThrow<TestError>(path, "the test file"), bytes);
@@ -37,9 +39,10 @@ TEST(TextFile, ReadsEveryByteOfAFile) {
 TEST(TextFile, SaysWhyAFileCannotBeRead) {
   EXPECT_EQ(messageOf("/nonexistent/walk.yaml"),
             "/nonexistent/walk.yaml: cannot open the test file: No such file or directory");
-  EXPECT_EQ(messageOf(testing::TempDir()), testing::TempDir() + ": cannot open the test file: is a directory");
+  const std::string directory = testing::TempDir();
+  EXPECT_EQ(messageOf(directory), directory + ": cannot open the test file: is a directory");
   if (geteuid() != 0) {  // root reads any file
-    const std::string path = testing::TempDir() + "text_file_unreadable.txt";
+    const std::string path = tempFilePath("text_file_unreadable.txt");
     std::ofstream(path) << "secret";
     chmod(path.c_str(), 0);
     EXPECT_EQ(messageOf(path), path + ": cannot open the test file: Permission denied");
