@@ -27,15 +27,6 @@ int ladderRung(int level) {
   return static_cast<int>(kLevelLadder.size()) - 1;
 }
 
-SurfacePart surfacePart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour) {
-  SurfacePart part;
-  part.name = name;
-  part.relief = relief;
-  part.colour = colour;
-  part.mesh = nullptr;
-  return part;
-}
-
 // In double, rounded outwards to float: the float vertices evaluated from these control points
 // stay inside.
 Eigen::AlignedBox3f outwardToFloat(const Eigen::AlignedBox3d& box) {
@@ -105,11 +96,8 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 }
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
-    : settings_(settings),
-      skin_(skeleton, body),
-      skin_error_bound_(CalibratedErrorBound::shared(skin_.patches())),
-      skin_tiling_(skin_) {
-  parts_.push_back(surfacePart("skin", ReliefKind::kSkin, settings_.skin_colour));
+    : settings_(settings), skin_(skeleton, body), skin_tiling_(skin_) {
+  addPart("skin", ReliefKind::kSkin, settings_.skin_colour, -1, CalibratedErrorBound::shared(skin_.patches()));
   parts_.back().closed = true;  // every skin part is a closed surface (skin.h)
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
     GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
@@ -129,9 +117,9 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
             ? colour->second
             : Eigen::Vector4f(static_cast<float>(description.colour.x()), static_cast<float>(description.colour.y()),
                               static_cast<float>(description.colour.z()), 1.0f);
-    parts_.push_back(surfacePart(name, ReliefKind::kCloth, rgba));
+    addPart(name, ReliefKind::kCloth, rgba, static_cast<int>(garments_.size()) - 1,
+            CalibratedErrorBound::shared(garments_.back().rest_patches));
   }
-  corner_splits_.resize(parts_.size());
   std::vector<BezierPatch> cloth;
   for (const DressedGarment& dressed : garments_) {
     cloth.insert(cloth.end(), dressed.rest_patches.begin(), dressed.rest_patches.end());
@@ -140,6 +128,19 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
   std::vector<const std::vector<BezierPatch>*> rest{&skin_.patches()};  // built in the same rest pose
   for (const DressedGarment& dressed : garments_) rest.push_back(&dressed.rest_patches);
   covered_ = sharedCoveredPatches(rest);
+}
+
+void HumanModel::addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour, int garment,
+                         std::shared_ptr<const CalibratedErrorBound> error_bound) {
+  SurfacePart part;
+  part.name = name;
+  part.relief = relief;
+  part.colour = colour;
+  part.mesh = nullptr;
+  parts_.push_back(std::move(part));
+  part_states_.emplace_back();
+  part_states_.back().garment = garment;
+  part_states_.back().error_bound = std::move(error_bound);
 }
 
 void HumanModel::setSkinCellSize(double forearm_cell_spacing) {
@@ -162,23 +163,59 @@ Eigen::AlignedBox3f HumanModel::bounds() const {
 
 HumanModel::DressedGarment::DressedGarment(const GarmentDescription& description, const Skeleton& skeleton,
                                            const BodyShape& shape)
-    : garment(description, skeleton, shape),
-      tessellator(std::make_unique<Tessellator>()),
-      rest_patches(garment.patches()),
-      error_bound(CalibratedErrorBound::shared(rest_patches)) {}
+    : garment(description, skeleton, shape), rest_patches(garment.patches()) {}
 
-const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, const CalibratedErrorBound& error_bound,
-                                              const std::vector<BezierPatch>& patches, const LevelOfDetail& lod) {
+const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
+  const int garment = part_states_.at(part).garment;
+  return garment < 0 ? skin_.patches() : garments_[static_cast<std::size_t>(garment)].garment.patches();
+}
+
+const PatchTopology& HumanModel::topologyOf(const PartState& state) const {
+  return state.garment < 0 ? skin_.topology() : garments_[static_cast<std::size_t>(state.garment)].garment.topology();
+}
+
+const CalibratedErrorBound& HumanModel::partErrorBound(std::size_t part) const {
+  return *part_states_.at(part).error_bound;
+}
+
+const std::vector<int>& HumanModel::partLevels(std::size_t part) const {
+  return part_states_.at(part).tessellator->levels();
+}
+
+void HumanModel::update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
+                        const LevelOfDetail& lod) {
+  poseSurfaces(root, bones);
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    PartState& state = part_states_[p];
+    const bool displaced = displacements_[static_cast<std::size_t>(parts_[p].relief)].map != nullptr;
+    const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displaced;
+    const std::vector<int>& levels = withCoveredHidden(p, chooseLevels(state, partPatches(p), lod), lod.hide_covered);
+    tessellate(p, levels, evaluate);
+    if (state.garment >= 0) {
+      measureWrinkles(garments_[static_cast<std::size_t>(state.garment)], parts_[p], evaluate, displaced);
+    }
+    displaceAndBound(p, levels);
+  }
+}
+
+void HumanModel::poseSurfaces(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones) {
+  pose_.root = root;
+  pose_.bone_in_world = bones;
+  skin_.pose(pose_);
+  for (DressedGarment& dressed : garments_) dressed.garment.pose(pose_);
+}
+
+const std::vector<int>& HumanModel::chooseLevels(PartState& state, const std::vector<BezierPatch>& patches,
+                                                 const LevelOfDetail& lod) {
   if (lod.automatic) {
     // Levels from the screen-space error, with hysteresis: a level drops only when two below
     // the current one would do. Otherwise a walking human flickers between levels and the
     // tessellator rebuilds its layout every frame instead of only re-evaluating vertices.
-    AutomaticLevels& automatic = automatic_levels_[&tessellator];
-    std::vector<int>& levels = automatic.levels;
+    std::vector<int>& levels = state.automatic.levels;
     levels.resize(patches.size(), 0);
-    automatic.frames_below.resize(patches.size(), 0);
+    state.automatic.frames_below.resize(patches.size(), 0);
     const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kRenderer;
-    error_bound.levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
+    state.error_bound->levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
     for (std::size_t p = 0; p < patches.size(); ++p) {
       const int wanted = wanted_levels_[p];
       if (coarse_steps) {
@@ -189,7 +226,7 @@ const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, co
         // longer than a gait cycle, so a walking human keeps its layout.
         const int rung = ladderRung(wanted);
         const int current = levels[p] == 0 ? -1 : ladderRung(levels[p]);
-        int& below = automatic.frames_below[p];
+        int& below = state.automatic.frames_below[p];
         below = rung + 1 < current ? below + 1 : 0;
         if (rung > current || below > kDropAfterUpdates) {
           levels[p] = std::min(kLevelLadder[static_cast<std::size_t>(rung)], lod.max_level);
@@ -209,97 +246,86 @@ const std::vector<int>& HumanModel::levelsFor(const Tessellator& tessellator, co
   return uniform_levels_;
 }
 
-Tessellator& HumanModel::tessellatorOf(std::size_t part) {
-  return part == 0 ? skin_tessellator_ : *garments_.at(part - 1).tessellator;
+// Covered patches (LevelOfDetail::hide_covered) drop to level 1 and are marked hidden.
+const std::vector<int>& HumanModel::withCoveredHidden(std::size_t part, const std::vector<int>& levels, bool hide) {
+  const std::vector<bool>& covered = (*covered_)[part];
+  hide = hide && std::find(covered.begin(), covered.end(), true) != covered.end();
+  parts_[part].hidden_patches = hide ? &covered : nullptr;
+  if (!hide) return levels;
+  drawn_levels_ = levels;
+  for (std::size_t k = 0; k < covered.size(); ++k) {
+    if (covered[k]) drawn_levels_[k] = 1;
+  }
+  return drawn_levels_;
 }
 
-const PatchTopology& HumanModel::topologyOf(std::size_t part) const {
-  return part == 0 ? skin_.topology() : garments_.at(part - 1).garment.topology();
-}
-
-void HumanModel::update(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones,
-                        const LevelOfDetail& lod) {
-  pose_.root = root;
-  pose_.bone_in_world = bones;
-  skin_.pose(pose_);
-  for (DressedGarment& dressed : garments_) dressed.garment.pose(pose_);
-  for (std::size_t p = 0; p < parts_.size(); ++p) {
-    SurfacePart& part = parts_[p];
-    const Displacement& displacement = displacements_[static_cast<std::size_t>(part.relief)];
-    const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displacement.map;
-    Tessellator& tessellator = tessellatorOf(p);
-    const std::vector<BezierPatch>& patches = partPatches(p);
-    const std::vector<int>* levels = &levelsFor(tessellator, partErrorBound(p), patches, lod);
-    const std::vector<bool>& covered = (*covered_)[p];
-    const bool hide = lod.hide_covered && std::find(covered.begin(), covered.end(), true) != covered.end();
-    if (hide) {
-      drawn_levels_ = *levels;
-      for (std::size_t k = 0; k < covered.size(); ++k) {
-        if (covered[k]) drawn_levels_[k] = 1;
-      }
-      levels = &drawn_levels_;
-    }
-    part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(p), *levels)
-                         : &tessellator.layout(patches, topologyOf(p), *levels);
-    part.hidden_patches = hide ? &covered : nullptr;
-    part.drawn_triangles = part.mesh->triangleCount();
-    if (hide) {
-      for (const std::uint32_t patch : part.mesh->triangle_patch) part.drawn_triangles -= covered[patch] ? 1 : 0;
-    }
-    part.evaluated = evaluate;
-    part.patches = &patches;
-    part.layout_id = tessellator.layoutId();
-    CornerSplit& corners = corner_splits_[p];
-    if (corners.layout_id != part.layout_id) {
-      splitPatchCorners(*part.mesh, tessellator.triangleCornerParameters(), corners.split);
-      corners.layout_id = part.layout_id;
-    }
-    part.corners = &corners.split;
-    if (p == 0) {
-      part.relief_tiles = &skin_tiling_.tilesPerPatch();
-      part.relief_tiles_id = skin_tiles_id_;
-    }
-    if (p > 0) {
-      DressedGarment& dressed = garments_[p - 1];
-      VertexCompression& compression = dressed.compression;
-      // The rest metric belongs to the layout: re-derived only when the tessellator laid the
-      // mesh out anew (comparing layouts vertex by vertex every frame would cost more than
-      // the rest of a GPU-evaluated frame).
-      if (dressed.compressed_layout != part.layout_id) {
-        compression.prepare(*part.mesh, dressed.rest_patches);
-        dressed.compressed_layout = part.layout_id;
-      }
-      if (evaluate && !wrinkles_wanted_ && !displacement.map) {
-        part.relief_weight = nullptr;
-        part.fold_axis = nullptr;
-        part.inverse_rest_metric = nullptr;
-      } else if (evaluate) {
-        dressed.wrinkle_weights.resize(part.mesh->vertexCount());
-        dressed.fold_axes.resize(part.mesh->vertexCount());
-        compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data(), dressed.fold_axes.data());
-        part.relief_weight = &dressed.wrinkle_weights;
-        part.fold_axis = &dressed.fold_axes;
-        part.inverse_rest_metric = nullptr;
-      } else {
-        part.relief_weight = nullptr;
-        part.fold_axis = nullptr;
-        part.inverse_rest_metric = &compression.inverseRestMetric();
-      }
-      part.wrinkle_constants = compression.strengthConstants();
-    }
-    if (displacement.map) {
-      ReliefDisplacement settings = displacement.settings;
-      settings.patch_tiles = part.relief_tiles;
-      settings.weights = part.relief_weight;
-      settings.fold_axes = part.fold_axis;
-      settings.patch_levels = levels;
-      displaceMesh(*part.mesh, settings, displaced_meshes_[p]);
-      part.mesh = &displaced_meshes_[p];
-      part.bounds = vertexBounds(part.mesh->positions);
-    } else {
-      part.bounds = controlPointBounds(patches);
+void HumanModel::tessellate(std::size_t p, const std::vector<int>& levels, bool evaluate) {
+  PartState& state = part_states_[p];
+  SurfacePart& part = parts_[p];
+  const std::vector<BezierPatch>& patches = partPatches(p);
+  Tessellator& tessellator = *state.tessellator;
+  part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(state), levels)
+                       : &tessellator.layout(patches, topologyOf(state), levels);
+  part.drawn_triangles = part.mesh->triangleCount();
+  if (part.hidden_patches != nullptr) {
+    for (const std::uint32_t patch : part.mesh->triangle_patch) {
+      part.drawn_triangles -= (*part.hidden_patches)[patch] ? 1 : 0;
     }
   }
+  part.evaluated = evaluate;
+  part.patches = &patches;
+  part.layout_id = tessellator.layoutId();
+  if (state.corners.layout_id != part.layout_id) {
+    splitPatchCorners(*part.mesh, tessellator.triangleCornerParameters(), state.corners.split);
+    state.corners.layout_id = part.layout_id;
+  }
+  part.corners = &state.corners.split;
+  if (state.garment < 0) {
+    part.relief_tiles = &skin_tiling_.tilesPerPatch();
+    part.relief_tiles_id = skin_tiles_id_;
+  }
+}
+
+void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool evaluate, bool displaced) {
+  VertexCompression& compression = dressed.compression;
+  // The rest metric belongs to the layout: re-derived only when the tessellator laid the mesh
+  // out anew (comparing layouts vertex by vertex every frame would cost more than the rest of a
+  // GPU-evaluated frame).
+  if (dressed.compressed_layout != part.layout_id) {
+    compression.prepare(*part.mesh, dressed.rest_patches);
+    dressed.compressed_layout = part.layout_id;
+  }
+  part.relief_weight = nullptr;
+  part.fold_axis = nullptr;
+  part.inverse_rest_metric = nullptr;
+  if (!evaluate) {
+    part.inverse_rest_metric = &compression.inverseRestMetric();
+  } else if (wrinkles_wanted_ || displaced) {
+    dressed.wrinkle_weights.resize(part.mesh->vertexCount());
+    dressed.fold_axes.resize(part.mesh->vertexCount());
+    compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data(), dressed.fold_axes.data());
+    part.relief_weight = &dressed.wrinkle_weights;
+    part.fold_axis = &dressed.fold_axes;
+  }
+  part.wrinkle_constants = compression.strengthConstants();
+}
+
+void HumanModel::displaceAndBound(std::size_t p, const std::vector<int>& levels) {
+  SurfacePart& part = parts_[p];
+  const Displacement& displacement = displacements_[static_cast<std::size_t>(part.relief)];
+  if (!displacement.map) {
+    part.bounds = controlPointBounds(*part.patches);
+    return;
+  }
+  ReliefDisplacement settings = displacement.settings;
+  settings.patch_tiles = part.relief_tiles;
+  settings.weights = part.relief_weight;
+  settings.fold_axes = part.fold_axis;
+  settings.patch_levels = &levels;
+  TriangleMesh& displaced = part_states_[p].displaced;
+  displaceMesh(*part.mesh, settings, displaced);
+  part.mesh = &displaced;
+  part.bounds = vertexBounds(part.mesh->positions);
 }
 
 void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMap> map, float tiling,
@@ -328,19 +354,6 @@ void HumanModel::setDisplacement(ReliefKind kind, std::shared_ptr<const ReliefMa
     checkReliefDisplacement(given);
   }
   displacements_[static_cast<std::size_t>(kind)] = std::move(displacement);
-  displaced_meshes_.resize(parts_.size());
-}
-
-const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
-  return part == 0 ? skin_.patches() : garments_.at(part - 1).garment.patches();
-}
-
-const CalibratedErrorBound& HumanModel::partErrorBound(std::size_t part) const {
-  return part == 0 ? *skin_error_bound_ : *garments_.at(part - 1).error_bound;
-}
-
-const std::vector<int>& HumanModel::partLevels(std::size_t part) const {
-  return part == 0 ? skin_tessellator_.levels() : garments_.at(part - 1).tessellator->levels();
 }
 
 std::size_t HumanModel::drawnTriangleCount() const {

@@ -166,45 +166,33 @@ class HumanModel {
   Eigen::AlignedBox3f bounds() const;
 
  private:
-  const std::vector<int>& levelsFor(const Tessellator& tessellator, const CalibratedErrorBound& error_bound,
-                                    const std::vector<BezierPatch>& patches, const LevelOfDetail& lod);
-  Tessellator& tessellatorOf(std::size_t part);
-  const PatchTopology& topologyOf(std::size_t part) const;
-
-  HumanModelSettings settings_;
-  Skin skin_;
-  SkeletonPose pose_;
-  Tessellator skin_tessellator_;
-  std::shared_ptr<const CalibratedErrorBound> skin_error_bound_;  // shared by humans of the same body
-  // One garment of the outfit and what the model keeps of it between updates.
-  struct DressedGarment {
-    DressedGarment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape);
-    Garment garment;
-    std::unique_ptr<Tessellator> tessellator;                 // by pointer: automatic_levels_ is keyed by it
-    std::vector<BezierPatch> rest_patches;                    // built in the rest pose
-    std::shared_ptr<const CalibratedErrorBound> error_bound;  // calibrated on rest_patches, shared
-    VertexCompression compression;                            // the per-vertex compression measure
-    std::uint64_t compressed_layout = 0;                      // Tessellator::layoutId() `compression` was prepared for
-    std::vector<float> wrinkle_weights;                       // per vertex, last levels used
-    std::vector<Eigen::Vector2f> fold_axes;                   // per vertex, last levels used
-  };
-  std::vector<DressedGarment> garments_;
-  SkinReliefTiling skin_tiling_;  // built on the skin at rest
-  std::uint64_t skin_tiles_id_ = 1;
-  double cloth_patch_size_ = 0.0;  // typicalPatchSize of the garments at rest
-  std::vector<SurfacePart> parts_;
   struct AutomaticLevels {
     std::vector<int> levels;        // per patch, the level in use
     std::vector<int> frames_below;  // per patch, updates in a row a lower level would have done
   };
-  std::map<const Tessellator*, AutomaticLevels> automatic_levels_;
-  std::vector<int> uniform_levels_;
-  std::vector<int> wanted_levels_;  // scratch: what the screen error asks for, per patch
-  std::vector<int> drawn_levels_;   // scratch: the levels with hidden patches at 1
-  // Per part, per patch; shared by the humans of the same body and outfit.
-  std::shared_ptr<const std::vector<std::vector<bool>>> covered_;
-  VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
-  bool wrinkles_wanted_ = true;
+  struct CornerSplit {
+    PatchCornerSplit split;
+    std::uint64_t layout_id = 0;  // of the layout it was split from
+  };
+  // What the model keeps of one drawn part between updates (parts_[p] is what it hands out).
+  struct PartState {
+    int garment = -1;                                         // index in garments_; -1: the skin
+    std::shared_ptr<const CalibratedErrorBound> error_bound;  // calibrated at rest, shared by humans of one body
+    std::unique_ptr<Tessellator> tessellator = std::make_unique<Tessellator>();  // not movable
+    AutomaticLevels automatic;
+    CornerSplit corners;
+    TriangleMesh displaced;  // while the part's relief kind is displaced
+  };
+  // One garment of the outfit and what its wrinkle measure keeps between updates.
+  struct DressedGarment {
+    DressedGarment(const GarmentDescription& description, const Skeleton& skeleton, const BodyShape& shape);
+    Garment garment;
+    std::vector<BezierPatch> rest_patches;   // built in the rest pose
+    VertexCompression compression;           // the per-vertex compression measure
+    std::uint64_t compressed_layout = 0;     // Tessellator::layoutId() `compression` was prepared for
+    std::vector<float> wrinkle_weights;      // per vertex, last levels used
+    std::vector<Eigen::Vector2f> fold_axes;  // per vertex, last levels used
+  };
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;
     std::shared_ptr<const FoldTiles> folds;
@@ -213,13 +201,36 @@ class HumanModel {
     std::shared_ptr<const FoldTileMips> fold_mips;
     ReliefDisplacement settings;
   };
-  std::array<Displacement, 2> displacements_;   // by ReliefKind
-  std::vector<TriangleMesh> displaced_meshes_;  // per part, when its kind is displaced
-  struct CornerSplit {
-    PatchCornerSplit split;
-    std::uint64_t layout_id = 0;  // of the layout it was split from
-  };
-  std::vector<CornerSplit> corner_splits_;  // per part
+
+  void addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour, int garment,
+               std::shared_ptr<const CalibratedErrorBound> error_bound);
+  const PatchTopology& topologyOf(const PartState& state) const;
+  // update()'s steps, in order.
+  void poseSurfaces(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones);
+  const std::vector<int>& chooseLevels(PartState& state, const std::vector<BezierPatch>& patches,
+                                       const LevelOfDetail& lod);
+  const std::vector<int>& withCoveredHidden(std::size_t part, const std::vector<int>& levels, bool hide);
+  void tessellate(std::size_t part, const std::vector<int>& levels, bool evaluate);
+  void measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool evaluate, bool displaced);
+  void displaceAndBound(std::size_t part, const std::vector<int>& levels);
+
+  HumanModelSettings settings_;
+  Skin skin_;
+  SkeletonPose pose_;
+  std::vector<DressedGarment> garments_;
+  SkinReliefTiling skin_tiling_;  // built on the skin at rest
+  std::uint64_t skin_tiles_id_ = 1;
+  double cloth_patch_size_ = 0.0;  // typicalPatchSize of the garments at rest
+  std::vector<SurfacePart> parts_;
+  std::vector<PartState> part_states_;  // per part
+  std::vector<int> uniform_levels_;     // scratch: a fixed level on every patch
+  std::vector<int> wanted_levels_;      // scratch: what the screen error asks for, per patch
+  std::vector<int> drawn_levels_;       // scratch: the levels with hidden patches at 1
+  // Per part, per patch; shared by the humans of the same body and outfit.
+  std::shared_ptr<const std::vector<std::vector<bool>>> covered_;
+  VertexEvaluation vertex_evaluation_ = VertexEvaluation::kCpu;
+  bool wrinkles_wanted_ = true;
+  std::array<Displacement, 2> displacements_;  // by ReliefKind
 };
 
 }  // namespace dressed_human
