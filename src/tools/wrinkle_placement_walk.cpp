@@ -105,7 +105,8 @@ int run(const std::string& source, const std::string& directory, int count) {
     for (std::size_t g = 0; g < names.size(); ++g) {
       garments[g].pose(pose);
       for (const RegionCompression& region : placements[g].measureRegions(garments[g].patches(), pose)) {
-        csv << "," << region.alpha << "," << region.wrinkles.chain << "," << region.wrinkles.amplitude * 1000.0;
+        csv << "," << region.alpha << "," << chainText(region.wrinkles.chain) << ","
+            << region.wrinkles.amplitude * 1000.0;
         if (g == 0 && region.name == "l_knee_back") knee_alpha.push_back(region.alpha);
       }
       for (const CompressionRegion& region : placements[g].regions()) {
@@ -147,8 +148,8 @@ int run(const std::string& source, const std::string& directory, int count) {
     }
     writePng8(directory + "/wrinkle_walk_tile_" + name + ".png", kTile, kTile, 1,
               shadeReliefMap(tile, Eigen::Vector3d(-0.45, -0.55, 1.0)));
-    tiles << name << "," << k << "," << knee_alpha[k] << "," << map.layouts[patch].chain << "," << patch << ","
-          << tile.maximumHeight() * 1000.0 << "\n";
+    tiles << name << "," << k << "," << knee_alpha[k] << "," << chainText(map.layouts[patch].chain) << "," << patch
+          << "," << tile.maximumHeight() * 1000.0 << "\n";
   }
   std::cout << "wrote " << directory
             << "/wrinkle_walk.csv, wrinkle_walk_strength.csv, wrinkle_walk_tiles.csv and 3 tiles\n";

@@ -179,7 +179,7 @@ TEST(WrinklePlacement, KneeBendCompressesBehindTheKneeOnly) {
   const RegionCompression left = placement.measureRegion(posed, pose, placement.region("l_knee_back"));
   const RegionCompression right = placement.measureRegion(posed, pose, placement.region("r_knee_back"));
   std::cout << "knee 70 deg: l_knee_back alpha " << left.alpha << " (min " << left.alpha_minimum << ", "
-            << left.wrinkles.chain << ", h1 " << left.wrinkles.amplitude << " m), local " << left.alpha_local
+            << chainText(left.wrinkles.chain) << ", h1 " << left.wrinkles.amplitude << " m), local " << left.alpha_local
             << ", r_knee_back " << right.alpha << "\n";
   EXPECT_LT(left.alpha, 0.9);
   EXPECT_TRUE(left.wrinkles.wrinkled);
@@ -272,7 +272,7 @@ TEST(WrinklePlacement, ElbowBendCompressesInsideTheElbow) {
   const std::vector<BezierPatch> posed = posedPatches(jacket, pose);
   const RegionCompression inside = placement.measureRegion(posed, pose, placement.region("l_elbow_inside"));
   const RegionCompression other = placement.measureRegion(posed, pose, placement.region("r_elbow_inside"));
-  std::cout << "elbow 80 deg: l_elbow_inside alpha " << inside.alpha << " (" << inside.wrinkles.chain
+  std::cout << "elbow 80 deg: l_elbow_inside alpha " << inside.alpha << " (" << chainText(inside.wrinkles.chain)
             << "), r_elbow_inside " << other.alpha << "\n";
   EXPECT_LT(inside.alpha, 0.9);
   EXPECT_GT(other.alpha, 0.999);
@@ -417,32 +417,31 @@ TEST(WrinklePlacement, PatternRuleAndAmplitude) {
   WrinklePlacementOptions options;
   const BucklingCell cell{0.03, 0.025};
   // No wrinkles above the threshold; the relief starts from zero below it.
-  const WrinkleChoice none = chooseWrinkles(0.99, "X", cell, options);
+  const WrinkleChoice none = chooseWrinkles(0.99, FoldChain::kX, cell, options);
   EXPECT_FALSE(none.wrinkled);
   EXPECT_EQ(none.amplitude, 0.0);
-  const WrinkleChoice just = chooseWrinkles(options.alpha_threshold - 0.001, "I", cell, options);
+  const WrinkleChoice just = chooseWrinkles(options.alpha_threshold - 0.001, FoldChain::kI, cell, options);
   EXPECT_TRUE(just.wrinkled);
   EXPECT_LT(just.amplitude, 0.1 * cell.half_length_y);
-  const WrinkleChoice some = chooseWrinkles(0.8, "I", cell, options);
+  const WrinkleChoice some = chooseWrinkles(0.8, FoldChain::kI, cell, options);
   const double effective = 0.8 / options.alpha_threshold;
   EXPECT_DOUBLE_EQ(some.alpha_effective, effective);
   EXPECT_NEAR(some.amplitude, std::sqrt(1.0 - effective * effective) * cell.half_length_y, 1e-15);
   // Y/X beyond their domain (h1 > L_x): clamped by the default policy, or as the policy says.
   const BucklingCell narrow{0.01, 0.025};
-  const WrinkleChoice clamped = chooseWrinkles(0.3, "X", narrow, options);
+  const WrinkleChoice clamped = chooseWrinkles(0.3, FoldChain::kX, narrow, options);
   EXPECT_TRUE(clamped.solution.clamped);
   EXPECT_NEAR(clamped.amplitude, narrow.half_width_x, 1e-12);
   options.out_of_domain = OutOfDomainPolicy::throwError;
-  EXPECT_THROW(chooseWrinkles(0.3, "X", narrow, options), std::domain_error);
+  EXPECT_THROW(chooseWrinkles(0.3, FoldChain::kX, narrow, options), std::domain_error);
   options = WrinklePlacementOptions();
-  EXPECT_THROW(chooseWrinkles(1.5, "X", cell, options), std::invalid_argument);
-  EXPECT_THROW(chooseWrinkles(0.5, "Q", cell, options), std::invalid_argument);
+  EXPECT_THROW(chooseWrinkles(1.5, FoldChain::kX, cell, options), std::invalid_argument);
   // The rule: the chain whose curl per cell is nearest the surface's turn per cell.
   const double bend = solveBuckling(PatternKind::X, options.reference_alpha, cell).bend_angle;
-  EXPECT_EQ(chooseChain(0.0, cell, options), "I");
-  EXPECT_EQ(chooseChain(0.2 * bend, cell, options), "I");
-  EXPECT_EQ(chooseChain(0.5 * bend, cell, options), "YY");
-  EXPECT_EQ(chooseChain(bend, cell, options), "X");
+  EXPECT_EQ(chooseChain(0.0, cell, options), FoldChain::kI);
+  EXPECT_EQ(chooseChain(0.2 * bend, cell, options), FoldChain::kI);
+  EXPECT_EQ(chooseChain(0.5 * bend, cell, options), FoldChain::kYY);
+  EXPECT_EQ(chooseChain(bend, cell, options), FoldChain::kX);
   // On the garments: tubes (sleeves, trouser legs) get a curling chain, never I.
   for (const char* name : {"jacket", "pants"}) {
     Garment garment = makeGarment(name);
@@ -452,9 +451,9 @@ TEST(WrinklePlacement, PatternRuleAndAmplitude) {
       const PatchWrinkleLayout& layout = placement.layouts()[p];
       std::cout << name << " patch " << p << " (" << piece << "): " << layout.rows << " x " << layout.cells_around
                 << " cells " << 2000.0 * layout.cell.half_length_y << " x " << 2000.0 * layout.cell.half_width_x
-                << " mm, turn/cell " << layout.turn_per_cell << " rad -> " << layout.chain << "\n";
+                << " mm, turn/cell " << layout.turn_per_cell << " rad -> " << chainText(layout.chain) << "\n";
       if (piece.find("sleeve") != std::string::npos || piece.find("_leg") != std::string::npos) {
-        EXPECT_NE(layout.chain, "I") << p;
+        EXPECT_NE(layout.chain, FoldChain::kI) << p;
       }
     }
   }

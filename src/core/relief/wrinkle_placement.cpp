@@ -72,18 +72,16 @@ double curveLength(const BezierPatch& patch, bool along_u, double fixed) {
   return length;
 }
 
-PatternKind firstKind(const std::string& chain) {
-  if (chain.empty()) throw std::invalid_argument("wrinkle chain is empty");
-  switch (chain[0]) {
-    case 'I':
+PatternKind firstKind(FoldChain chain) {
+  switch (chain) {
+    case FoldChain::kI:
       return PatternKind::I;
-    case 'Y':
+    case FoldChain::kYY:
       return PatternKind::Y;
-    case 'X':
+    case FoldChain::kX:
       return PatternKind::X;
-    default:
-      throw std::invalid_argument("wrinkle chain '" + chain + "' has an unknown pattern '" + chain[0] + "'");
   }
+  throw std::invalid_argument("unknown fold chain " + std::to_string(static_cast<int>(chain)));
 }
 
 }  // namespace
@@ -120,13 +118,6 @@ void checkWrinklePlacementOptions(const WrinklePlacementOptions& o) {
                                 str(o.saturation_alpha));
   }
 }
-
-namespace {
-
-bool isSleeve(const std::string& piece) { return piece == "l_sleeve" || piece == "r_sleeve"; }
-bool isLeg(const std::string& piece) { return piece == "l_leg" || piece == "r_leg"; }
-
-}  // namespace
 
 PrincipalStretch principalStretch(const Eigen::Vector3d& rest_du, const Eigen::Vector3d& rest_dv,
                                   const Eigen::Vector3d& posed_du, const Eigen::Vector3d& posed_dv) {
@@ -168,16 +159,28 @@ PrincipalStretch measureStretch(const std::vector<BezierPatch>& rest, const std:
   return principalStretch(r.d_du, r.d_dv, p.d_du, p.d_dv);
 }
 
-std::string chooseChain(double turn_per_cell, const BucklingCell& cell, const WrinklePlacementOptions& options) {
+const char* chainText(FoldChain chain) {
+  switch (chain) {
+    case FoldChain::kI:
+      return "I";
+    case FoldChain::kYY:
+      return "YY";
+    case FoldChain::kX:
+      return "X";
+  }
+  throw std::invalid_argument("unknown fold chain " + std::to_string(static_cast<int>(chain)));
+}
+
+FoldChain chooseChain(double turn_per_cell, const BucklingCell& cell, const WrinklePlacementOptions& options) {
   const double bend =
       solveBuckling(PatternKind::X, options.reference_alpha, cell, OutOfDomainPolicy::clampToDomainEdge).bend_angle;
   const double turn = std::abs(turn_per_cell);
   const double to_i = turn, to_yy = std::abs(turn - bend / 2.0), to_x = std::abs(turn - bend);
-  if (to_i <= to_yy && to_i <= to_x) return "I";
-  return to_yy <= to_x ? "YY" : "X";
+  if (to_i <= to_yy && to_i <= to_x) return FoldChain::kI;
+  return to_yy <= to_x ? FoldChain::kYY : FoldChain::kX;
 }
 
-WrinkleChoice chooseWrinkles(double alpha, const std::string& chain, const BucklingCell& cell,
+WrinkleChoice chooseWrinkles(double alpha, FoldChain chain, const BucklingCell& cell,
                              const WrinklePlacementOptions& options) {
   requireUnit(alpha, "chooseWrinkles: alpha");
   WrinkleChoice choice;
@@ -215,30 +218,106 @@ void layoutPatch(const BezierPatch& patch, const WrinklePlacementOptions& option
   layout.chain = chooseChain(layout.turn_per_cell, layout.cell, options);
 }
 
+// The n x n samples (u, v from 0 to 1) of each patch `wanted` takes.
+template <typename Wanted, typename Visit>
+void forEachSample(const std::vector<BezierPatch>& patches, int n, const Wanted& wanted, const Visit& visit) {
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    if (!wanted(p)) continue;
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1),
+                              static_cast<double>(j) / (n - 1)};
+        visit(at, patches[p].sample(at.u, at.v));
+      }
+    }
+  }
+}
+
+// A bone of the skeleton at rest (world = body frame at rest: x front, z up).
+struct RestBone {
+  int index = -1;
+  Eigen::Vector3d origin;
+  Eigen::Vector3d axis;  // its z axis: along the bone
+};
+
+RestBone restBone(const Skeleton& skeleton, const SkeletonPose& rest_pose, const std::string& name) {
+  const int b = skeleton.findBone(name);
+  if (b < 0) throw std::invalid_argument("WrinklePlacement: the skeleton has no bone '" + name + "'");
+  const RigidTransform& frame = rest_pose.bone_in_world[static_cast<std::size_t>(b)];
+  return RestBone{b, frame.translation, frame.rotation * Eigen::Vector3d::UnitZ()};
+}
+
+// A region across a joint (the header comment's table): the samples of one garment piece within
+// half_width of the joint along the upper bone, on the side facing `facing`.
+struct JointRegion {
+  std::string name;
+  std::string piece;
+  RestBone upper;  // its axis: the limb's at rest
+  RestBone joint;  // its origin: the joint
+  Eigen::Vector3d facing;
+  double half_width = 0.0;
+};
+
+std::vector<JointRegion> jointRegions(const Skeleton& skeleton, const SkeletonPose& rest_pose,
+                                      const WrinklePlacementOptions& options) {
+  std::vector<JointRegion> regions;
+  for (const std::string side : {"l_", "r_"}) {
+    const RestBone hip = restBone(skeleton, rest_pose, side + "hip");
+    regions.push_back(JointRegion{side + "knee_back", side + "leg", hip, restBone(skeleton, rest_pose, side + "knee"),
+                                  -Eigen::Vector3d::UnitX(), options.knee_half_width});
+  }
+  for (const std::string side : {"l_", "r_"}) {
+    const RestBone shoulder = restBone(skeleton, rest_pose, side + "shoulder");
+    // The crease of the elbow faces the way the forearm flexes: forward for arms hanging at
+    // rest (checked against the flexion in test_wrinkle_placement).
+    const Eigen::Vector3d inside =
+        (Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(shoulder.axis) * shoulder.axis).normalized();
+    regions.push_back(JointRegion{side + "elbow_inside", side + "sleeve", shoulder,
+                                  restBone(skeleton, rest_pose, side + "elbow"), inside, options.elbow_half_width});
+  }
+  return regions;
+}
+
+// The trunk's pieces: the waist region's, all around.
+bool isTrunkPiece(const std::string& piece) {
+  return piece != "l_sleeve" && piece != "r_sleeve" && piece != "l_leg" && piece != "r_leg" && piece != "crotch";
+}
+
+// The region's samples: those on the patches `wanted` takes that `accept` takes; its main patch
+// holds most of them.
+template <typename Wanted, typename Accept>
+std::optional<CompressionRegion> collectRegion(const std::string& name, const std::vector<BezierPatch>& patches, int n,
+                                               const Wanted& wanted, const Accept& accept) {
+  CompressionRegion region;
+  region.name = name;
+  forEachSample(patches, n, wanted, [&](const SurfacePoint& at, const PatchSample& sample) {
+    if (accept(at, sample)) region.samples.push_back(at);
+  });
+  if (region.samples.empty()) return std::nullopt;
+  std::vector<int> count(patches.size(), 0);
+  for (const SurfacePoint& at : region.samples) ++count[at.patch];
+  region.main_patch = static_cast<std::uint32_t>(std::max_element(count.begin(), count.end()) - count.begin());
+  return region;
+}
+
 // Spans: a sample at h (span_half_length) above the joint paired with the one as far below it
 // that lies on the same line along the limb (nearest across the axis), at rest, on the region's
 // side of the limb (facing), among the n x n samples of the piece's patches. Longer than the
 // region: with r the span's distance behind the joint, the span closes at tan(theta / 2) = h / r
 // (alpha_span), so h must be well above r for the measure to keep falling through a walk's knee
 // bend.
-void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentControlNet& net, const std::string& piece,
-                      int n, double h, const Eigen::Vector3d& facing, const Eigen::Vector3d& joint,
-                      const Eigen::Vector3d& axis, CompressionRegion& region) {
+void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentControlNet& net, const JointRegion& joint,
+                      const WrinklePlacementOptions& options, CompressionRegion& region) {
+  const double h = options.span_half_length;
+  const Eigen::Vector3d& axis = joint.upper.axis;
   std::vector<std::pair<SurfacePoint, Eigen::Vector3d>> upper, lower;
-  for (std::size_t p = 0; p < patches.size(); ++p) {
-    if (net.patchPiece(p) != piece) continue;
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) {
-        const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1),
-                              static_cast<double>(j) / (n - 1)};
-        const PatchSample sample = patches[p].sample(at.u, at.v);
-        if (sample.normal.dot(facing) < 0.5) continue;
-        const double along = (sample.position - joint).dot(axis);
-        if (std::abs(std::abs(along) - h) > 0.2 * h) continue;
-        (along < 0.0 ? upper : lower).emplace_back(at, sample.position);
-      }
-    }
-  }
+  const auto on_piece = [&](std::size_t patch) { return net.patchPiece(patch) == joint.piece; };
+  forEachSample(patches, options.samples_per_side, on_piece, [&](const SurfacePoint& at, const PatchSample& sample) {
+    if (sample.normal.dot(joint.facing) < 0.5) return;
+    const double along = (sample.position - joint.joint.origin).dot(axis);
+    if (std::abs(std::abs(along) - h) > 0.2 * h) return;
+    (along < 0.0 ? upper : lower).emplace_back(at, sample.position);
+  });
   for (const auto& [top, top_position] : upper) {
     double best = std::numeric_limits<double>::infinity();
     const std::pair<SurfacePoint, Eigen::Vector3d>* match = nullptr;
@@ -254,6 +333,8 @@ void addMaterialSpans(const std::vector<BezierPatch>& patches, const GarmentCont
       region.spans.push_back(MaterialSpan{top, match->first, (match->second - top_position).dot(axis)});
     }
   }
+  region.upper_bone = joint.upper.index;
+  region.lower_bone = joint.joint.index;
 }
 
 }  // namespace
@@ -275,78 +356,25 @@ WrinklePlacement::WrinklePlacement(const Garment& garment, const Skeleton& skele
   layouts_.resize(rest_patches_.size());
   for (std::size_t p = 0; p < rest_patches_.size(); ++p) layoutPatch(rest_patches_[p], options_, layouts_[p]);
 
-  // Regions from rest geometry (world = body frame at rest: x front, z up).
-  auto boneOrigin = [&](const char* name) -> Eigen::Vector3d {
-    const int b = skeleton.findBone(name);
-    if (b < 0) throw std::invalid_argument(std::string("WrinklePlacement: the skeleton has no bone '") + name + "'");
-    return rest_pose.bone_in_world[static_cast<std::size_t>(b)].translation;
-  };
-  auto boneAxis = [&](const char* name) -> Eigen::Vector3d {
-    const int b = skeleton.findBone(name);
-    if (b < 0) throw std::invalid_argument(std::string("WrinklePlacement: the skeleton has no bone '") + name + "'");
-    return rest_pose.bone_in_world[static_cast<std::size_t>(b)].rotation * Eigen::Vector3d::UnitZ();
-  };
   const int n = options_.samples_per_side;
-  const auto addSpans = [&](const std::string& piece, const Eigen::Vector3d& facing, const Eigen::Vector3d& joint,
-                            const Eigen::Vector3d& axis, const std::string& upper_bone, const std::string& lower_bone) {
-    CompressionRegion& region = regions_.back();
-    region.upper_bone = skeleton.findBone(upper_bone);
-    region.lower_bone = skeleton.findBone(lower_bone);
-    addMaterialSpans(rest_patches_, net, piece, n, options_.span_half_length, facing, joint, axis, region);
-  };
-  auto collect = [&](const std::string& name, const auto& accept) {
-    CompressionRegion region;
-    region.name = name;
-    for (std::size_t p = 0; p < rest_patches_.size(); ++p) {
-      for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-          const SurfacePoint at{static_cast<std::uint32_t>(p), static_cast<double>(i) / (n - 1),
-                                static_cast<double>(j) / (n - 1)};
-          const PatchSample sample = rest_patches_[p].sample(at.u, at.v);
-          if (accept(net.patchPiece(p), sample)) region.samples.push_back(at);
-        }
-      }
-    }
-    if (region.samples.empty()) return;
-    std::vector<int> count(rest_patches_.size(), 0);
-    for (const SurfacePoint& at : region.samples) ++count[at.patch];
-    region.main_patch = static_cast<std::uint32_t>(std::max_element(count.begin(), count.end()) - count.begin());
-    regions_.push_back(std::move(region));
-  };
-  for (const char* side : {"l", "r"}) {
-    const std::string s(side);
-    const Eigen::Vector3d knee = boneOrigin((s + "_knee").c_str());
-    const Eigen::Vector3d thigh = boneAxis((s + "_hip").c_str());
-    collect(s + "_knee_back", [&](const std::string& piece, const PatchSample& sample) {
-      return piece == s + "_leg" && std::abs((sample.position - knee).dot(thigh)) <= options_.knee_half_width &&
-             sample.normal.dot(-Eigen::Vector3d::UnitX()) >= 0.5;
-    });
-    if (!regions_.empty() && regions_.back().name == s + "_knee_back") {
-      addSpans(s + "_leg", -Eigen::Vector3d::UnitX(), knee, thigh, s + "_hip", s + "_knee");
-    }
+  for (const JointRegion& joint : jointRegions(skeleton, rest_pose, options_)) {
+    const auto on_piece = [&](std::size_t patch) { return net.patchPiece(patch) == joint.piece; };
+    std::optional<CompressionRegion> region =
+        collectRegion(joint.name, rest_patches_, n, on_piece, [&](const SurfacePoint&, const PatchSample& sample) {
+          return std::abs((sample.position - joint.joint.origin).dot(joint.upper.axis)) <= joint.half_width &&
+                 sample.normal.dot(joint.facing) >= 0.5;
+        });
+    if (!region) continue;
+    addMaterialSpans(rest_patches_, net, joint, options_, *region);
+    regions_.push_back(std::move(*region));
   }
-  for (const char* side : {"l", "r"}) {
-    const std::string s(side);
-    const Eigen::Vector3d elbow = boneOrigin((s + "_elbow").c_str());
-    const Eigen::Vector3d upper_arm = boneAxis((s + "_shoulder").c_str());
-    // The crease of the elbow faces the way the forearm flexes: forward for arms hanging at
-    // rest (checked against the flexion in test_wrinkle_placement).
-    Eigen::Vector3d inside = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(upper_arm) * upper_arm;
-    inside.normalize();
-    collect(s + "_elbow_inside", [&](const std::string& piece, const PatchSample& sample) {
-      return piece == s + "_sleeve" &&
-             std::abs((sample.position - elbow).dot(upper_arm)) <= options_.elbow_half_width &&
-             sample.normal.dot(inside) >= 0.5;
-    });
-    if (!regions_.empty() && regions_.back().name == s + "_elbow_inside") {
-      addSpans(s + "_sleeve", inside, elbow, upper_arm, s + "_shoulder", s + "_elbow");
-    }
-  }
-  const double waist_height = boneOrigin("waist").z();
-  collect("waist", [&](const std::string& piece, const PatchSample& sample) {
-    return !isSleeve(piece) && !isLeg(piece) && piece != "crotch" &&
-           std::abs(sample.position.z() - waist_height) <= options_.waist_half_width;
-  });
+  const double waist_height = restBone(skeleton, rest_pose, "waist").origin.z();
+  const auto on_trunk = [&](std::size_t patch) { return isTrunkPiece(net.patchPiece(patch)); };
+  std::optional<CompressionRegion> waist =
+      collectRegion("waist", rest_patches_, n, on_trunk, [&](const SurfacePoint&, const PatchSample& sample) {
+        return std::abs(sample.position.z() - waist_height) <= options_.waist_half_width;
+      });
+  if (waist) regions_.push_back(std::move(*waist));
 }
 
 const CompressionRegion& WrinklePlacement::region(const std::string& name) const {
@@ -478,7 +506,7 @@ PoseWrinkleMap makePoseWrinkleMap(const WrinklePlacement& placement, const std::
     spec.width_pixels = tile_pixels;   // around: v
     spec.height_pixels = tile_pixels;  // rows: u
     spec.cell = layout.cell;
-    spec.chain = layout.chain;
+    spec.chain = chainText(layout.chain);
     spec.cells_around = layout.cells_around;
     spec.rows = layout.rows;
     spec.alpha = row_alpha;

@@ -109,25 +109,32 @@ struct WrinklePlacementOptions {
   double saturation_alpha = 0.6;  ///< VertexCompression: wrinkle strength 1 at and below this
 };
 
+/// The chains of cells the pattern rule chooses from, repeated around a patch: I cells (flat),
+/// Y-Y (split joints alternating with flat I-I joints: curls by B every other joint), X cells
+/// (curl by B at every joint).
+enum class FoldChain { kI, kYY, kX };
+/// "I", "YY", "X": the chain as the seed and WrinkleMapSpec::chain write it.
+const char* chainText(FoldChain chain);
+
 /// alpha -> the wrinkles of one cell.
 struct WrinkleChoice {
-  bool wrinkled = false;         ///< alpha below the threshold
-  std::string chain = "I";       ///< "I", "YY" or "X", repeated around
-  double alpha = 1.0;            ///< measured
-  double alpha_effective = 1.0;  ///< after the threshold, before the domain clamp
-  BucklingSolution solution;     ///< of the chain's first pattern at alpha_effective
-  double amplitude = 0.0;        ///< solution.h1 in metres (cell in metres)
+  bool wrinkled = false;            ///< alpha below the threshold
+  FoldChain chain = FoldChain::kI;  ///< repeated around
+  double alpha = 1.0;               ///< measured
+  double alpha_effective = 1.0;     ///< after the threshold, before the domain clamp
+  BucklingSolution solution;        ///< of the chain's first pattern at alpha_effective
+  double amplitude = 0.0;           ///< solution.h1 in metres (cell in metres)
 };
 
 /// Throws std::invalid_argument naming the first bad option.
 void checkWrinklePlacementOptions(const WrinklePlacementOptions& options);
 
-/// Throws std::invalid_argument for alpha outside [0, 1], an unknown chain or a bad cell.
-WrinkleChoice chooseWrinkles(double alpha, const std::string& chain, const BucklingCell& cell,
+/// Throws std::invalid_argument for alpha outside [0, 1] or a bad cell.
+WrinkleChoice chooseWrinkles(double alpha, FoldChain chain, const BucklingCell& cell,
                              const WrinklePlacementOptions& options = {});
 /// The pattern rule: the chain whose curl per cell (0, B/2, B at reference_alpha) is nearest
 /// turn_per_cell (radians the surface turns across one cell).
-std::string chooseChain(double turn_per_cell, const BucklingCell& cell, const WrinklePlacementOptions& options = {});
+FoldChain chooseChain(double turn_per_cell, const BucklingCell& cell, const WrinklePlacementOptions& options = {});
 
 /// Two material points across a joint, on one line along the limb at rest (above and below
 /// the knee, ...).
@@ -178,7 +185,7 @@ struct PatchWrinkleLayout {
   int cells_around = 4;        ///< cells along v
   BucklingCell cell;           ///< metres
   double turn_per_cell = 0.0;  ///< radians, around the limb
-  std::string chain = "I";
+  FoldChain chain = FoldChain::kI;
 };
 
 class WrinklePlacement {
