@@ -188,6 +188,32 @@ void buildBuckets(CellLevel& level, const Lattice& lattice) {
   }
 }
 
+// One level's wall profiles, one per wall however many cells meet it: the first cell to reach a
+// wall makes its profile, the neighbour across it finds that one by the wall's key.
+class WallWobbles {
+ public:
+  WallWobbles(CellLevel& level, const SkinReliefParameters& parameters, std::mt19937& random)
+      : level_(level), parameters_(parameters), random_(random) {}
+
+  // `wall` (makeWall's) between the seeds `centre` and `other` gets its profile and extent.
+  void assign(const WallKey& key, const Eigen::Vector2d& centre, const Eigen::Vector2d& other, Wall& wall) {
+    auto found = profiles_.find(key);
+    if (found == profiles_.end()) {
+      const double clearance =
+          std::min(std::abs((wall.start - centre).dot(wall.normal)), std::abs((wall.start - other).dot(wall.normal)));
+      found = profiles_.emplace(key, addWobbleProfile(level_, parameters_, wall.length, clearance, random_)).first;
+    }
+    wall.wobble = found->second;
+    wall.wobble_extent = maximumWobble(level_, wall);
+  }
+
+ private:
+  CellLevel& level_;
+  const SkinReliefParameters& parameters_;
+  std::mt19937& random_;
+  std::map<WallKey, int> profiles_;
+};
+
 void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, double stretch, std::mt19937& random,
                    std::mt19937& wobble_random) {
   const Lattice lattice = latticeFor(level.spacing, parameters.direction_angle, stretch);
@@ -195,7 +221,7 @@ void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, dou
   level.cells.resize(seeds.size());
   for (std::size_t index = 0; index < seeds.size(); ++index) level.cells[index].centre = seeds[index];
 
-  std::map<WallKey, int> wobble_of_wall;
+  WallWobbles wobbles(level, parameters, wobble_random);
   std::vector<Eigen::Vector2d> polygon, scratch_polygon;
   std::vector<int> tags, scratch_tags;
   struct Candidate {
@@ -258,17 +284,7 @@ void buildTopLevel(CellLevel& level, const SkinReliefParameters& parameters, dou
                              (level.metric * (other - centre)).normalized(), canonical);
         wall.neighbour = candidate.cell;
         wall.neighbour_offset = candidate.offset;
-        const WallKey key = canonical ? mine : theirs;
-        auto found = wobble_of_wall.find(key);
-        if (found == wobble_of_wall.end()) {
-          const double clearance = std::min(std::abs((wall.start - centre).dot(wall.normal)),
-                                            std::abs((wall.start - other).dot(wall.normal)));
-          found =
-              wobble_of_wall.emplace(key, addWobbleProfile(level, parameters, wall.length, clearance, wobble_random))
-                  .first;
-        }
-        wall.wobble = found->second;
-        wall.wobble_extent = maximumWobble(level, wall);
+        wobbles.assign(canonical ? mine : theirs, centre, other, wall);
         finishWall(wall, centre);
         cell.wobble_margin = std::max(cell.wobble_margin, wall.wobble_extent);
         level.walls.push_back(wall);
@@ -375,7 +391,7 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
 
   std::vector<Eigen::Vector2d> polygon, scratch_polygon;
   std::vector<int> tags, scratch_tags;
-  std::map<WallKey, int> wobble_of_wall;
+  WallWobbles wobbles(level, parameters, wobble_random);
   std::map<int, int> inherited_wobble;  // parent-level profile index -> this level's copy
   for (std::size_t parent_index = 0; parent_index < parents.cells.size(); ++parent_index) {
     const Cell& parent = parents.cells[parent_index];
@@ -423,17 +439,7 @@ void buildChildLevel(std::vector<CellLevel>& levels, std::size_t level_index, co
           wall = makeWall(polygon[edge], polygon[(edge + 1) % polygon.size()],
                           (level.metric * (other - cell.centre)).normalized(), canonical);
           wall.neighbour = sibling;
-          const WallKey key{std::min(self, sibling), std::max(self, sibling), 0, 0};
-          auto found = wobble_of_wall.find(key);
-          if (found == wobble_of_wall.end()) {
-            const double clearance = std::min(std::abs((wall.start - cell.centre).dot(wall.normal)),
-                                              std::abs((wall.start - other).dot(wall.normal)));
-            found =
-                wobble_of_wall.emplace(key, addWobbleProfile(level, parameters, wall.length, clearance, wobble_random))
-                    .first;
-          }
-          wall.wobble = found->second;
-          wall.wobble_extent = maximumWobble(level, wall);
+          wobbles.assign(WallKey{std::min(self, sibling), std::max(self, sibling), 0, 0}, cell.centre, other, wall);
         }
         finishWall(wall, cell.centre);
         level.walls.push_back(wall);
