@@ -1,7 +1,5 @@
 // The whole skin per frame: pose (bone frames -> world control points) and tessellate, at the
 // default level and others; vertices/s of the whole frame. Poses cycle through the walk.
-#include "dressed_human/core/motion/motion_evaluator.h"
-#include "dressed_human/core/motion/motion_file.h"
 #include "dressed_human/core/surfaces/skin.h"
 
 #include <benchmark/benchmark.h>
@@ -9,38 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "walk_fixture.h"
+
 namespace dressed_human {
 namespace {
 
-const std::string kSource = DRESSED_HUMAN_SOURCE_DIR;
-
-struct Fixture {
-  Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
-  BodyDescription body = loadBodyDescriptionFile(kSource + "/config/bodies/default.yaml", skeleton);
-  std::vector<SkeletonPose> poses;
-  Fixture() {
-    const ForwardKinematics kinematics(skeleton, body.shape);
-    MotionEvaluator walk(loadMotionFile(kSource + "/config/motions/walk.yaml"));
-    JointAngles angles;
-    RigidTransform root;
-    poses.resize(64);
-    for (std::size_t i = 0; i < poses.size(); ++i) {
-      walk.evaluate(walk.motion().period * static_cast<double>(i) / poses.size(), angles, root);
-      kinematics.compute(root, angles, poses[i]);
-    }
-  }
-};
-
-const Fixture& fixture() {
-  static const Fixture f;
-  return f;
-}
-
 void BM_SkinPose(benchmark::State& state) {
-  Skin skin(fixture().skeleton, fixture().body);
+  Skin skin(walkFixture().skeleton, walkFixture().body);
   std::size_t i = 0;
   for (auto _ : state) {
-    skin.pose(fixture().poses[i++ % fixture().poses.size()]);
+    skin.pose(walkFixture().poses[i++ % walkFixture().poses.size()]);
     benchmark::DoNotOptimize(skin.patches().data());
   }
   state.counters["patches"] = static_cast<double>(skin.patches().size());
@@ -50,12 +26,12 @@ BENCHMARK(BM_SkinPose);
 // Pose + uniform tessellation (layout reused, as in a running renderer).
 void BM_SkinPoseAndTessellate(benchmark::State& state) {
   const int level = static_cast<int>(state.range(0));
-  Skin skin(fixture().skeleton, fixture().body);
+  Skin skin(walkFixture().skeleton, walkFixture().body);
   Tessellator tessellator;
   tessellator.tessellateUniform(skin.patches(), skin.topology(), level);
   std::size_t i = 0;
   for (auto _ : state) {
-    skin.pose(fixture().poses[i++ % fixture().poses.size()]);
+    skin.pose(walkFixture().poses[i++ % walkFixture().poses.size()]);
     const TriangleMesh& mesh = tessellator.tessellateUniform(skin.patches(), skin.topology(), level);
     benchmark::DoNotOptimize(mesh.positions.data());
   }
@@ -77,11 +53,11 @@ BENCHMARK(BM_SkinPoseAndTessellate)
 // layout is rebuilt only when a level changes).
 void BM_SkinPoseAndTessellateToError(benchmark::State& state) {
   const double max_error = 1e-6 * static_cast<double>(state.range(0));
-  Skin skin(fixture().skeleton, fixture().body);
+  Skin skin(walkFixture().skeleton, walkFixture().body);
   Tessellator tessellator;
   std::size_t i = 0;
   for (auto _ : state) {
-    skin.pose(fixture().poses[i++ % fixture().poses.size()]);
+    skin.pose(walkFixture().poses[i++ % walkFixture().poses.size()]);
     const TriangleMesh& mesh = tessellator.tessellateToError(skin.patches(), skin.topology(), max_error);
     benchmark::DoNotOptimize(mesh.positions.data());
   }
