@@ -17,6 +17,7 @@
 #include "dressed_human/core/motion/motion_file.h"
 #include "dressed_human/core/surfaces/skin.h"
 #include "dressed_human/core/surfaces/tessellation.h"
+#include "dressed_human/core/surfaces/triangle_samples.h"
 
 #include <Eigen/Dense>
 
@@ -62,14 +63,7 @@ PatchSurface shiftedCapsule(const std::vector<CylinderRing>& rings, double botto
 
 NamedSurface capsule() {
   NamedSurface s{"capsule", {}, PatchTopology(0)};
-  append(s, makeGeneralizedCylinder({{0.0, 0.10, 0.08},
-                                     {0.10, 0.14, 0.10},
-                                     {0.20, 0.05, 0.05},
-                                     {0.30, 0.06, 0.05},
-                                     {0.40, 0.07, 0.06},
-                                     {0.50, 0.03, 0.035},
-                                     {0.60, 0.04, 0.04}},
-                                    0.08, 0.03));
+  append(s, makeBulgingCapsule());
   return s;
 }
 
@@ -151,24 +145,13 @@ struct Errors {
 Errors measure(const TriangleMesh& mesh, const Tessellator& tessellator, const std::vector<BezierPatch>& patches) {
   constexpr int kSteps = 3;  // 10 sample points per triangle; the 3 corners carry no error
   Errors errors;
-  const auto& corners = tessellator.triangleCornerParameters();
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const BezierPatch& patch = patches[mesh.triangle_patch[t]];
-    for (int a = 0; a <= kSteps; ++a) {
-      for (int b = 0; a + b <= kSteps; ++b) {
-        if (a == kSteps || b == kSteps || a + b == 0) continue;
-        const double wa = double(a) / kSteps, wb = double(b) / kSteps, wc = 1.0 - wa - wb;
-        const Eigen::Vector2d uv =
-            (wa * corners[3 * t] + wb * corners[3 * t + 1] + wc * corners[3 * t + 2]).cwiseMax(0.0).cwiseMin(1.0);
-        const Eigen::Vector3d on_mesh = wa * mesh.positions[mesh.indices[3 * t]].cast<double>() +
-                                        wb * mesh.positions[mesh.indices[3 * t + 1]].cast<double>() +
-                                        wc * mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
-        const double parametric = (on_mesh - patch.position(uv.x(), uv.y())).norm();
-        errors.parametric = std::max(errors.parametric, parametric);
-        errors.closest = std::max(errors.closest, std::min(parametric, distanceToPatch(patch, on_mesh, uv)));
-      }
-    }
-  }
+  forEachTriangleSample(mesh, tessellator.triangleCornerParameters(), kSteps, [&](const TriangleSample& sample) {
+    if (sample.corner) return;
+    const BezierPatch& patch = patches[mesh.triangle_patch[sample.triangle]];
+    const double parametric = (sample.on_mesh - patch.position(sample.uv.x(), sample.uv.y())).norm();
+    errors.parametric = std::max(errors.parametric, parametric);
+    errors.closest = std::max(errors.closest, std::min(parametric, distanceToPatch(patch, sample.on_mesh, sample.uv)));
+  });
   return errors;
 }
 

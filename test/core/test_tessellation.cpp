@@ -1,6 +1,7 @@
 #include "dressed_human/core/surfaces/tessellation.h"
 
 #include "dressed_human/core/surfaces/generalized_cylinder.h"
+#include "dressed_human/core/surfaces/triangle_samples.h"
 
 #include <gtest/gtest.h>
 
@@ -20,19 +21,6 @@
 
 namespace dressed_human {
 namespace {
-
-// A closed capsule-like surface: 2 stacks of 4 side patches, a dome at each end (16 patches),
-// with bulges and a waist so curvature varies from patch to patch.
-PatchSurface closedTestSurface() {
-  return makeGeneralizedCylinder({{0.0, 0.10, 0.08},
-                                  {0.10, 0.14, 0.10},
-                                  {0.20, 0.05, 0.05},
-                                  {0.30, 0.06, 0.05},
-                                  {0.40, 0.07, 0.06},
-                                  {0.50, 0.03, 0.035},
-                                  {0.60, 0.04, 0.04}},
-                                 0.08, 0.03);
-}
 
 struct EdgeUse {
   int forward = 0;   // as (a, b) with a < b
@@ -110,28 +98,17 @@ double maxParametricError(const TriangleMesh& mesh, const Tessellator& tessellat
   constexpr int kSteps = 5;
   if (per_patch) per_patch->assign(patches.size(), 0.0);
   double worst = 0.0;
-  const auto& corners = tessellator.triangleCornerParameters();
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const BezierPatch& patch = patches[mesh.triangle_patch[t]];
-    for (int a = 0; a <= kSteps; ++a) {
-      for (int b = 0; a + b <= kSteps; ++b) {
-        const double wa = double(a) / kSteps, wb = double(b) / kSteps, wc = 1.0 - wa - wb;
-        const Eigen::Vector2d uv =
-            (wa * corners[3 * t] + wb * corners[3 * t + 1] + wc * corners[3 * t + 2]).cwiseMax(0.0).cwiseMin(1.0);
-        const Eigen::Vector3d on_mesh = wa * mesh.positions[mesh.indices[3 * t]].cast<double>() +
-                                        wb * mesh.positions[mesh.indices[3 * t + 1]].cast<double>() +
-                                        wc * mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
-        const double error = (on_mesh - patch.position(uv.x(), uv.y())).norm();
-        worst = std::max(worst, error);
-        if (per_patch) (*per_patch)[mesh.triangle_patch[t]] = std::max((*per_patch)[mesh.triangle_patch[t]], error);
-      }
-    }
-  }
+  forEachTriangleSample(mesh, tessellator.triangleCornerParameters(), kSteps, [&](const TriangleSample& sample) {
+    const std::uint32_t patch = mesh.triangle_patch[sample.triangle];
+    const double error = (sample.on_mesh - patches[patch].position(sample.uv.x(), sample.uv.y())).norm();
+    worst = std::max(worst, error);
+    if (per_patch) (*per_patch)[patch] = std::max((*per_patch)[patch], error);
+  });
   return worst;
 }
 
 TEST(GeneralizedCylinder, TopologyMatchesCoincidentEdges) {
-  const PatchSurface surface = closedTestSurface();
+  const PatchSurface surface = makeBulgingCapsule();
   ASSERT_EQ(surface.patches.size(), 16u);
   const PatchTopology found = PatchTopology::fromCoincidentEdges(surface.patches, 1e-12);
   ASSERT_EQ(found.links().size(), surface.topology.links().size());
@@ -144,7 +121,7 @@ TEST(GeneralizedCylinder, TopologyMatchesCoincidentEdges) {
 }
 
 TEST(Tessellation, UniformClosedSurfaceIsWatertight) {
-  const PatchSurface surface = closedTestSurface();
+  const PatchSurface surface = makeBulgingCapsule();
   Tessellator tessellator;
   for (int level : {1, 2, 3, 5, 8, 16}) {
     SCOPED_TRACE(level);
@@ -160,7 +137,7 @@ TEST(Tessellation, UniformClosedSurfaceIsWatertight) {
 }
 
 TEST(Tessellation, MixedLevelsStayWatertight) {
-  const PatchSurface surface = closedTestSurface();
+  const PatchSurface surface = makeBulgingCapsule();
   Tessellator tessellator;
   std::mt19937 random(11);
   std::uniform_int_distribution<int> level(1, 13);
@@ -195,7 +172,7 @@ TEST(Tessellation, OpenTubeHasBoundaryOnlyAtItsRims) {
 }
 
 TEST(Tessellation, AdaptiveToleranceIsHonoured) {
-  const PatchSurface surface = closedTestSurface();
+  const PatchSurface surface = makeBulgingCapsule();
   Tessellator tessellator;
   for (double tolerance : {2e-3, 3e-4, 1e-4}) {
     SCOPED_TRACE(tolerance);
@@ -214,7 +191,7 @@ TEST(Tessellation, AdaptiveToleranceIsHonoured) {
 }
 
 TEST(Tessellation, ScreenSpaceLevelsFollowDistance) {
-  const PatchSurface surface = closedTestSurface();
+  const PatchSurface surface = makeBulgingCapsule();
   const BezierPatch& patch = surface.patches[0];
   CameraView camera{Eigen::Vector3d(0.0, -2.0, 0.3), 0.8, 1080.0};
   const int far_level = levelForScreenError(patch, camera, 0.5, Tessellator::kMaxLevel);
@@ -243,7 +220,7 @@ TEST(Tessellation, ScreenSpaceLevelsFollowDistance) {
 }
 
 TEST(Tessellation, RepeatedFramesReuseTheLayoutAndAllocateNothing) {
-  PatchSurface surface = closedTestSurface();
+  PatchSurface surface = makeBulgingCapsule();
   Tessellator tessellator;
   tessellator.tessellateToError(surface.patches, surface.topology, 1e-4);
   EXPECT_EQ(tessellator.layoutBuildCount(), 1u);
@@ -282,7 +259,7 @@ TEST(Tessellation, RepeatedFramesReuseTheLayoutAndAllocateNothing) {
 }
 
 TEST(Tessellation, RejectsInconsistentInput) {
-  const PatchSurface surface = closedTestSurface();
+  const PatchSurface surface = makeBulgingCapsule();
   Tessellator tessellator;
   EXPECT_THROW(tessellator.tessellate(surface.patches, surface.topology, std::vector<int>(3, 4)),
                std::invalid_argument);

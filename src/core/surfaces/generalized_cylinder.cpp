@@ -122,4 +122,15 @@ PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings, dou
   return PatchSurface{std::move(patches), std::move(topology)};
 }
 
+PatchSurface makeBulgingCapsule() {
+  return makeGeneralizedCylinder({{0.0, 0.10, 0.08},
+                                  {0.10, 0.14, 0.10},
+                                  {0.20, 0.05, 0.05},
+                                  {0.30, 0.06, 0.05},
+                                  {0.40, 0.07, 0.06},
+                                  {0.50, 0.03, 0.035},
+                                  {0.60, 0.04, 0.04}},
+                                 0.08, 0.03);
+}
+
 }  // namespace dressed_human

@@ -33,4 +33,9 @@ struct PatchSurface {
 PatchSurface makeGeneralizedCylinder(const std::vector<CylinderRing>& rings, double bottom_cap_height,
                                      double top_cap_height);
 
+// A closed capsule 0.6 m long, 2 stacks of 4 side patches and a dome at each end (16 patches),
+// with bulges and a waist so that curvature varies from patch to patch: the surface the
+// tessellator's error is measured on (its tests, the tessellation_accuracy tool).
+PatchSurface makeBulgingCapsule();
+
 }  // namespace dressed_human
