@@ -21,7 +21,7 @@ void HumanModelUpdate(benchmark::State& state) {
   HumanModelSettings settings;
   settings.garment_directory = benchmarkSourcePath("config/garments");
   HumanModel model(walkFixture().skeleton, walkFixture().body, settings);
-  model.setVertexEvaluation(state.range(0) == 0 ? VertexEvaluation::kCpu : VertexEvaluation::kRenderer);
+  model.setVertexEvaluation(state.range(0) == 0 ? VertexEvaluation::kCpu : VertexEvaluation::kGpu);
   LevelOfDetail lod;
   if (state.range(1) > 0) {
     lod.automatic = true;

@@ -295,8 +295,8 @@ void DressedHumanDisplay::updateVertexEvaluation() {
 
 void DressedHumanDisplay::applyVertexEvaluation(DrawnHuman& human, bool report) {
   const VertexEvaluationChoice choice =
-      chooseVertexEvaluation(lod_properties_->vertexSource(), human.model(), gpu_vertices_problem_, software_renderer_,
-                             ReliefMaterial::kMaxPatches);
+      chooseVertexEvaluation(lod_properties_->vertexEvaluationRequest(), human.model(), gpu_vertices_problem_,
+                             software_renderer_, ReliefMaterial::kMaxPatches);
   human.model().setVertexEvaluation(choice.evaluation);
   if (!report) return;  // every human makes the same choice: one status says it
   if (choice.status.empty()) {

@@ -20,9 +20,9 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
   if (parts_.size() > parts.size()) parts_.resize(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const SurfacePart& source = parts[i];
-    const bool bezier_vertices = !source.evaluated;
+    const bool gpu_vertices = !source.cpu_vertices;
     if (i == parts_.size() || parts_[i].name != source.name || parts_[i].relief != source.relief ||
-        parts_[i].bezier_vertices != bezier_vertices) {
+        parts_[i].gpu_vertices != gpu_vertices) {
       if (i < parts_.size()) {
         // The replacement's material takes the same name: the old one must be gone first
         // (its mesh before it, which refers to it by that name).
@@ -32,9 +32,9 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
       Part part;
       part.name = source.name;
       part.relief = source.relief;
-      part.bezier_vertices = bezier_vertices;
+      part.gpu_vertices = gpu_vertices;
       part.closed = source.closed;
-      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, bezier_vertices,
+      part.material = std::make_unique<ReliefMaterial>(name_prefix_ + "/" + source.name, gpu_vertices,
                                                        source.relief == ReliefKind::kCloth);
       part.material->setBackFacesCulled(part.closed || insides_hidden_);
       part.material->setVertexLit(vertex_lit_);
@@ -57,7 +57,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     // level 8, +118 % at level 2), and a relief too small to see is not drawn.
     SurfaceMeshObject::ReliefTexturing texturing;
     if (relief_shown_[source.relief]) texturing = {source.corners, source.relief_tiles, source.relief_tiles_id};
-    if (source.evaluated) {
+    if (source.cpu_vertices) {
       part.mesh->update(*source.mesh, texturing, source.relief_weight, source.fold_axis, source.hidden_patches,
                         source.bounds);
       continue;

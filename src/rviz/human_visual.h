@@ -52,8 +52,8 @@ class HumanVisual {
   struct Part {
     std::string name;
     ReliefKind relief;
-    bool bezier_vertices;  // the vertex shader evaluates the patches (SurfacePart::evaluated false)
-    bool closed;           // SurfacePart::closed: back faces always culled
+    bool gpu_vertices;  // the vertex shader evaluates the patches (SurfacePart::cpu_vertices false)
+    bool closed;        // SurfacePart::closed: back faces always culled
     Eigen::Vector4f colour = Eigen::Vector4f::Zero();
     bool colour_set = false;
     std::unique_ptr<ReliefMaterial> material;

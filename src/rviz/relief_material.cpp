@@ -96,14 +96,14 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
   return problem.empty();
 }
 
-ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool bezier_vertices, bool oriented_folds)
+ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool gpu_vertices, bool oriented_folds)
     : name_(unique_name),
-      bezier_vertices_(bezier_vertices),
+      gpu_vertices_(gpu_vertices),
       relief_fragment_(oriented_folds ? kFoldFragment : kReliefFragment),
       normal_channels_(oriented_folds ? 4 : 3) {
   loadMediaOnce();
   material_ = Ogre::MaterialManager::getSingleton()
-                  .getByName(bezier_vertices ? kBezierMaterial : kBaseMaterial, kGroup)
+                  .getByName(gpu_vertices ? kBezierMaterial : kBaseMaterial, kGroup)
                   ->clone(name_);
   if (oriented_folds) {
     material_->getTechnique(0)->getPass(0)->setFragmentProgram(relief_fragment_);
@@ -135,7 +135,7 @@ void ReliefMaterial::applyPrograms() {
   Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
   const bool lit = litPerVertex();
   const char* vertex =
-      bezier_vertices_ ? (lit ? kBezierVertexLit : kBezierVertex) : (lit ? kSurfaceVertexLit : kSurfaceVertex);
+      gpu_vertices_ ? (lit ? kBezierVertexLit : kBezierVertex) : (lit ? kSurfaceVertexLit : kSurfaceVertex);
   pass->setVertexProgram(vertex);
   pass->setFragmentProgram(relief_shown_ ? relief_fragment_ : lit ? kVertexLitFragment : kPlainFragment);
   // New programs come with their default parameters: everything set before is set again (the
@@ -179,7 +179,7 @@ void ReliefMaterial::setReliefStrength(float strength) {
 }
 
 void ReliefMaterial::setPatches(const std::vector<BezierPatch>& patches) {
-  if (!bezier_vertices_) throw std::logic_error("ReliefMaterial " + name_ + ": patches set on a CPU-vertex material");
+  if (!gpu_vertices_) throw std::logic_error("ReliefMaterial " + name_ + ": patches set on a CPU-vertex material");
   if (patches.size() > kMaxPatches) {
     throw std::invalid_argument(name_ + " has " + std::to_string(patches.size()) +
                                 " patches; the Bezier vertex shader holds " + std::to_string(kMaxPatches));

@@ -34,10 +34,10 @@ class ReliefMaterial {
   // Loads the media first (may throw like loadMediaOnce).
   static bool bezierEvaluationAvailable(std::string* why);
 
-  // bezier_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
+  // gpu_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
   // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout). oriented_folds: a garment's, whose
   // map holds the two fold tiles (encodeFoldTilesRgba, 4 channels) turned by the fold axis.
-  ReliefMaterial(const std::string& unique_name, bool bezier_vertices, bool oriented_folds);
+  ReliefMaterial(const std::string& unique_name, bool gpu_vertices, bool oriented_folds);
   ~ReliefMaterial();
   ReliefMaterial(const ReliefMaterial&) = delete;
   ReliefMaterial& operator=(const ReliefMaterial&) = delete;
@@ -70,7 +70,7 @@ class ReliefMaterial {
   std::string name_;
   Ogre::MaterialPtr material_;
   std::shared_ptr<NormalMapTexture> texture_;
-  bool bezier_vertices_;
+  bool gpu_vertices_;
   const char* relief_fragment_;  // the fragment program showing the relief
   int normal_channels_;
   WrinkleStrengthConstants wrinkle_strength_;  // as last set (zeros: none)

@@ -9,7 +9,7 @@
 // 1000 px viewport, as rviz's default view at that window height). The human's own settings:
 // jacket + skirt. Automatic level of detail is measured twice: with the CPU evaluating every
 // vertex ("cpu") and with the renderer's vertex shader doing it ("gpu", VertexEvaluation::
-// kRenderer: the update then poses control points and lays out the mesh only).
+// kGpu: the update then poses control points and lays out the mesh only).
 //
 //   scene_budget [package directory, default .] [--poses N]
 #include "dressed_human/core/model/human_model.h"
@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
     };
     const auto rows = [&](int humans, double distance) {
       row(humans, distance, true, 0);
-      row(humans, distance, true, 0, VertexEvaluation::kRenderer);
+      row(humans, distance, true, 0, VertexEvaluation::kGpu);
       row(humans, distance, false, Skin::kDefaultLevel);
       row(humans, distance, false, Tessellator::kDefaultLevel);
     };

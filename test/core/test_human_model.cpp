@@ -85,7 +85,7 @@ TEST(HumanModel, BoundsEncloseThePosedPartInEveryModeAndPose) {
   }
   std::size_t checked = 0;
   for (const Outfit outfit : {Outfit::kNone, Outfit::kOnePiece, Outfit::kJacketSkirt, Outfit::kJacketPants}) {
-    for (const VertexEvaluation evaluation : {VertexEvaluation::kCpu, VertexEvaluation::kRenderer}) {
+    for (const VertexEvaluation evaluation : {VertexEvaluation::kCpu, VertexEvaluation::kGpu}) {
       for (const bool displaced : {false, true}) {
         HumanModel model(skeleton(), body(), settingsFor(outfit));
         model.setVertexEvaluation(evaluation);
@@ -104,7 +104,7 @@ TEST(HumanModel, BoundsEncloseThePosedPartInEveryModeAndPose) {
               EXPECT_LT(box.diagonal().norm(), 3.0f) << part.name;
               for (std::size_t i = 0; i < part.mesh->vertexCount(); ++i) {
                 Eigen::Vector3f position;
-                if (part.evaluated) {
+                if (part.cpu_vertices) {
                   position = part.mesh->positions[i];
                 } else {  // as the vertex shader evaluates it
                   const BezierPatch& patch = (*part.patches)[part.mesh->vertex_patch[i]];
@@ -229,7 +229,7 @@ TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
   EXPECT_GT(strongest(1.2), 0.5f);
 }
 
-// VertexEvaluation::kRenderer hands the renderer the layout, the posed patches and the rest
+// VertexEvaluation::kGpu hands the renderer the layout, the posed patches and the rest
 // metric instead of vertices. What a vertex shader computes from them -- the patch at
 // (vertex_patch, uv), the wrinkle strength from the rest metric -- must be what kCpu delivers.
 TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
@@ -238,7 +238,7 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
   settings.garment_directory = sourcePath("config/garments");
   HumanModel cpu(skeleton(), body(), settings);
   HumanModel renderer(skeleton(), body(), settings);
-  renderer.setVertexEvaluation(VertexEvaluation::kRenderer);
+  renderer.setVertexEvaluation(VertexEvaluation::kGpu);
   LevelOfDetail lod;  // fixed: both paths lay the mesh out alike
   lod.level = 5;
   const std::vector<SkeletonPose> poses = walkPoses(4, body().shape);
@@ -250,8 +250,8 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
     for (std::size_t p = 0; p < cpu.parts().size(); ++p) {
       const SurfacePart& expected = cpu.parts()[p];
       const SurfacePart& part = renderer.parts()[p];
-      EXPECT_TRUE(expected.evaluated);
-      EXPECT_FALSE(part.evaluated);
+      EXPECT_TRUE(expected.cpu_vertices);
+      EXPECT_FALSE(part.cpu_vertices);
       EXPECT_EQ(part.relief_weight, nullptr);
       EXPECT_NE(part.layout_id, expected.layout_id) << "layout ids are unique across tessellators";
       ASSERT_EQ(part.mesh->indices, expected.mesh->indices) << part.name;
@@ -311,12 +311,12 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
 
   EXPECT_GT(coarser_than_apriori, 0u);
 
-  // Displaced relief needs vertices: those parts are evaluated even in kRenderer mode.
+  // Displaced relief needs vertices: those parts are evaluated even in kGpu mode.
   ReliefMap map(8, 8);
   renderer.setDisplacement(ReliefKind::kCloth, std::make_shared<const ReliefMap>(map), 1.0f, 1.0f, 0.01f);
   renderer.update(poses[0].root, poses[0].bone_in_world, lod);
-  EXPECT_FALSE(renderer.parts()[0].evaluated);
-  EXPECT_TRUE(renderer.parts()[1].evaluated);
+  EXPECT_FALSE(renderer.parts()[0].cpu_vertices);
+  EXPECT_TRUE(renderer.parts()[1].cpu_vertices);
   EXPECT_NE(renderer.parts()[1].relief_weight, nullptr);
 }
 

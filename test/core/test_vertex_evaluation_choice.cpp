@@ -29,11 +29,12 @@ std::size_t mostPatches(const HumanModel& model) {
 TEST(VertexEvaluationChoice, AutomaticPicksTheRendererOnAGpuAndTheCpuOnASoftwareRenderer) {
   const HumanModel model = dressedModel();
   const std::size_t room = mostPatches(model);
-  const VertexEvaluationChoice gpu = chooseVertexEvaluation(VertexSource::kAutomatic, model, "", "", room);
-  EXPECT_EQ(gpu.evaluation, VertexEvaluation::kRenderer);
+  const VertexEvaluationChoice gpu = chooseVertexEvaluation(VertexEvaluationRequest::kAutomatic, model, "", "", room);
+  EXPECT_EQ(gpu.evaluation, VertexEvaluation::kGpu);
   EXPECT_FALSE(gpu.warn);
   EXPECT_TRUE(gpu.status.empty());
-  const VertexEvaluationChoice software = chooseVertexEvaluation(VertexSource::kAutomatic, model, "", "llvmpipe", room);
+  const VertexEvaluationChoice software =
+      chooseVertexEvaluation(VertexEvaluationRequest::kAutomatic, model, "", "llvmpipe", room);
   EXPECT_EQ(software.evaluation, VertexEvaluation::kCpu);
   EXPECT_FALSE(software.warn);
   EXPECT_NE(software.status.find("llvmpipe"), std::string::npos) << software.status;
@@ -42,9 +43,9 @@ TEST(VertexEvaluationChoice, AutomaticPicksTheRendererOnAGpuAndTheCpuOnASoftware
 TEST(VertexEvaluationChoice, TheUsersChoiceHoldsWhereTheRendererAllowsIt) {
   const HumanModel model = dressedModel();
   const std::size_t room = mostPatches(model);
-  EXPECT_EQ(chooseVertexEvaluation(VertexSource::kRenderer, model, "", "llvmpipe", room).evaluation,
-            VertexEvaluation::kRenderer);
-  const VertexEvaluationChoice cpu = chooseVertexEvaluation(VertexSource::kCpu, model, "", "", room);
+  EXPECT_EQ(chooseVertexEvaluation(VertexEvaluationRequest::kGpu, model, "", "llvmpipe", room).evaluation,
+            VertexEvaluation::kGpu);
+  const VertexEvaluationChoice cpu = chooseVertexEvaluation(VertexEvaluationRequest::kCpu, model, "", "", room);
   EXPECT_EQ(cpu.evaluation, VertexEvaluation::kCpu);
   EXPECT_TRUE(cpu.status.empty());
 }
@@ -53,11 +54,12 @@ TEST(VertexEvaluationChoice, WhatTheRendererCannotDoFallsBackToTheCpuWithItsReas
   const HumanModel model = dressedModel();
   const std::size_t room = mostPatches(model);
   const VertexEvaluationChoice no_shader =
-      chooseVertexEvaluation(VertexSource::kRenderer, model, "the relief material did not load", "", room);
+      chooseVertexEvaluation(VertexEvaluationRequest::kGpu, model, "the relief material did not load", "", room);
   EXPECT_EQ(no_shader.evaluation, VertexEvaluation::kCpu);
   EXPECT_TRUE(no_shader.warn);
   EXPECT_NE(no_shader.status.find("the relief material did not load"), std::string::npos) << no_shader.status;
-  const VertexEvaluationChoice too_many = chooseVertexEvaluation(VertexSource::kAutomatic, model, "", "", room - 1);
+  const VertexEvaluationChoice too_many =
+      chooseVertexEvaluation(VertexEvaluationRequest::kAutomatic, model, "", "", room - 1);
   EXPECT_EQ(too_many.evaluation, VertexEvaluation::kCpu);
   EXPECT_TRUE(too_many.warn);
   EXPECT_NE(too_many.status.find(std::to_string(room) + " patches"), std::string::npos) << too_many.status;

@@ -188,11 +188,11 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     PartState& state = part_states_[p];
     const bool displaced = displacements_[static_cast<std::size_t>(parts_[p].relief)].map != nullptr;
-    const bool evaluate = vertex_evaluation_ == VertexEvaluation::kCpu || displaced;
+    const bool cpu_vertices = vertex_evaluation_ == VertexEvaluation::kCpu || displaced;
     const std::vector<int>& levels = withCoveredHidden(p, chooseLevels(state, partPatches(p), lod), lod.hide_covered);
-    tessellate(p, levels, evaluate);
+    tessellate(p, levels, cpu_vertices);
     if (state.garment >= 0) {
-      measureWrinkles(garments_[static_cast<std::size_t>(state.garment)], parts_[p], evaluate, displaced);
+      measureWrinkles(garments_[static_cast<std::size_t>(state.garment)], parts_[p], cpu_vertices, displaced);
     }
     displaceAndBound(p, levels);
   }
@@ -214,7 +214,7 @@ const std::vector<int>& HumanModel::chooseLevels(PartState& state, const std::ve
     std::vector<int>& levels = state.automatic.levels;
     levels.resize(patches.size(), 0);
     state.automatic.frames_below.resize(patches.size(), 0);
-    const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kRenderer;
+    const bool coarse_steps = vertex_evaluation_ == VertexEvaluation::kGpu;
     state.error_bound->levelsForScreenError(patches, lod.camera, lod.max_error_pixels, lod.max_level, wanted_levels_);
     for (std::size_t p = 0; p < patches.size(); ++p) {
       const int wanted = wanted_levels_[p];
@@ -259,20 +259,20 @@ const std::vector<int>& HumanModel::withCoveredHidden(std::size_t part, const st
   return drawn_levels_;
 }
 
-void HumanModel::tessellate(std::size_t p, const std::vector<int>& levels, bool evaluate) {
+void HumanModel::tessellate(std::size_t p, const std::vector<int>& levels, bool cpu_vertices) {
   PartState& state = part_states_[p];
   SurfacePart& part = parts_[p];
   const std::vector<BezierPatch>& patches = partPatches(p);
   Tessellator& tessellator = *state.tessellator;
-  part.mesh = evaluate ? &tessellator.tessellate(patches, topologyOf(state), levels)
-                       : &tessellator.layout(patches, topologyOf(state), levels);
+  part.mesh = cpu_vertices ? &tessellator.tessellate(patches, topologyOf(state), levels)
+                           : &tessellator.layout(patches, topologyOf(state), levels);
   part.drawn_triangles = part.mesh->triangleCount();
   if (part.hidden_patches != nullptr) {
     for (const std::uint32_t patch : part.mesh->triangle_patch) {
       part.drawn_triangles -= (*part.hidden_patches)[patch] ? 1 : 0;
     }
   }
-  part.evaluated = evaluate;
+  part.cpu_vertices = cpu_vertices;
   part.patches = &patches;
   part.layout_id = tessellator.layoutId();
   if (state.corners.layout_id != part.layout_id) {
@@ -286,7 +286,7 @@ void HumanModel::tessellate(std::size_t p, const std::vector<int>& levels, bool 
   }
 }
 
-void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool evaluate, bool displaced) {
+void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool cpu_vertices, bool displaced) {
   VertexCompression& compression = dressed.compression;
   // The rest metric belongs to the layout: re-derived only when the tessellator laid the mesh
   // out anew (comparing layouts vertex by vertex every frame would cost more than the rest of a
@@ -298,7 +298,7 @@ void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, boo
   part.relief_weight = nullptr;
   part.fold_axis = nullptr;
   part.inverse_rest_metric = nullptr;
-  if (!evaluate) {
+  if (!cpu_vertices) {
     part.inverse_rest_metric = &compression.inverseRestMetric();
   } else if (wrinkles_wanted_ || displaced) {
     dressed.wrinkle_weights.resize(part.mesh->vertexCount());

@@ -2,16 +2,16 @@
 
 namespace dressed_human {
 
-VertexEvaluationChoice chooseVertexEvaluation(VertexSource asked, const HumanModel& model,
+VertexEvaluationChoice chooseVertexEvaluation(VertexEvaluationRequest asked, const HumanModel& model,
                                               const std::string& renderer_problem, const std::string& software_renderer,
                                               std::size_t max_patches) {
   VertexEvaluationChoice choice;
-  if (asked == VertexSource::kAutomatic && !software_renderer.empty()) {
+  if (asked == VertexEvaluationRequest::kAutomatic && !software_renderer.empty()) {
     choice.status = "CPU (Automatic): " + software_renderer +
                     " renders in software, its vertex shader would run on one thread of rviz";
     return choice;
   }
-  if (asked == VertexSource::kCpu) return choice;
+  if (asked == VertexEvaluationRequest::kCpu) return choice;
   std::string problem = renderer_problem;
   for (std::size_t p = 0; problem.empty() && p < model.parts().size(); ++p) {
     if (model.partPatches(p).size() > max_patches) {
@@ -24,7 +24,7 @@ VertexEvaluationChoice chooseVertexEvaluation(VertexSource asked, const HumanMod
     choice.status = problem + "; the CPU evaluates the vertices";
     return choice;
   }
-  choice.evaluation = VertexEvaluation::kRenderer;
+  choice.evaluation = VertexEvaluation::kGpu;
   return choice;
 }
 

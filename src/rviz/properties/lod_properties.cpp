@@ -75,14 +75,14 @@ CameraView LodProperties::cameraView(const Ogre::Camera& camera) {
 
 bool LodProperties::automatic() const { return mode_->getOptionInt() == kAutomatic; }
 
-VertexSource LodProperties::vertexSource() const {
+VertexEvaluationRequest LodProperties::vertexEvaluationRequest() const {
   switch (vertex_evaluation_->getOptionInt()) {
     case kGpuVertices:
-      return VertexSource::kRenderer;
+      return VertexEvaluationRequest::kGpu;
     case kCpuVertices:
-      return VertexSource::kCpu;
+      return VertexEvaluationRequest::kCpu;
     default:
-      return VertexSource::kAutomatic;
+      return VertexEvaluationRequest::kAutomatic;
   }
 }
 

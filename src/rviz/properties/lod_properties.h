@@ -27,7 +27,7 @@ class LodProperties : public QObject {
 
   // Who the "Vertex Evaluation" property asks to evaluate the vertices (chooseVertexEvaluation
   // decides with what the renderer allows).
-  VertexSource vertexSource() const;
+  VertexEvaluationRequest vertexEvaluationRequest() const;
   // Whether a relief too small to see is drawn with the plain material (ReliefVisibility).
   bool hideUnseenRelief() const;
   // Whether what the clothes cover may be left out where it cannot be seen (LevelOfDetail::hide_covered).

@@ -59,7 +59,7 @@ struct SurfacePart {
   // unspecified) and relief_weight is null. The renderer evaluates `patches` at (vertex_patch, uv)
   // itself and, for garments, the wrinkle strength from `inverse_rest_metric` and
   // `wrinkle_constants` (VertexCompression's formula). See VertexEvaluation.
-  bool evaluated = true;
+  bool cpu_vertices = true;
   const std::vector<BezierPatch>* patches = nullptr;                  // posed, in the world frame of update()
   std::uint64_t layout_id = 0;                                        // Tessellator::layoutId() of `mesh`
   const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex
@@ -71,11 +71,11 @@ struct SurfacePart {
   Eigen::AlignedBox3f bounds;
 };
 
-// Who evaluates the surface at the mesh vertices. kRenderer leaves it to the renderer (a vertex
+// Who evaluates the surface at the mesh vertices. kGpu leaves it to the renderer (a vertex
 // shader evaluating the Bezier patches from their control points): update() then only poses the
 // control points and re-lays out the mesh when the levels change, which is what makes a frame
 // cheap. Parts with displaced relief are always evaluated here (the displacement needs vertices).
-enum class VertexEvaluation { kCpu, kRenderer };
+enum class VertexEvaluation { kCpu, kGpu };
 
 struct LevelOfDetail {
   bool automatic = false;  // true: from the camera's screen-space error; false: `level`
@@ -210,8 +210,8 @@ class HumanModel {
   const std::vector<int>& chooseLevels(PartState& state, const std::vector<BezierPatch>& patches,
                                        const LevelOfDetail& lod);
   const std::vector<int>& withCoveredHidden(std::size_t part, const std::vector<int>& levels, bool hide);
-  void tessellate(std::size_t part, const std::vector<int>& levels, bool evaluate);
-  void measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool evaluate, bool displaced);
+  void tessellate(std::size_t part, const std::vector<int>& levels, bool cpu_vertices);
+  void measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool cpu_vertices, bool displaced);
   void displaceAndBound(std::size_t part, const std::vector<int>& levels);
 
   HumanModelSettings settings_;

@@ -11,7 +11,7 @@
 
 namespace dressed_human {
 
-enum class VertexSource { kAutomatic, kRenderer, kCpu };  // what the user asked
+enum class VertexEvaluationRequest { kAutomatic, kGpu, kCpu };  // what the user asked
 
 struct VertexEvaluationChoice {
   VertexEvaluation evaluation = VertexEvaluation::kCpu;
@@ -22,7 +22,7 @@ struct VertexEvaluationChoice {
 // `renderer_problem`: why the renderer's vertex shader cannot run (empty: it can).
 // `software_renderer`: the renderer's name when it rasterizes on the CPU, empty on a GPU.
 // `max_patches`: the most patches of one part the vertex shader holds.
-VertexEvaluationChoice chooseVertexEvaluation(VertexSource asked, const HumanModel& model,
+VertexEvaluationChoice chooseVertexEvaluation(VertexEvaluationRequest asked, const HumanModel& model,
                                               const std::string& renderer_problem, const std::string& software_renderer,
                                               std::size_t max_patches);
 
