@@ -20,7 +20,7 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
   if (parts_.size() > parts.size()) parts_.resize(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const SurfacePart& source = parts[i];
-    const bool gpu_vertices = !source.cpu_vertices;
+    const bool gpu_vertices = source.gpuVertices() != nullptr;
     if (i == parts_.size() || parts_[i].name != source.name || parts_[i].relief != source.relief ||
         parts_[i].gpu_vertices != gpu_vertices) {
       if (i < parts_.size()) {
@@ -57,17 +57,16 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     // level 8, +118 % at level 2), and a relief too small to see is not drawn.
     SurfaceMeshObject::ReliefTexturing texturing;
     if (relief_shown_[source.relief]) texturing = {source.corners, source.relief_tiles, source.relief_tiles_id};
-    if (source.cpu_vertices) {
-      part.mesh->update(*source.mesh, texturing, source.relief_weight, source.fold_axis, source.hidden_patches,
-                        source.bounds);
+    if (const CpuVertices* cpu = source.cpuVertices()) {
+      part.mesh->update(*source.mesh, texturing, *cpu, source.hidden_patches, source.bounds);
       continue;
     }
+    const GpuVertices& gpu = *source.gpuVertices();
     part.material->setPatches(*source.patches);
     // Wrinkles not drawn (too small to see): the vertex shader skips their strength and axis.
-    const bool wrinkles = source.inverse_rest_metric != nullptr && relief_shown_[ReliefKind::kCloth];
-    part.material->setWrinkleStrength(wrinkles ? &source.wrinkle_constants : nullptr);
-    part.mesh->updateLayout(*source.mesh, texturing, source.inverse_rest_metric, source.hidden_patches,
-                            source.layout_id, source.bounds);
+    const bool wrinkles = gpu.inverse_rest_metric != nullptr && relief_shown_[ReliefKind::kCloth];
+    part.material->setWrinkleStrength(wrinkles ? &gpu.wrinkle_constants : nullptr);
+    part.mesh->updateLayout(*source.mesh, texturing, gpu, source.hidden_patches, source.layout_id, source.bounds);
   }
 }
 

@@ -83,8 +83,10 @@ Eigen::Vector2f SurfaceMeshObject::reliefCoordinate(const TriangleMesh& mesh, co
 }
 
 void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& texturing,
-                               const std::vector<float>* relief_weight, const std::vector<Eigen::Vector2f>* fold_axis,
-                               const std::vector<bool>* hidden_patches, const Eigen::AlignedBox3f& bounds) {
+                               const CpuVertices& vertex_data, const std::vector<bool>* hidden_patches,
+                               const Eigen::AlignedBox3f& bounds) {
+  const std::vector<float>* relief_weight = vertex_data.relief_weight;
+  const std::vector<Eigen::Vector2f>* fold_axis = vertex_data.fold_axis;
   layout_id_ = 0;
   const std::size_t vertices = mesh.positions.size();
   if ((relief_weight != nullptr && relief_weight->size() != vertices) ||
@@ -118,9 +120,9 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& 
 }
 
 void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const ReliefTexturing& texturing,
-                                     const std::vector<Eigen::Vector4f>* inverse_rest_metric,
-                                     const std::vector<bool>* hidden_patches, std::uint64_t layout_id,
-                                     const Eigen::AlignedBox3f& bounds) {
+                                     const GpuVertices& vertex_data, const std::vector<bool>* hidden_patches,
+                                     std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds) {
+  const std::vector<Eigen::Vector4f>* inverse_rest_metric = vertex_data.inverse_rest_metric;
   const PatchCornerSplit* corners = texturing.corners;
   const std::uint64_t tiles = texturing.tiles ? texturing.tiles_id : 0;
   if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_ || tiles != tiles_sent_ ||

@@ -14,6 +14,7 @@
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
 
+#include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/surfaces/patch_corner_split.h"
 #include "dressed_human/core/surfaces/tessellation.h"
 
@@ -37,24 +38,23 @@ class SurfaceMeshObject {
     std::uint64_t tiles_id = 0;
   };
 
-  // Vertices and triangles as `texturing` says. Second texture coordinate, per vertex:
-  // `relief_weight` (how much relief shows; null: 1) and `fold_axis` (which way garment folds
-  // run, SurfacePart::fold_axis; null: zeros). `bounds`: encloses the posed surface
+  // Vertices and triangles as `texturing` says. Second texture coordinate, per vertex: the
+  // `vertices`' relief_weight (how much relief shows; null: 1) and fold_axis (which way garment
+  // folds run; null: zeros). `bounds`: encloses the posed surface
   // (SurfacePart::bounds). `hidden_patches`: triangles on these patches are left out
   // (SurfacePart::hidden_patches; null: none). Throws std::invalid_argument for per-vertex or
   // per-patch data of another size.
-  void update(const TriangleMesh& mesh, const ReliefTexturing& texturing, const std::vector<float>* relief_weight,
-              const std::vector<Eigen::Vector2f>* fold_axis, const std::vector<bool>* hidden_patches,
-              const Eigen::AlignedBox3f& bounds);
-  // Per vertex the owner's (u, v, patch) as the position, the garment's rest metric
-  // (VertexCompression::inverseRestMetric; null: zeros) as texture coordinate 0 and the
+  void update(const TriangleMesh& mesh, const ReliefTexturing& texturing, const CpuVertices& vertices,
+              const std::vector<bool>* hidden_patches, const Eigen::AlignedBox3f& bounds);
+  // Per vertex the owner's (u, v, patch) as the position, the garment's rest metric (the
+  // `vertices`' inverse_rest_metric; null: zeros) as texture coordinate 0 and the
   // vertex's relief texture coordinate (`texturing` as above) as texture coordinate 1; triangles
   // on `hidden_patches` left out as above. Nothing is sent while `layout_id`, whether corners are
   // given, the tiles and `hidden_patches` stay the same; `bounds` (the posed surface's) is set every
   // frame, since the (u, v, patch) positions say nothing about where the surface is.
-  void updateLayout(const TriangleMesh& layout, const ReliefTexturing& texturing,
-                    const std::vector<Eigen::Vector4f>* inverse_rest_metric, const std::vector<bool>* hidden_patches,
-                    std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds);
+  void updateLayout(const TriangleMesh& layout, const ReliefTexturing& texturing, const GpuVertices& vertices,
+                    const std::vector<bool>* hidden_patches, std::uint64_t layout_id,
+                    const Eigen::AlignedBox3f& bounds);
   void setMaterial(const std::string& material);
   void setVisible(bool visible) { object_->setVisible(visible); }
   std::size_t rebuildCount() const { return rebuild_count_; }

@@ -104,7 +104,7 @@ TEST(HumanModel, BoundsEncloseThePosedPartInEveryModeAndPose) {
               EXPECT_LT(box.diagonal().norm(), 3.0f) << part.name;
               for (std::size_t i = 0; i < part.mesh->vertexCount(); ++i) {
                 Eigen::Vector3f position;
-                if (part.cpu_vertices) {
+                if (part.cpuVertices() != nullptr) {
                   position = part.mesh->positions[i];
                 } else {  // as the vertex shader evaluates it
                   const BezierPatch& patch = (*part.patches)[part.mesh->vertex_patch[i]];
@@ -200,13 +200,14 @@ TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
   const auto strongest = [&](double knee_flexion) {
     const SkeletonPose pose = poseWithKnee(sign * knee_flexion);
     model.update(pose.root, pose.bone_in_world, LevelOfDetail());
-    EXPECT_EQ(model.parts()[0].relief_weight, nullptr);
+    EXPECT_EQ(model.parts()[0].cpuVertices()->relief_weight, nullptr);
     const SurfacePart& pants = model.parts()[1];
     EXPECT_EQ(pants.name, "pants");
-    if (pants.relief_weight == nullptr) return -1.0f;
-    EXPECT_EQ(pants.relief_weight->size(), pants.mesh->vertexCount());
+    const std::vector<float>* weights = pants.cpuVertices()->relief_weight;
+    if (weights == nullptr) return -1.0f;
+    EXPECT_EQ(weights->size(), pants.mesh->vertexCount());
     float largest = 0.0f;
-    for (const float w : *pants.relief_weight) {
+    for (const float w : *weights) {
       EXPECT_GE(w, 0.0f);
       EXPECT_LE(w, 1.0f);
       largest = std::max(largest, w);
@@ -218,13 +219,13 @@ TEST(HumanModel, GarmentReliefWeightsFollowTheKnee) {
   // Every split vertex (SurfacePart::corners) copies a mesh vertex; the fold axes come along.
   const SurfacePart& pants = model.parts()[1];
   ASSERT_NE(pants.corners, nullptr);
-  ASSERT_NE(pants.fold_axis, nullptr);
-  EXPECT_EQ(pants.fold_axis->size(), pants.mesh->vertexCount());
+  ASSERT_NE(pants.cpuVertices()->fold_axis, nullptr);
+  EXPECT_EQ(pants.cpuVertices()->fold_axis->size(), pants.mesh->vertexCount());
   EXPECT_GE(pants.corners->source.size(), pants.mesh->vertexCount());
   // A renderer not drawing the wrinkles (too small to see) is spared their per-vertex work.
   model.setWrinklesWanted(false);
   EXPECT_EQ(strongest(1.2), -1.0f);
-  EXPECT_EQ(model.parts()[1].fold_axis, nullptr);
+  EXPECT_EQ(model.parts()[1].cpuVertices()->fold_axis, nullptr);
   model.setWrinklesWanted(true);
   EXPECT_GT(strongest(1.2), 0.5f);
 }
@@ -250,15 +251,15 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
     for (std::size_t p = 0; p < cpu.parts().size(); ++p) {
       const SurfacePart& expected = cpu.parts()[p];
       const SurfacePart& part = renderer.parts()[p];
-      EXPECT_TRUE(expected.cpu_vertices);
-      EXPECT_FALSE(part.cpu_vertices);
-      EXPECT_EQ(part.relief_weight, nullptr);
+      ASSERT_NE(expected.cpuVertices(), nullptr);
+      ASSERT_NE(part.gpuVertices(), nullptr);
+      const GpuVertices& gpu = *part.gpuVertices();
       EXPECT_NE(part.layout_id, expected.layout_id) << "layout ids are unique across tessellators";
       ASSERT_EQ(part.mesh->indices, expected.mesh->indices) << part.name;
       ASSERT_EQ(part.mesh->vertex_patch.size(), expected.mesh->vertexCount());
       ASSERT_EQ(part.mesh->uv.size(), expected.mesh->vertexCount());
       ASSERT_NE(part.patches, nullptr);
-      EXPECT_EQ(p > 0, part.inverse_rest_metric != nullptr);
+      EXPECT_EQ(p > 0, gpu.inverse_rest_metric != nullptr);
       double worst_position = 0.0, worst_weight = 0.0;
       for (std::size_t i = 0; i < part.mesh->vertexCount(); ++i) {
         const BezierPatch& patch = (*part.patches)[part.mesh->vertex_patch[i]];
@@ -266,11 +267,12 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
         worst_position = std::max(worst_position, (d.position - expected.mesh->positions[i].cast<double>()).norm());
         if (p == 0) continue;
         // What relief_surface.vert computes from the renderer's inputs.
-        const float strength = vertexStretchAt((*part.inverse_rest_metric)[i], d.d_du.cast<float>(),
-                                               d.d_dv.cast<float>(), part.wrinkle_constants)
+        const float strength = vertexStretchAt((*gpu.inverse_rest_metric)[i], d.d_du.cast<float>(),
+                                               d.d_dv.cast<float>(), gpu.wrinkle_constants)
                                    .strength;
-        worst_weight = std::max(worst_weight, static_cast<double>(std::abs(strength - (*expected.relief_weight)[i])));
-        strongest = std::max(strongest, (*expected.relief_weight)[i]);
+        worst_weight = std::max(worst_weight,
+                                static_cast<double>(std::abs(strength - (*expected.cpuVertices()->relief_weight)[i])));
+        strongest = std::max(strongest, (*expected.cpuVertices()->relief_weight)[i]);
       }
       EXPECT_LT(worst_position, 1e-5) << part.name;  // float storage of the CPU mesh
       EXPECT_LT(worst_weight, 1e-3) << part.name;
@@ -315,9 +317,9 @@ TEST(HumanModel, RendererEvaluationGetsWhatTheCpuPathEvaluates) {
   ReliefMap map(8, 8);
   renderer.setDisplacement(ReliefKind::kCloth, std::make_shared<const ReliefMap>(map), 1.0f, 1.0f, 0.01f);
   renderer.update(poses[0].root, poses[0].bone_in_world, lod);
-  EXPECT_FALSE(renderer.parts()[0].cpu_vertices);
-  EXPECT_TRUE(renderer.parts()[1].cpu_vertices);
-  EXPECT_NE(renderer.parts()[1].relief_weight, nullptr);
+  EXPECT_NE(renderer.parts()[0].gpuVertices(), nullptr);
+  ASSERT_NE(renderer.parts()[1].cpuVertices(), nullptr);
+  EXPECT_NE(renderer.parts()[1].cpuVertices()->relief_weight, nullptr);
 }
 
 }  // namespace

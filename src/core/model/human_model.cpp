@@ -272,7 +272,11 @@ void HumanModel::tessellate(std::size_t p, const std::vector<int>& levels, bool 
       part.drawn_triangles -= (*part.hidden_patches)[patch] ? 1 : 0;
     }
   }
-  part.cpu_vertices = cpu_vertices;
+  if (cpu_vertices) {
+    part.vertices = CpuVertices{};
+  } else {
+    part.vertices = GpuVertices{};
+  }
   part.patches = &patches;
   part.layout_id = tessellator.layoutId();
   if (state.corners.layout_id != part.layout_id) {
@@ -295,19 +299,14 @@ void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, boo
     compression.prepare(*part.mesh, dressed.rest_patches);
     dressed.compressed_layout = part.layout_id;
   }
-  part.relief_weight = nullptr;
-  part.fold_axis = nullptr;
-  part.inverse_rest_metric = nullptr;
   if (!cpu_vertices) {
-    part.inverse_rest_metric = &compression.inverseRestMetric();
+    part.vertices = GpuVertices{&compression.inverseRestMetric(), compression.strengthConstants()};
   } else if (wrinkles_wanted_ || displaced) {
     dressed.wrinkle_weights.resize(part.mesh->vertexCount());
     dressed.fold_axes.resize(part.mesh->vertexCount());
     compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data(), dressed.fold_axes.data());
-    part.relief_weight = &dressed.wrinkle_weights;
-    part.fold_axis = &dressed.fold_axes;
+    part.vertices = CpuVertices{&dressed.wrinkle_weights, &dressed.fold_axes};
   }
-  part.wrinkle_constants = compression.strengthConstants();
 }
 
 void HumanModel::displaceAndBound(std::size_t p, const std::vector<int>& levels) {
@@ -319,8 +318,9 @@ void HumanModel::displaceAndBound(std::size_t p, const std::vector<int>& levels)
   }
   ReliefDisplacement settings = displacement.settings;
   settings.patch_tiles = part.relief_tiles;
-  settings.weights = part.relief_weight;
-  settings.fold_axes = part.fold_axis;
+  const CpuVertices& vertices = std::get<CpuVertices>(part.vertices);  // displaced: always evaluated here
+  settings.weights = vertices.relief_weight;
+  settings.fold_axes = vertices.fold_axis;
   settings.patch_levels = &levels;
   TriangleMesh& displaced = part_states_[p].displaced;
   displaceMesh(*part.mesh, settings, displaced);

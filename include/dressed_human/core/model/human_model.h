@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,6 +25,26 @@
 #include "dressed_human/core/model/skin_relief_tiling.h"
 
 namespace dressed_human {
+
+// A part whose vertices the model evaluated: its mesh holds positions, normals and tangents.
+struct CpuVertices {
+  // Per vertex of the mesh, how much of the relief shows there, in [0, 1]; null: all of it. For
+  // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
+  // wrinkles behind a bent knee, none on a straight leg.
+  const std::vector<float>* relief_weight = nullptr;
+  // Garments, per vertex of the mesh: which way the folds run (VertexStretch::fold_axis,
+  // oriented_folds.h); null for the skin.
+  const std::vector<Eigen::Vector2f>* fold_axis = nullptr;
+};
+
+// A part the renderer evaluates (VertexEvaluation::kGpu): its mesh is only the layout (uv,
+// vertex_patch, indices; positions, normals, tangents unspecified). The renderer evaluates the
+// part's `patches` at (vertex_patch, uv) itself and, for garments, the wrinkle strength from
+// these (VertexCompression's formula).
+struct GpuVertices {
+  const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex; null: the skin
+  WrinkleStrengthConstants wrinkle_constants;
+};
 
 struct SurfacePart {
   std::string name;
@@ -48,22 +69,12 @@ struct SurfacePart {
   // tiles place themselves, oriented_folds.h). `relief_tiles_id` changes whenever they do.
   const std::vector<Eigen::Vector2f>* relief_tiles = nullptr;
   std::uint64_t relief_tiles_id = 0;
-  // Per vertex of `mesh`, how much of the relief shows there, in [0, 1]; null: all of it. For
-  // garments, the wrinkle strength from the posed garment's compression (wrinkle_placement.h):
-  // wrinkles behind a bent knee, none on a straight leg.
-  const std::vector<float>* relief_weight = nullptr;
-  // Garments, per vertex of `mesh`: which way the folds run (VertexStretch::fold_axis,
-  // oriented_folds.h); null for the skin and when the renderer evaluates the vertices.
-  const std::vector<Eigen::Vector2f>* fold_axis = nullptr;
-  // false: `mesh` is only the layout (uv, vertex_patch, indices; positions, normals, tangents
-  // unspecified) and relief_weight is null. The renderer evaluates `patches` at (vertex_patch, uv)
-  // itself and, for garments, the wrinkle strength from `inverse_rest_metric` and
-  // `wrinkle_constants` (VertexCompression's formula). See VertexEvaluation.
-  bool cpu_vertices = true;
-  const std::vector<BezierPatch>* patches = nullptr;                  // posed, in the world frame of update()
-  std::uint64_t layout_id = 0;                                        // Tessellator::layoutId() of `mesh`
-  const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex
-  WrinkleStrengthConstants wrinkle_constants;
+  // Who evaluated `mesh`'s vertices and what comes with them (VertexEvaluation).
+  std::variant<CpuVertices, GpuVertices> vertices;
+  const CpuVertices* cpuVertices() const { return std::get_if<CpuVertices>(&vertices); }
+  const GpuVertices* gpuVertices() const { return std::get_if<GpuVertices>(&vertices); }
+  const std::vector<BezierPatch>* patches = nullptr;  // posed, in the world frame of update()
+  std::uint64_t layout_id = 0;                        // Tessellator::layoutId() of `mesh`
   // Encloses the posed part in the world frame of update(), whoever evaluates its vertices: the
   // box of the posed control points (a Bezier patch lies in their convex hull), or of the
   // displaced vertices when the relief moves them. A renderer culls by it, so it must follow the
