@@ -54,7 +54,7 @@ DressedHumanDisplay::DressedHumanDisplay()
   connect(relief_properties_.get(), &ReliefProperties::skinMapChanged, this,
           &DressedHumanDisplay::regenerateSkinRelief);
   connect(relief_properties_.get(), &ReliefProperties::skinSizeChanged, this, &DressedHumanDisplay::resizeSkinRelief);
-  connect(relief_properties_.get(), &ReliefProperties::clothMapChanged, this,
+  connect(relief_properties_.get(), &ReliefProperties::wrinkleMapChanged, this,
           &DressedHumanDisplay::regenerateClothRelief);
   connect(lod_properties_.get(), &LodProperties::vertexEvaluationChanged, this,
           &DressedHumanDisplay::updateVertexEvaluation);

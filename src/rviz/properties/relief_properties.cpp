@@ -63,7 +63,7 @@ ReliefProperties::ReliefProperties(rviz::Property* parent) {
                               "0.12, the default and the most: an everyday jacket or skirt; softer, the folds would "
                               "no longer run across the bend).",
                               parent),
-      this, &ReliefProperties::clothMapChanged);
+      this, &ReliefProperties::wrinkleMapChanged);
   fold_softness_->setMin(0.0);
   fold_softness_->setMax(static_cast<float>(kMaxFoldSoftness));
   levels_ = notifying(new rviz::IntProperty("Skin Relief Levels", 2, "Voronoi hierarchy depth (1-3).", parent), this,

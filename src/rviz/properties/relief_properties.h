@@ -41,7 +41,7 @@ class ReliefProperties : public QObject {
   void appearanceChanged();  // mode, strengths, displacement level
   void skinMapChanged();     // a skin-relief parameter: the map must be built again
   void skinSizeChanged();    // the skin cells' size on the body: the tiling changes, not the map
-  void clothMapChanged();    // the fold softness: the cloth map must be built again
+  void wrinkleMapChanged();  // the fold softness: the wrinkle map must be built again
 
  private:
   rviz::EnumProperty* mode_;

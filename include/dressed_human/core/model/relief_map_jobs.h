@@ -71,7 +71,7 @@ class ReliefMapJobs {
   std::vector<FinishedReliefMap> poll();
   // The newest map of `kind` built without an error; null before.
   const std::shared_ptr<const ReliefMap>& map(ReliefKind kind) const { return jobs_[kind].map; }
-  // The newest fold tiles built without an error (the cloth map's); null before.
+  // The newest fold tiles built without an error (the wrinkle map's); null before.
   const std::shared_ptr<const FoldTiles>& foldTiles() const { return jobs_[ReliefKind::kCloth].fold_tiles; }
 
   // Maps built in this process so far (each shared build counts once).
