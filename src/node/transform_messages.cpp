@@ -4,24 +4,33 @@
 
 namespace dressed_human {
 
+namespace {
+
+// geometry_msgs' Point and Vector3 alike.
+template <typename Xyz>
+void copyXyz(const Eigen::Vector3d& from, Xyz& to) {
+  to.x = from.x();
+  to.y = from.y();
+  to.z = from.z();
+}
+
+void copyQuaternion(const Eigen::Quaterniond& from, geometry_msgs::Quaternion& to) {
+  to.x = from.x();
+  to.y = from.y();
+  to.z = from.z();
+  to.w = from.w();
+}
+
+}  // namespace
+
 void copyTransform(const RigidTransform& from, geometry_msgs::Transform& to) {
-  to.translation.x = from.translation.x();
-  to.translation.y = from.translation.y();
-  to.translation.z = from.translation.z();
-  to.rotation.x = from.rotation.x();
-  to.rotation.y = from.rotation.y();
-  to.rotation.z = from.rotation.z();
-  to.rotation.w = from.rotation.w();
+  copyXyz(from.translation, to.translation);
+  copyQuaternion(from.rotation, to.rotation);
 }
 
 void copyPose(const RigidTransform& from, geometry_msgs::Pose& to) {
-  to.position.x = from.translation.x();
-  to.position.y = from.translation.y();
-  to.position.z = from.translation.z();
-  to.orientation.x = from.rotation.x();
-  to.orientation.y = from.rotation.y();
-  to.orientation.z = from.rotation.z();
-  to.orientation.w = from.rotation.w();
+  copyXyz(from.translation, to.position);
+  copyQuaternion(from.rotation, to.orientation);
 }
 
 geometry_msgs::TransformStamped namedTransform(const std::string& parent, const std::string& child) {
