@@ -35,10 +35,10 @@ def report(table, markdown_path):
             f.write(table + "\n")
 
 
-def start_frozen_human(root, env, caller, start_phase=1.0):
-    """Human 0 (namespace human_0, frames suffixed _0) frozen in one pose of the shipped walk
-    (replayed, mode replay, at speed_factor 0 from the node's start_phase, radians of the cycle;
-    in walk mode speed 0 would make it stand, whatever the phase): its
+def start_frozen_human(root, env, caller, start_phase=1.0, motion_file=None):
+    """Human 0 (namespace human_0, frames suffixed _0) frozen in one pose of the shipped walk, or
+    of `motion_file` (replayed, mode replay, at speed_factor 0 from the node's start_phase, radians
+    of the cycle; in walk mode speed 0 would make it stand, whatever the phase): its
     robot_description on the master of `env`, and its skeleton_publisher process, started.
     `caller`: this program's name on the master."""
     import rosgraph  # after ROS_MASTER_URI is known to this process
@@ -48,7 +48,8 @@ def start_frozen_human(root, env, caller, start_phase=1.0):
                            "0"], check=True, stdout=subprocess.PIPE, universal_newlines=True).stdout
     master.setParam("/human_0/robot_description", text)
     process = start([os.path.join(root, "build", "devel", "lib", "dressed_human", "skeleton_publisher"),
-                     "__ns:=/human_0", "_motion_file:=" + os.path.join(root, "config", "motions", "walk.yaml"),
+                     "__ns:=/human_0",
+                     "_motion_file:=" + (motion_file or os.path.join(root, "config", "motions", "walk.yaml")),
                      "_mode:=replay", "_speed_factor:=0.0", "_start_phase:=%g" % start_phase, "_publish_joint_states:=false"], env)
     time.sleep(2)
     if process.poll() is not None:

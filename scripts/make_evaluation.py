@@ -682,7 +682,8 @@ is the nearest distance, cropped to the skin: relief (left), flat (right).
 ![Relief at 0.3-5 m, flat, before and after](relief_distance.png)
 
 `bench/relief_distance.py`: one human frozen in a bent pose (the walk's phase 0.5, replayed at speed
-0), its body seen from 0.5, 1, 2.5 and 5 m and its hand and head from 0.3 m; per view the flat shot,
+0), its body seen from 0.5, 1, 2.5 and 5 m and its hand and head from 0.3 m, and the same human
+standing at rest (every joint at 0: no garment compressed, so no fold may show) from 2.5 m; per view the flat shot,
 then the default relief of the build this run was given as "before" (if any) and of this commit.
 The skin's cells are sized in metres per body region (README, the rviz display); the garments'
 folds are the exact folds blurred by `Fold Softness`.
