@@ -97,7 +97,8 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
     : settings_(settings), skin_(skeleton, body), skin_tiling_(skin_) {
-  addPart("skin", ReliefKind::kSkin, settings_.skin_colour, -1, CalibratedErrorBound::shared(skin_.patches()));
+  addPart("skin", ReliefKind::kSkin, settings_.skin_colour, std::nullopt,
+          CalibratedErrorBound::shared(skin_.patches()));
   parts_.back().closed = true;  // every skin part is a closed surface (skin.h)
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
     GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
@@ -117,7 +118,7 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
             ? colour->second
             : Eigen::Vector4f(static_cast<float>(description.colour.x()), static_cast<float>(description.colour.y()),
                               static_cast<float>(description.colour.z()), 1.0f);
-    addPart(name, ReliefKind::kCloth, rgba, static_cast<int>(garments_.size()) - 1,
+    addPart(name, ReliefKind::kCloth, rgba, garments_.size() - 1,
             CalibratedErrorBound::shared(garments_.back().rest_patches));
   }
   std::vector<BezierPatch> cloth;
@@ -130,8 +131,8 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
   covered_ = sharedCoveredPatches(rest);
 }
 
-void HumanModel::addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour, int garment,
-                         std::shared_ptr<const CalibratedErrorBound> error_bound) {
+void HumanModel::addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour,
+                         std::optional<std::size_t> garment, std::shared_ptr<const CalibratedErrorBound> error_bound) {
   SurfacePart part;
   part.name = name;
   part.relief = relief;
@@ -166,12 +167,12 @@ HumanModel::DressedGarment::DressedGarment(const GarmentDescription& description
     : garment(description, skeleton, shape), rest_patches(garment.patches()) {}
 
 const std::vector<BezierPatch>& HumanModel::partPatches(std::size_t part) const {
-  const int garment = part_states_.at(part).garment;
-  return garment < 0 ? skin_.patches() : garments_[static_cast<std::size_t>(garment)].garment.patches();
+  const std::optional<std::size_t>& garment = part_states_.at(part).garment;
+  return garment ? garments_[*garment].garment.patches() : skin_.patches();
 }
 
 const PatchTopology& HumanModel::topologyOf(const PartState& state) const {
-  return state.garment < 0 ? skin_.topology() : garments_[static_cast<std::size_t>(state.garment)].garment.topology();
+  return state.garment ? garments_[*state.garment].garment.topology() : skin_.topology();
 }
 
 const CalibratedErrorBound& HumanModel::partErrorBound(std::size_t part) const {
@@ -191,8 +192,8 @@ void HumanModel::update(const RigidTransform& root, const std::array<RigidTransf
     const bool cpu_vertices = vertex_evaluation_ == VertexEvaluation::kCpu || displaced;
     const std::vector<int>& levels = withCoveredHidden(p, chooseLevels(state, partPatches(p), lod), lod.hide_covered);
     tessellate(p, levels, cpu_vertices);
-    if (state.garment >= 0) {
-      measureWrinkles(garments_[static_cast<std::size_t>(state.garment)], parts_[p], cpu_vertices, displaced);
+    if (state.garment) {
+      measureWrinkles(garments_[*state.garment], parts_[p], cpu_vertices, displaced);
     }
     displaceAndBound(p, levels);
   }
@@ -284,7 +285,7 @@ void HumanModel::tessellate(std::size_t p, const std::vector<int>& levels, bool 
     state.corners.layout_id = part.layout_id;
   }
   part.corners = &state.corners.split;
-  if (state.garment < 0) {
+  if (!state.garment) {
     part.relief_tiles = &skin_tiling_.tilesPerPatch();
     part.relief_tiles_id = skin_tiles_id_;
   }

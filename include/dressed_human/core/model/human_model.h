@@ -6,6 +6,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -187,7 +188,7 @@ class HumanModel {
   };
   // What the model keeps of one drawn part between updates (parts_[p] is what it hands out).
   struct PartState {
-    int garment = -1;                                         // index in garments_; -1: the skin
+    std::optional<std::size_t> garment;                       // index in garments_; none: the skin
     std::shared_ptr<const CalibratedErrorBound> error_bound;  // calibrated at rest, shared by humans of one body
     std::unique_ptr<Tessellator> tessellator = std::make_unique<Tessellator>();  // not movable
     AutomaticLevels automatic;
@@ -213,8 +214,8 @@ class HumanModel {
     ReliefDisplacement settings;
   };
 
-  void addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour, int garment,
-               std::shared_ptr<const CalibratedErrorBound> error_bound);
+  void addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour,
+               std::optional<std::size_t> garment, std::shared_ptr<const CalibratedErrorBound> error_bound);
   const PatchTopology& topologyOf(const PartState& state) const;
   // update()'s steps, in order.
   void poseSurfaces(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones);
