@@ -36,6 +36,29 @@ ReliefMap sineMap(int size, double a) {
   return map;
 }
 
+// Largest distances of `displaced` (the flat 1 m patch `base` displaced by amplitude 1.5 with
+// sineMap(_, 0.01)) from the analytic surface z = 1.5 * 0.01 * sin(4 pi x) * metres_per_tile,
+// positions and unit normals; its slope is the derivative of that height.
+struct SineSurfaceErrors {
+  double position = 0.0;
+  double normal = 0.0;
+};
+
+SineSurfaceErrors errorsAgainstSine(const TriangleMesh& base, const TriangleMesh& displaced, double metres_per_tile) {
+  SineSurfaceErrors worst;
+  const double height = 1.5 * 0.01 * metres_per_tile;
+  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
+    const double x = base.positions[i].x();
+    const double z = height * std::sin(4.0 * kPi * x);
+    const double dzdx = height * 4.0 * kPi * std::cos(4.0 * kPi * x);
+    worst.position = std::max(
+        worst.position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
+    worst.normal = std::max(worst.normal,
+                            (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
+  }
+  return worst;
+}
+
 TEST(MeshDisplacement, SamplesPixelCentresExactlyAndWraps) {
   ReliefMap map(4, 2);
   for (std::size_t i = 0; i < map.heights.size(); ++i) map.heights[i] = static_cast<float>(i);
@@ -60,20 +83,11 @@ TEST(MeshDisplacement, FlatPatchFollowsTheAnalyticDisplacedSurface) {
   displaceMesh(base, displacement, displaced);
   ASSERT_EQ(displaced.vertexCount(), base.vertexCount());
   EXPECT_EQ(displaced.indices, base.indices);
-  double worst_position = 0.0, worst_normal = 0.0;
-  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
-    const double x = base.positions[i].x();
-    // z = amplitude * h(x * tiling) * (1 m / tiling): a tile is half a metre here.
-    const double z = 1.5 * 0.01 * std::sin(2.0 * kPi * 2.0 * x) / 2.0;
-    const double dzdx = 1.5 * 0.01 * 2.0 * kPi * std::cos(2.0 * kPi * 2.0 * x);
-    worst_position = std::max(
-        worst_position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
-    worst_normal = std::max(worst_normal,
-                            (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
-  }
+  // z = amplitude * h(x * tiling) * (1 m / tiling): a tile is half a metre here.
+  const SineSurfaceErrors worst = errorsAgainstSine(base, displaced, 0.5);
   // Bilinear interpolation of a 512-pixel sine: relative error ~ (2 pi / 512)^2 / 8.
-  EXPECT_LT(worst_position, 2e-6);
-  EXPECT_LT(worst_normal, 1e-3);
+  EXPECT_LT(worst.position, 2e-6);
+  EXPECT_LT(worst.normal, 1e-3);
 }
 
 TEST(MeshDisplacement, NormalsAgreeWithTheDisplacedPositions) {
@@ -152,19 +166,9 @@ TEST(MeshDisplacement, TilesPerPatchFollowTheAnalyticDisplacedSurface) {
   displacement.patch_tiles = &tiles;
   TriangleMesh displaced;
   displaceMesh(base, displacement, displaced);
-  const double metres_per_tile = std::sqrt(1.0 / 6.0);
-  double worst_position = 0.0, worst_normal = 0.0;
-  for (std::size_t i = 0; i < base.vertexCount(); ++i) {
-    const double x = base.positions[i].x();
-    const double z = 1.5 * 0.01 * std::sin(2.0 * kPi * 2.0 * x) * metres_per_tile;
-    const double dzdx = 1.5 * 0.01 * 2.0 * kPi * std::cos(2.0 * kPi * 2.0 * x) * 2.0 * metres_per_tile;
-    worst_position = std::max(
-        worst_position, (displaced.positions[i].cast<double>() - Eigen::Vector3d(x, base.positions[i].y(), z)).norm());
-    worst_normal = std::max(worst_normal,
-                            (displaced.normals[i].cast<double>() - Eigen::Vector3d(-dzdx, 0, 1).normalized()).norm());
-  }
-  EXPECT_LT(worst_position, 2e-6);
-  EXPECT_LT(worst_normal, 1e-3);
+  const SineSurfaceErrors worst = errorsAgainstSine(base, displaced, std::sqrt(1.0 / 6.0));
+  EXPECT_LT(worst.position, 2e-6);
+  EXPECT_LT(worst.normal, 1e-3);
 
   const std::vector<Eigen::Vector2f> square{Eigen::Vector2f(2.0f, 2.0f)};
   displacement.patch_tiles = &square;
