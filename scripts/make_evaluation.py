@@ -686,7 +686,8 @@ is the nearest distance, cropped to the skin: relief (left), flat (right).
 standing at rest (every joint at 0: no garment compressed, so no fold may show) from 2.5 m; per view the flat shot,
 then the default relief of the build this run was given as "before" (if any) and of this commit.
 The skin's cells are sized in metres per body region (README, the rviz display); the garments'
-folds are the exact folds blurred by `Fold Softness`.
+folds are the exact folds blurred by `Fold Softness` (twice as far along the folds as across them)
+and kept as deep as the exact folds.
 
 {relief_distance}
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <string>
 #include <utility>
 
 #include "dressed_human/core/relief/buckling_solution.h"
@@ -165,6 +167,74 @@ TEST(SmoothFolds, SlopesAreTheDerivativeOfTheHeightsAndTheTileWraps) {
   const Steps steps = measureSteps(map);
   EXPECT_LE(steps.seam_u, 1.05 * steps.interior_u);
   EXPECT_LE(steps.seam_v, 1.05 * steps.interior_v);
+}
+
+// Issue 40: cloth blurred more along its folds (u) than across them (v). Each pixel row then holds
+// no harmonic above the along-folds count (per cell, times the cells across u), while the
+// columns keep the finer detail across the folds; a negative count is refused by name.
+TEST(SmoothFolds, BlurredAlongTheFoldsOnlyAsFarAsAsked) {
+  WrinkleMapSpec spec = foldSpec("YY", 0.8);
+  spec.surface = WrinkleSurface::smoothFolds;
+  spec.smooth_harmonics_per_cell = 5;
+  spec.smooth_harmonics_along_folds = 2;
+  const ReliefMap map = makeWrinkleMap(spec);
+  // Energy of harmonic k along u (over all rows) or along v (over all columns).
+  const auto energy = [&](bool along_u, int k) {
+    const int n = along_u ? map.width : map.height, lines = along_u ? map.height : map.width;
+    double total = 0.0;
+    for (int line = 0; line < lines; ++line) {
+      std::complex<double> sum = 0.0;
+      for (int i = 0; i < n; ++i) {
+        const float h = along_u ? map.heights[map.index(i, line)] : map.heights[map.index(line, i)];
+        sum += static_cast<double>(h) * std::polar(1.0, -2.0 * M_PI * k * i / n);
+      }
+      total += std::norm(sum / static_cast<double>(n));
+    }
+    return total;
+  };
+  double kept_u = 0.0, cut_u = 0.0, beyond_u_along_v = 0.0;
+  for (int k = 1; k <= 2 * spec.cells_around; ++k) kept_u += energy(true, k);
+  for (int k = 2 * spec.cells_around + 1; k <= 6 * spec.cells_around; ++k) cut_u += energy(true, k);
+  for (int k = 2 * spec.rows + 1; k <= 5 * spec.rows; ++k) beyond_u_along_v += energy(false, k);
+  EXPECT_GT(kept_u, 0.0);
+  EXPECT_LT(cut_u, 1e-9 * kept_u);
+  // The taper leaves little of harmonics 3-5 (about 1e-4 of the energy), but not nothing.
+  EXPECT_GT(beyond_u_along_v, 1e-5 * kept_u) << "across the folds the detail of 5 harmonics a cell is gone";
+  spec.smooth_harmonics_along_folds = -1;
+  try {
+    makeWrinkleMap(spec);
+    ADD_FAILURE() << "a negative along-folds harmonic count was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("smooth_harmonics_along_folds"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 40: a softer fabric rounds its creases but folds as deep: keep_depth scales the blurred
+// folds back to the exact folds' RMS height (a blur of 2 harmonics a cell loses about half of it).
+TEST(SmoothFolds, KeepDepthFoldsAsDeepAsTheExactFolds) {
+  const auto rms = [](const ReliefMap& map) {
+    double sum = 0.0, squares = 0.0;
+    for (const float h : map.heights) {
+      sum += h;
+      squares += static_cast<double>(h) * h;
+    }
+    const double n = static_cast<double>(map.heights.size());
+    return std::sqrt(squares / n - (sum / n) * (sum / n));
+  };
+  WrinkleMapSpec spec = foldSpec("YY", 0.8);
+  const double exact = rms(makeWrinkleMap(spec));
+  spec.surface = WrinkleSurface::smoothFolds;
+  spec.smooth_harmonics_per_cell = 2;
+  const ReliefMap shallow = makeWrinkleMap(spec);
+  EXPECT_LT(rms(shallow), 0.8 * exact);
+  spec.keep_depth = true;
+  const ReliefMap deep = makeWrinkleMap(spec);
+  EXPECT_NEAR(rms(deep), exact, 1e-4 * exact);
+  // The same shape, only deeper: slopes scaled as the heights are.
+  const double gain = rms(deep) / rms(shallow);
+  for (std::size_t i = 0; i < deep.heights.size(); i += 97) {
+    EXPECT_NEAR(deep.slope_v[i], gain * shallow.slope_v[i], 1e-4 * (1.0 + std::abs(deep.slope_v[i])));
+  }
 }
 
 TEST(SmoothFolds, UncompressedClothStaysFlat) {

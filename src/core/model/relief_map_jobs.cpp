@@ -107,6 +107,8 @@ WrinkleMapSpec garmentWrinkleMapSpec(double fold_softness) {
   if (fold_softness > 0.0) {
     spec.surface = WrinkleSurface::smoothFolds;
     spec.smooth_harmonics_per_cell = smoothHarmonicsForBlur(fold_softness);
+    spec.smooth_harmonics_along_folds = smoothHarmonicsForBlur(kAlongFoldsBlur * fold_softness);
+    spec.keep_depth = true;
   } else {
     spec.surface = WrinkleSurface::exactFolds;
   }

@@ -16,6 +16,16 @@
 namespace dressed_human {
 namespace {
 
+double rmsAboutMean(const std::vector<float>& values) {
+  double sum = 0.0, squares = 0.0;
+  for (const float value : values) {
+    sum += value;
+    squares += static_cast<double>(value) * value;
+  }
+  const double n = static_cast<double>(values.size());
+  return n > 0.0 ? std::sqrt(std::max(0.0, squares / n - (sum / n) * (sum / n))) : 0.0;
+}
+
 void requirePositive(int value, const char* name) {
   if (value <= 0) {
     std::ostringstream message;
@@ -124,8 +134,15 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
     throw std::invalid_argument(message.str());
   }
   if (spec.surface == WrinkleSurface::gaussianApproximation) requirePositive(spec.gaussian_terms, "gaussian_terms");
-  if (spec.surface == WrinkleSurface::smoothFolds)
+  if (spec.surface == WrinkleSurface::smoothFolds) {
     requirePositive(spec.smooth_harmonics_per_cell, "smooth_harmonics_per_cell");
+    if (spec.smooth_harmonics_along_folds < 0) {
+      std::ostringstream message;
+      message << "WrinkleMapSpec.smooth_harmonics_along_folds must be >= 0 (0: as smooth_harmonics_per_cell), got "
+              << spec.smooth_harmonics_along_folds;
+      throw std::invalid_argument(message.str());
+    }
+  }
 
   std::string around;
   for (int column = 0; column < spec.cells_around; ++column)
@@ -195,8 +212,19 @@ ReliefMap makeWrinkleMap(const WrinkleMapSpec& spec) {
           cells_per_pixel_v;
     }
   }
-  return lowPassRelief(map, spec.smooth_harmonics_per_cell * spec.cells_around,
-                       spec.smooth_harmonics_per_cell * spec.rows, 2.0 * lx * cells_per_pixel_u, metres_per_pixel_v);
+  const int along_folds = spec.smooth_harmonics_along_folds > 0
+                              ? std::min(spec.smooth_harmonics_along_folds, spec.smooth_harmonics_per_cell)
+                              : spec.smooth_harmonics_per_cell;
+  ReliefMap smooth = lowPassRelief(map, along_folds * spec.cells_around, spec.smooth_harmonics_per_cell * spec.rows,
+                                   2.0 * lx * cells_per_pixel_u, metres_per_pixel_v);
+  if (spec.keep_depth) {
+    const double exact = rmsAboutMean(map.heights), blurred = rmsAboutMean(smooth.heights);
+    const float gain = blurred > 0.0 ? static_cast<float>(exact / blurred) : 1.0f;
+    for (std::vector<float>* values : {&smooth.heights, &smooth.slope_u, &smooth.slope_v}) {
+      for (float& value : *values) value *= gain;
+    }
+  }
+  return smooth;
 }
 
 }  // namespace dressed_human

@@ -59,9 +59,9 @@ ReliefProperties::ReliefProperties(rviz::Property* parent) {
   fold_softness_ = notifying(
       new rviz::FloatProperty("Fold Softness", static_cast<float>(kDefaultFoldSoftness),
                               "How round the garments' fold creases are, as thick or soft fabric folds: the exact "
-                              "buckling folds blurred by this much of a fold's width (0: the exact, sharp creases; "
-                              "0.12, the default and the most: an everyday jacket or skirt; softer, the folds would "
-                              "no longer run across the bend).",
+                              "buckling folds blurred across their ridges by this much of a fold's width, and twice "
+                              "as far along them (0: the exact, sharp creases; 0.2, the default: an everyday jacket "
+                              "or skirt; at most 0.3).",
                               parent),
       this, &ReliefProperties::wrinkleMapChanged);
   fold_softness_->setMin(0.0);

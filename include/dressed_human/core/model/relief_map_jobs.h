@@ -22,15 +22,21 @@
 
 namespace dressed_human {
 
-// How soft the garments' fold creases are by default: the exact folds blurred by a Gaussian of
-// this standard deviation, in buckling cells (the fold's width). An everyday woven jacket or
-// skirt folds in round creases, not in the diamonds of the exact profile (docs/relief_distance.md
-// shows both at 0.3-5 m); 0 draws the exact, creased profile of the seed (a thin, stiff sheet).
-constexpr double kDefaultFoldSoftness = 0.12;
-// Largest fold softness a user may set: blurred further (4 harmonics a cell or fewer), the Y-Y
-// chains' junctions outweigh their ridges and the folds no longer run across the compression
-// (test_oriented_folds.cpp checks the direction at 0, the default and this).
-constexpr double kMaxFoldSoftness = 0.12;
+// How soft the garments' fold creases are by default: the exact folds blurred across their ridges
+// by a Gaussian of this standard deviation, in buckling cells (the fold's width), and along them
+// kAlongFoldsBlur times as far. An everyday woven jacket or skirt folds in long, round folds, not
+// in the diamonds of the exact profile (docs/relief_distance.md shows both at 0.3-5 m): at 2.5 m
+// this default's creases are as soft as issue 40 asks; 0 draws the exact, creased profile of the
+// seed (a thin, stiff sheet).
+constexpr double kDefaultFoldSoftness = 0.2;
+// Fabric does not keep the buckling lattice's diamonds along a fold: blurred only as much along
+// the folds as across them, the Y-Y chains' junctions outweigh their ridges once the creases are
+// round (beyond 0.12 cells) and the folds no longer run across the compression.
+constexpr double kAlongFoldsBlur = 2.0;
+// Largest fold softness a user may set: blurred further (one harmonic a cell across the folds),
+// nothing of the chains' pattern is left (test_oriented_folds.cpp checks the direction at 0, the
+// default and this).
+constexpr double kMaxFoldSoftness = 0.3;
 
 // One finished build: the map and its texture, or what the build threw.
 struct FinishedReliefMap {

@@ -46,6 +46,13 @@ struct WrinkleMapSpec {
   /// blur (of 0.59 / harmonics cells); 20 is the fewest even count that keeps the RMS error within
   /// 5 % of h1 for I, Y and X at alpha 0.6 and 0.8 (docs/relief/smooth_fold_rms_vs_harmonics.png).
   int smooth_harmonics_per_cell = 20;
+  /// smoothFolds: harmonics kept per cell across u (along the folds, which run across the
+  /// compression along v) if fewer than smooth_harmonics_per_cell: the folds blurred more along
+  /// their length than across it (0: as smooth_harmonics_per_cell).
+  int smooth_harmonics_along_folds = 0;
+  /// smoothFolds: scaled back to the exact folds' RMS height (about its mean): softer fabric
+  /// rounds its creases, it does not fold shallower.
+  bool keep_depth = false;
   double amplitude = 1.0;  ///< scales relief (heights and slopes), >= 0
 };
 
