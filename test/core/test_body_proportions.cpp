@@ -31,6 +31,7 @@ namespace {
 const std::string kSource = DRESSED_HUMAN_SOURCE_DIR;
 const std::string kUrdfPath = kSource + "/urdf/human.urdf";
 const std::string kCmuWalk = kSource + "/data/motion/cmu_02_01_walk.bvh";
+const std::string kOtherCmuWalk = kSource + "/data/motion/cmu_07_01_walk.bvh";
 
 std::size_t boneIndex(const Skeleton& skeleton, const std::string& name) {
   return static_cast<std::size_t>(skeleton.findBone(name));
@@ -349,6 +350,29 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
   // The angles are those of the fit on our default body (the shape moves no rotation; the period,
   // estimated from all series with the root among them, differs in the 7th digit).
   EXPECT_NEAR(accuracy.max_rms_degrees, default_accuracy.max_rms_degrees, 1e-3);
+  EXPECT_LT(accuracy.max_rms_degrees, 6.0);
+}
+
+// Issue 39: another subject's walk, which nothing here was fitted on (CMU 07_01), meets the body
+// fit's goals as 02_01 does: every mapped joint within 2 cm mean and 5 cm max of the capture's FK.
+// (Measured: 1.15 / 4.17 cm; our skeleton on the unsmoothed retarget 0.96 / 3.38 cm, over the
+// issue's 3 cm: not asserted; docs/body_fit_accuracy.md reports it.)
+TEST(BodyProportions, AnotherCmuSubjectsWalkMeetsTheSameGoals) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
+  const BvhClip clip = loadBvhFile(kOtherCmuWalk);
+  const BvhJointMap map = chooseBvhJointMap(clip, kOtherCmuWalk);
+  RetargetOptions options;
+  options.fit_body = true;
+  const SampledMotion sampled = retargetBvh(clip, map, skeleton, kOtherCmuWalk, options);
+  EXPECT_EQ(sampled.units.name, "cmu") << sampled.units.reason;
+  const MotionFit fit = fitMotion(sampled, MotionFitOptions());
+  const FitAccuracy accuracy = measureFitAccuracy(skeleton, sampled, fit, fit.motion);
+  std::printf("CMU 07_01: joints %.2f / %.2f cm, unsmoothed %.2f / %.2f cm, feet in stance %.2f / %.2f cm\n",
+              accuracy.against_capture.mean_cm, accuracy.against_capture.max_cm,
+              accuracy.unsmoothed_against_capture.mean_cm, accuracy.unsmoothed_against_capture.max_cm,
+              accuracy.stance_foot_height.mean_cm, accuracy.stance_foot_height.max_cm);
+  EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
+  EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
   EXPECT_LT(accuracy.max_rms_degrees, 6.0);
 }
 
