@@ -326,7 +326,8 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
   const MotionFit default_fit = fitMotion(default_body, MotionFitOptions());
   const FitAccuracy accuracy = measureFitAccuracy(skeleton, fitted_body, fit, fit.motion);
   const FitAccuracy default_accuracy = measureFitAccuracy(skeleton, default_body, default_fit, default_fit.motion);
-  // The goals of issue 22: mean <= 2 cm, max <= 5 cm. Measured: 1.08 / 4.26 cm, against 14.8 /
+  // The goals of issue 22: mean <= 2 cm, max <= 5 cm. fit_motion reports 0.91 / 4.14 cm (1.08 / 4.16 before
+  // the chest was turned to its carried neck and shoulders, issue 39), against 14.8 /
   // 27.6 cm on our default body; 2.71 / 5.94 cm with lengths only (no joint offsets).
   EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
   EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
@@ -354,9 +355,10 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
 }
 
 // Issue 39: another subject's walk, which nothing here was fitted on (CMU 07_01), meets the body
-// fit's goals as 02_01 does: every mapped joint within 2 cm mean and 5 cm max of the capture's FK.
-// (Measured: 1.15 / 4.17 cm; our skeleton on the unsmoothed retarget 0.96 / 3.38 cm, over the
-// issue's 3 cm: not asserted; docs/body_fit_accuracy.md reports it.)
+// fit's goals as 02_01 does: every mapped joint within 2 cm mean and 5 cm max of the capture's FK,
+// and our skeleton on the unsmoothed retarget within 3 cm at worst. Measured: 1.06 / 3.81 cm and
+// 0.84 / 2.77 cm. With our chest turned as the capture's Spine alone (before its carried neck and
+// shoulders were fitted: CarriedJoints in mocap_retarget.cpp) 1.15 / 4.17 and 0.96 / 3.38 cm.
 TEST(BodyProportions, AnotherCmuSubjectsWalkMeetsTheSameGoals) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   const BvhClip clip = loadBvhFile(kOtherCmuWalk);
@@ -373,6 +375,7 @@ TEST(BodyProportions, AnotherCmuSubjectsWalkMeetsTheSameGoals) {
               accuracy.stance_foot_height.mean_cm, accuracy.stance_foot_height.max_cm);
   EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
   EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
+  EXPECT_LE(accuracy.unsmoothed_against_capture.max_cm, 3.0);
   EXPECT_LT(accuracy.max_rms_degrees, 6.0);
 }
 

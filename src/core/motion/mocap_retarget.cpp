@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
+
+#include <Eigen/SVD>
 
 #include "dressed_human/core/motion/motion.h"
 
@@ -32,6 +35,72 @@ RestPose ourRestPose(const Skeleton& skeleton) {
     rest.position[b] = pose.bone_in_world[b].translation;
   }
   return rest;
+}
+
+// The rotation Q that best takes the `rest` vectors onto the `now` ones (least squares, Wahba's
+// problem, by the SVD; a proper rotation).
+Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& rest, const std::vector<Eigen::Vector3d>& now) {
+  Eigen::Matrix3d correlation = Eigen::Matrix3d::Zero();
+  for (std::size_t k = 0; k < rest.size(); ++k) correlation += now[k] * rest[k].transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(correlation, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
+  sign(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  return svd.matrixU() * sign * svd.matrixV().transpose();
+}
+
+// Our joints whose bone hangs (through fixed bones) from joint `j`'s bone.
+std::vector<std::size_t> childJoints(const Skeleton& skeleton, std::size_t j) {
+  std::vector<std::size_t> children;
+  const int bone = skeleton.joint(j).bone;
+  for (std::size_t k = 0; k < kJointCount; ++k) {
+    int parent = skeleton.bone(static_cast<std::size_t>(skeleton.joint(k).bone)).parent;
+    while (parent >= 0 && parent != bone && skeleton.bone(static_cast<std::size_t>(parent)).joint < 0) {
+      parent = skeleton.bone(static_cast<std::size_t>(parent)).parent;
+    }
+    if (parent == bone) children.push_back(k);
+  }
+  return children;
+}
+
+// A segment of ours that carries several joints the source reaches through joints we do not
+// have (our chest: CMU's Spine1, Neck and clavicles lie between its Spine and the neck and
+// shoulders) is turned every frame to put those joints, as a whole, where the source has them.
+struct CarriedJoints {
+  std::vector<std::size_t> source;       // the source joints
+  std::vector<Eigen::Vector3d> at_rest;  // from the segment's source joint, at rest, our axes
+};
+
+CarriedJoints carriedJoints(const BvhClip& clip, const BvhPose& source_rest, const BvhJointMap& map,
+                            const Skeleton& skeleton, std::size_t joint, std::size_t segment_source,
+                            const Eigen::Matrix3d& to_ours) {
+  std::vector<std::size_t> ends;
+  bool through_others = false;
+  for (const std::size_t k : childJoints(skeleton, joint)) {
+    if (map.joints[k].empty()) continue;
+    ends.push_back(static_cast<std::size_t>(clip.findJoint(map.joints[k])));
+    through_others = through_others || clip.joints[ends.back()].parent != static_cast<int>(segment_source);
+  }
+  CarriedJoints carried;
+  if (ends.size() < 2 || !through_others) return carried;
+  for (const std::size_t end : ends) {
+    const Eigen::Vector3d at_rest = to_ours * (source_rest.position[end] - source_rest.position[segment_source]);
+    if (at_rest.norm() < 1e-9) continue;
+    carried.source.push_back(end);
+    carried.at_rest.push_back(at_rest);
+  }
+  if (carried.source.size() < 2) carried = CarriedJoints();
+  return carried;
+}
+
+// The segment's world rotation in `pose` that puts its carried joints where the source has them
+// (their rest rotation is the identity: BVH rest poses carry no rotation).
+Eigen::Matrix3d carriedRotation(const CarriedJoints& carried, const BvhPose& pose, std::size_t segment_source,
+                                const Eigen::Matrix3d& to_ours, std::vector<Eigen::Vector3d>& scratch) {
+  scratch.clear();
+  for (const std::size_t end : carried.source) {
+    scratch.push_back(to_ours * (pose.position[end] - pose.position[segment_source]));
+  }
+  return bestRotation(carried.at_rest, scratch);
 }
 
 // Rest direction of a source segment: towards the middle of its children where it branches (an
@@ -319,6 +388,27 @@ double skeletonStature(const Skeleton& skeleton) {
   return high - low;
 }
 
+namespace {
+
+// Our left leg's length (hip to knee to ankle) over the source's, at rest.
+double legScale(const BvhClip& clip, const BvhPose& source_rest, const BvhJointMap& map, const Skeleton& skeleton,
+                const RestPose& our_rest, const std::string& source_name) {
+  const auto source = [&](int joint) {
+    return source_rest.position[static_cast<std::size_t>(clip.findJoint(map.joints[static_cast<std::size_t>(joint)]))];
+  };
+  const auto ours = [&](int joint) {
+    return our_rest.position[static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone)];
+  };
+  double source_leg = 0.0;
+  if (!map.joints[kLeftKnee].empty() && !map.joints[kLeftAnkle].empty()) {
+    source_leg = (source(kLeftKnee) - source(kLeftHip)).norm() + (source(kLeftAnkle) - source(kLeftKnee)).norm();
+  }
+  if (!(source_leg > 1e-9)) throw MotionError(source_name + ": the source's left leg has no length at rest");
+  return ((ours(kLeftKnee) - ours(kLeftHip)).norm() + (ours(kLeftAnkle) - ours(kLeftKnee)).norm()) / source_leg;
+}
+
+}  // namespace
+
 SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
                           const std::string& source_name, const RetargetOptions& options) {
   checkBvhJointMap(map, clip, source_name);
@@ -334,6 +424,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   std::array<Eigen::Matrix3d, kJointCount> rest_offset;
   std::array<std::size_t, kJointCount> source_joint{};
   std::array<std::optional<ToeTip>, kJointCount> toe_tip;  // a foot's farthest point, which its bone points at
+  std::array<CarriedJoints, kJointCount> carried;
   SampledMotion motion;
   motion.source = source_name;
   for (std::size_t j = 0; j < kJointCount; ++j) {
@@ -358,6 +449,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
                                 : own_tip ? to_tip
                                           : firstDistinctDescendant(clip, source_rest, s);
     if (direction.norm() < 1e-9) direction = firstDistinctDescendant(clip, source_rest, s);
+    carried[j] = carriedJoints(clip, source_rest, map, skeleton, j, source_joint[j], to_ours);
     const std::size_t bone = static_cast<std::size_t>(skeleton.joint(j).bone);
     Eigen::Matrix3d offset = our_rest.rotation[bone];
     if (direction.norm() > 1e-9) {
@@ -371,21 +463,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   // Root translation: scaled by leg length so that the feet reach the floor and strides do not
   // slide; shifted so that our hip joints sit at the scaled height of the source's.
   const std::size_t source_hip = sourceIndex(map.joints[kLeftHip]);
-  double source_leg = 0.0;
-  double our_leg = 0.0;
-  if (!map.joints[kLeftKnee].empty() && !map.joints[kLeftAnkle].empty()) {
-    const std::size_t knee = sourceIndex(map.joints[kLeftKnee]);
-    const std::size_t ankle = sourceIndex(map.joints[kLeftAnkle]);
-    source_leg = (source_rest.position[knee] - source_rest.position[source_hip]).norm() +
-                 (source_rest.position[ankle] - source_rest.position[knee]).norm();
-    const auto bone = [&](int joint) {
-      return static_cast<std::size_t>(skeleton.joint(static_cast<std::size_t>(joint)).bone);
-    };
-    our_leg = (our_rest.position[bone(kLeftKnee)] - our_rest.position[bone(kLeftHip)]).norm() +
-              (our_rest.position[bone(kLeftAnkle)] - our_rest.position[bone(kLeftKnee)]).norm();
-  }
-  if (!(source_leg > 1e-9)) throw MotionError(source_name + ": the source's left leg has no length at rest");
-  motion.root_scale = our_leg / source_leg;
+  motion.root_scale = legScale(clip, source_rest, map, skeleton, our_rest, source_name);
   const double source_hip_drop = -(to_ours * (source_rest.position[source_hip] - source_rest.position[root])).z();
   const double our_hip_drop = -our_rest.position[static_cast<std::size_t>(skeleton.joint(kLeftHip).bone)].z();
   const double height_shift = our_hip_drop - motion.root_scale * source_hip_drop;
@@ -414,6 +492,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   motion.reference_joint_positions.resize(frames);
   std::array<Eigen::Matrix3d, kJointCount> target;
   std::array<const Eigen::Matrix3d*, kJointCount> target_pointer{};
+  std::vector<Eigen::Vector3d> carried_now;
   for (std::size_t f = 0; f < frames; ++f) {
     const BvhPose pose = bvhForwardKinematics(clip, f);
     motion.times[f] = static_cast<double>(f) * clip.frame_time;
@@ -425,6 +504,8 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
       if (toe_tip[j]) {
         const Eigen::Vector3d aim = footAim(clip, pose, *toe_tip[j], source_joint[j], to_ours);
         target[j] = toMatrix(Eigen::Quaterniond::FromTwoVectors(target[j].col(2), aim)) * target[j];
+      } else if (!carried[j].source.empty()) {
+        target[j] = carriedRotation(carried[j], pose, source_joint[j], to_ours, carried_now) * rest_offset[j];
       }
       target_pointer[j] = &target[j];
       motion.reference_joint_positions[f][j] =
