@@ -313,19 +313,34 @@ TEST(BodyProportions, ARetargetOnTheFittedBodyPutsEveryJointWhereTheCaptureHasIt
   }
 }
 
+// A CMU capture retargeted (on its fitted body or on ours), fitted with the default options and
+// measured against the capture.
+struct FittedCapture {
+  SampledMotion sampled;
+  FitAccuracy accuracy;
+};
+
+FittedCapture fitCmuCapture(const Skeleton& skeleton, const BvhClip& clip, const std::string& path, bool fit_body) {
+  RetargetOptions options;
+  options.fit_body = fit_body;
+  FittedCapture fitted;
+  fitted.sampled = retargetBvh(clip, chooseBvhJointMap(clip, path), skeleton, path, options);
+  if (fit_body) {
+    EXPECT_EQ(fitted.sampled.units.name, "cmu") << path << ": " << fitted.sampled.units.reason;
+  }
+  const MotionFit fit = fitMotion(fitted.sampled, MotionFitOptions());
+  fitted.accuracy = measureFitAccuracy(skeleton, fitted.sampled, fit, fit.motion);
+  return fitted;
+}
+
 TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   const BvhClip clip = loadBvhFile(kCmuWalk);
   const BvhJointMap map = chooseBvhJointMap(clip, kCmuWalk);
-  RetargetOptions options;
-  options.fit_body = true;
-  const SampledMotion fitted_body = retargetBvh(clip, map, skeleton, kCmuWalk, options);
-  EXPECT_EQ(fitted_body.units.name, "cmu") << fitted_body.units.reason;
-  const SampledMotion default_body = retargetBvh(clip, map, skeleton, kCmuWalk);
-  const MotionFit fit = fitMotion(fitted_body, MotionFitOptions());
-  const MotionFit default_fit = fitMotion(default_body, MotionFitOptions());
-  const FitAccuracy accuracy = measureFitAccuracy(skeleton, fitted_body, fit, fit.motion);
-  const FitAccuracy default_accuracy = measureFitAccuracy(skeleton, default_body, default_fit, default_fit.motion);
+  const FittedCapture fitted = fitCmuCapture(skeleton, clip, kCmuWalk, true);
+  const SampledMotion& fitted_body = fitted.sampled;
+  const FitAccuracy& accuracy = fitted.accuracy;
+  const FitAccuracy default_accuracy = fitCmuCapture(skeleton, clip, kCmuWalk, false).accuracy;
   // The goals of issue 22: mean <= 2 cm, max <= 5 cm. fit_motion reports 0.91 / 4.14 cm (1.08 / 4.16 before
   // the chest was turned to its carried neck and shoulders, issue 39), against 14.8 /
   // 27.6 cm on our default body; 2.71 / 5.94 cm with lengths only (no joint offsets).
@@ -361,14 +376,7 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
 // shoulders were fitted: CarriedJoints in mocap_retarget.cpp) 1.15 / 4.17 and 0.96 / 3.38 cm.
 TEST(BodyProportions, AnotherCmuSubjectsWalkMeetsTheSameGoals) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
-  const BvhClip clip = loadBvhFile(kOtherCmuWalk);
-  const BvhJointMap map = chooseBvhJointMap(clip, kOtherCmuWalk);
-  RetargetOptions options;
-  options.fit_body = true;
-  const SampledMotion sampled = retargetBvh(clip, map, skeleton, kOtherCmuWalk, options);
-  EXPECT_EQ(sampled.units.name, "cmu") << sampled.units.reason;
-  const MotionFit fit = fitMotion(sampled, MotionFitOptions());
-  const FitAccuracy accuracy = measureFitAccuracy(skeleton, sampled, fit, fit.motion);
+  const FitAccuracy accuracy = fitCmuCapture(skeleton, loadBvhFile(kOtherCmuWalk), kOtherCmuWalk, true).accuracy;
   std::printf("CMU 07_01: joints %.2f / %.2f cm, unsmoothed %.2f / %.2f cm, feet in stance %.2f / %.2f cm\n",
               accuracy.against_capture.mean_cm, accuracy.against_capture.max_cm,
               accuracy.unsmoothed_against_capture.mean_cm, accuracy.unsmoothed_against_capture.max_cm,
