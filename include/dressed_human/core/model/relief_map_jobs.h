@@ -25,9 +25,9 @@ namespace dressed_human {
 // How soft the garments' fold creases are by default: the exact folds blurred across their ridges
 // by a Gaussian of this standard deviation, in buckling cells (the fold's width), and along them
 // kAlongFoldsBlur times as far. An everyday woven jacket or skirt folds in long, round folds, not
-// in the diamonds of the exact profile (docs/relief_distance.md shows both at 0.3-5 m): at 2.5 m
-// this default's creases are as soft as issue 40 asks; 0 draws the exact, creased profile of the
-// seed (a thin, stiff sheet).
+// in the diamonds of the exact profile (docs/relief_distance.md shows both at 0.3-5 m, with how
+// sharp the creases still measure); 0 draws the exact, creased profile of the seed (a thin,
+// stiff sheet).
 constexpr double kDefaultFoldSoftness = 0.2;
 // Fabric does not keep the buckling lattice's diamonds along a fold: blurred only as much along
 // the folds as across them, the Y-Y chains' junctions outweigh their ridges once the creases are
