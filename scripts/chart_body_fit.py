@@ -122,7 +122,8 @@ def main():
     osim_summary, osim_per_joint = reportLines(osim_report)
     other_summary, other_per_joint = reportLines(other_report)
     unsmoothed = [line.strip() for line in other_report.splitlines()
-                  if line.strip().startswith(("joint positions vs our skeleton", "worst against"))]
+                  if line.strip().startswith(("our skeleton on the unsmoothed", "joint positions, fitted series",
+                                              "worst against"))]
     lines = ["<!-- Written by scripts/chart_body_fit.py from one fit_motion run per capture; do not edit. -->",
              "# Fitted body proportions: accuracy against the capture", "",
              "![accuracy](body_fit_accuracy.png)", "", "## CMU 02_01 walk (BVH)", ""] + summary + [""] + table(rows)
