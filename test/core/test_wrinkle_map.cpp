@@ -242,6 +242,11 @@ TEST(SmoothFolds, UncompressedClothStaysFlat) {
   spec.surface = WrinkleSurface::smoothFolds;
   const ReliefMap map = makeWrinkleMap(spec);
   EXPECT_LT(std::max(std::abs(map.minimumHeight()), std::abs(map.maximumHeight())), 1e-6);
+  // Kept as deep as flat cloth is: still flat, not scaled by 0 / 0.
+  spec.keep_depth = true;
+  const ReliefMap kept = makeWrinkleMap(spec);
+  EXPECT_LT(std::max(std::abs(kept.minimumHeight()), std::abs(kept.maximumHeight())), 1e-6);
+  spec.keep_depth = false;
   spec.smooth_harmonics_per_cell = 0;
   EXPECT_THROW(makeWrinkleMap(spec), std::invalid_argument);
   EXPECT_EQ(rmsHeightDifference(map, map), 0.0);
