@@ -58,7 +58,8 @@ void HumanVisual::update(const std::vector<SurfacePart>& parts) {
     SurfaceMeshObject::ReliefTexturing texturing;
     if (relief_shown_[source.relief]) texturing = {source.corners, source.relief_tiles, source.relief_tiles_id};
     if (const CpuVertices* cpu = source.cpuVertices()) {
-      part.mesh->update(*source.mesh, texturing, *cpu, source.hidden_patches, source.bounds);
+      part.mesh->update(*source.mesh, texturing, *cpu, source.hidden_patches, source.bounds,
+                        part.material->litPerVertex());
       continue;
     }
     const GpuVertices& gpu = *source.gpuVertices();

@@ -52,6 +52,9 @@ class ReliefMaterial {
   // one, for a relief too small to see (ReliefVisibility). Colour and strength carry over.
   void setReliefShown(bool shown);
   bool reliefShown() const { return relief_shown_; }
+  // Lit per vertex now (set so and the relief not shown): the programs read each vertex's
+  // position and normal only.
+  bool litPerVertex() const { return vertex_lit_ && !relief_shown_; }
   // true: while the relief is not shown, the same plain lighting is computed per vertex instead
   // of per pixel (a small human: its triangles cover a few pixels, and on a software renderer
   // the fragment program is most of its cost).
@@ -77,7 +80,6 @@ class ReliefMaterial {
   bool wrinkle_strength_set_ = false;
   bool relief_shown_ = true;
   bool vertex_lit_ = false;
-  bool litPerVertex() const { return vertex_lit_ && !relief_shown_; }
   void applyPrograms();                               // the vertex and fragment programs the state above asks for
   Ogre::ColourValue colour_{0.8f, 0.7f, 0.6f, 1.0f};  // as last set, for a fragment program swap
   float relief_strength_ = 1.0f;

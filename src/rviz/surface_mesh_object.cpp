@@ -20,21 +20,25 @@ void SurfaceMeshObject::setMaterial(const std::string& material) {
   if (object_->getSections().size() > 0) object_->setMaterialName(0, material_);
 }
 
-bool SurfaceMeshObject::beginFilling(std::size_t vertices, std::size_t indices) {
+bool SurfaceMeshObject::beginFilling(std::size_t vertices, std::size_t indices, VertexAttributes attributes) {
   if (vertices == 0 || indices == 0) {
     object_->clear();
     vertex_count_ = index_count_ = 0;
+    attributes_ = VertexAttributes::kNone;
     return false;
   }
-  if (object_->getSections().size() == 1) {
+  if (object_->getSections().size() == 1 && attributes == attributes_) {
     // Same section, new data: Ogre keeps the hardware buffers while they are large enough and
     // grows them otherwise, so level-of-detail and relief-mode changes stop reallocating once
-    // the largest mesh has been seen.
+    // the largest mesh has been seen. Other vertex attributes (lit per vertex or not) need a
+    // section of their own.
     object_->beginUpdate(0);
     if (vertices > vertex_count_ || indices > index_count_) ++rebuild_count_;
   } else {
     object_->clear();
+    vertex_count_ = index_count_ = 0;  // the new section's buffers hold nothing yet
     object_->begin(material_, Ogre::RenderOperation::OT_TRIANGLE_LIST, "dressed_human");
+    attributes_ = attributes;
     ++rebuild_count_;
   }
   vertex_count_ = std::max(vertex_count_, vertices);
@@ -84,7 +88,7 @@ Eigen::Vector2f SurfaceMeshObject::reliefCoordinate(const TriangleMesh& mesh, co
 
 void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& texturing,
                                const CpuVertices& vertex_data, const std::vector<bool>* hidden_patches,
-                               const Eigen::AlignedBox3f& bounds) {
+                               const Eigen::AlignedBox3f& bounds, bool lit_per_vertex) {
   const std::vector<float>* relief_weight = vertex_data.relief_weight;
   const std::vector<Eigen::Vector2f>* fold_axis = vertex_data.fold_axis;
   layout_id_ = 0;
@@ -96,11 +100,24 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& 
                                 " relief weights and " + std::to_string(fold_axis ? fold_axis->size() : vertices) +
                                 " fold axes");
   }
+  if (lit_per_vertex) {
+    if (!beginFilling(vertices, mesh.indices.size(), VertexAttributes::kShading)) return;
+    for (std::size_t v = 0; v < vertices; ++v) {
+      const Eigen::Vector3f& p = mesh.positions[v];
+      const Eigen::Vector3f& n = mesh.normals[v];
+      object_->position(p.x(), p.y(), p.z());
+      object_->normal(n.x(), n.y(), n.z());
+    }
+    addTriangles(mesh.indices, mesh, hidden_patches);
+    object_->end();
+    setBounds(bounds);
+    return;
+  }
   const PatchCornerSplit* corners = texturing.corners;
   checkTexturing(mesh, texturing);
   const std::vector<std::uint32_t>& indices = corners ? corners->indices : mesh.indices;
   const std::size_t count = corners ? corners->source.size() : vertices;
-  if (!beginFilling(count, indices.size())) return;
+  if (!beginFilling(count, indices.size(), VertexAttributes::kRelief)) return;
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint32_t v = corners ? corners->source[i] : static_cast<std::uint32_t>(i);
     const Eigen::Vector3f& p = mesh.positions[v];
@@ -138,7 +155,7 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const ReliefTex
     checkTexturing(layout, texturing);
     const std::vector<std::uint32_t>& indices = corners ? corners->indices : layout.indices;
     const std::size_t count = corners ? corners->source.size() : vertices;
-    if (!beginFilling(count, indices.size())) return;
+    if (!beginFilling(count, indices.size(), VertexAttributes::kLayout)) return;
     for (std::size_t i = 0; i < count; ++i) {
       // The owner's (u, v, patch) for the position, so that copies evaluate to the same bits.
       const std::uint32_t v = corners ? corners->source[i] : static_cast<std::uint32_t>(i);

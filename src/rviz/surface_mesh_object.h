@@ -38,14 +38,17 @@ class SurfaceMeshObject {
     std::uint64_t tiles_id = 0;
   };
 
-  // Vertices and triangles as `texturing` says. Second texture coordinate, per vertex: the
-  // `vertices`' relief_weight (how much relief shows; null: 1) and fold_axis (which way garment
-  // folds run; null: zeros). `bounds`: encloses the posed surface
+  // Vertices and triangles as `texturing` says: per vertex its position and normal, and unless
+  // `lit_per_vertex` (ReliefMaterial::litPerVertex: its lighting reads nothing else, and a small
+  // human's vertices are then most of what rviz's thread fills and sends each frame besides the
+  // model) dF/du as the tangent, the relief texture coordinate, and as the second texture
+  // coordinate the `vertices`' relief_weight (how much relief shows; null: 1) and fold_axis (which
+  // way garment folds run; null: zeros). `bounds`: encloses the posed surface
   // (SurfacePart::bounds). `hidden_patches`: triangles on these patches are left out
   // (SurfacePart::hidden_patches; null: none). Throws std::invalid_argument for per-vertex or
   // per-patch data of another size.
   void update(const TriangleMesh& mesh, const ReliefTexturing& texturing, const CpuVertices& vertices,
-              const std::vector<bool>* hidden_patches, const Eigen::AlignedBox3f& bounds);
+              const std::vector<bool>* hidden_patches, const Eigen::AlignedBox3f& bounds, bool lit_per_vertex);
   // Per vertex the owner's (u, v, patch) as the position, the garment's rest metric (the
   // `vertices`' inverse_rest_metric; null: zeros) as texture coordinate 0 and the
   // vertex's relief texture coordinate (`texturing` as above) as texture coordinate 1; triangles
@@ -65,12 +68,16 @@ class SurfaceMeshObject {
   std::string material_;
   std::size_t vertex_count_ = 0;  // largest counts seen: what the buffers hold
   std::size_t index_count_ = 0;
-  std::size_t rebuild_count_ = 0;                   // buffer (re)creations
+  std::size_t rebuild_count_ = 0;  // buffer (re)creations
+  // What each vertex of the buffers holds: another set needs another section (its declaration).
+  enum class VertexAttributes { kNone, kShading, kRelief, kLayout };
+  VertexAttributes attributes_ = VertexAttributes::kNone;
   std::uint64_t layout_id_ = 0;                     // of the layout the buffers hold; 0: evaluated vertices
   bool split_sent_ = false;                         // the buffers hold the corner split of that layout
   std::uint64_t tiles_sent_ = 0;                    // with these tiles per patch
   const std::vector<bool>* hidden_sent_ = nullptr;  // and left out these patches' triangles
-  bool beginFilling(std::size_t vertices, std::size_t indices);  // false: the mesh is empty
+  // false: the mesh is empty.
+  bool beginFilling(std::size_t vertices, std::size_t indices, VertexAttributes attributes);
   // Split vertex i's relief texture coordinate (vertex i of `mesh` without corners).
   static Eigen::Vector2f reliefCoordinate(const TriangleMesh& mesh, const ReliefTexturing& texturing, std::size_t i);
   void addTriangles(const std::vector<std::uint32_t>& indices, const TriangleMesh& mesh,

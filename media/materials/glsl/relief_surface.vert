@@ -4,7 +4,7 @@
 //
 // Two builds of this file (dressed_human.material):
 //  * the CPU evaluated the surface: each vertex brings position, normal, dF/du, its (u, v) and
-//    relief weight;
+//    relief weight; SHADING_ONLY (lit per vertex, the relief not drawn): position and normal only;
 //  * EVALUATE_BEZIER: each vertex brings only (u, v, patch), the (u, v) it has in the patch of its
 //    triangles (for the relief, patch_corner_split.h) and, on garments, its rest metric;
 //    the vertex evaluates the bicubic Bezier patch (SPEC §2 Eq. 2-3) from the posed control
@@ -115,6 +115,15 @@ void main() {
   vec2 axis = vec2(0.0);
   reliefWeight = wrinkleWeighting > 0.5 ? wrinkleStrength(uv0, du, dv, axis) : 1.0;
   foldAxis = axis;
+#elif defined(SHADING_ONLY)
+  // Lit per vertex, without the relief: the vertices bring no tangent and no texture
+  // coordinates (SurfaceMeshObject), and the lighting below needs the normal alone.
+  vec3 position = vertex.xyz;
+  vec3 n = normalize(normal);
+  vec3 tangent_u = vec3(0.0);
+  reliefUv = vec2(0.0);
+  reliefWeight = 1.0;
+  foldAxis = vec2(0.0);
 #else
   vec3 position = vertex.xyz;
   vec3 n = normalize(normal);
