@@ -100,32 +100,22 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& 
                                 " relief weights and " + std::to_string(fold_axis ? fold_axis->size() : vertices) +
                                 " fold axes");
   }
-  if (lit_per_vertex) {
-    if (!beginFilling(vertices, mesh.indices.size(), VertexAttributes::kShading)) return;
-    for (std::size_t v = 0; v < vertices; ++v) {
-      const Eigen::Vector3f& p = mesh.positions[v];
-      const Eigen::Vector3f& n = mesh.normals[v];
-      object_->position(p.x(), p.y(), p.z());
-      object_->normal(n.x(), n.y(), n.z());
-    }
-    addTriangles(mesh.indices, mesh, hidden_patches);
-    object_->end();
-    setBounds(bounds);
-    return;
-  }
-  const PatchCornerSplit* corners = texturing.corners;
-  checkTexturing(mesh, texturing);
+  // Lit per vertex, the relief is not drawn: no corner split, no texturing to check or send.
+  const PatchCornerSplit* corners = lit_per_vertex ? nullptr : texturing.corners;
+  if (!lit_per_vertex) checkTexturing(mesh, texturing);
   const std::vector<std::uint32_t>& indices = corners ? corners->indices : mesh.indices;
   const std::size_t count = corners ? corners->source.size() : vertices;
-  if (!beginFilling(count, indices.size(), VertexAttributes::kRelief)) return;
+  if (!beginFilling(count, indices.size(), lit_per_vertex ? VertexAttributes::kShading : VertexAttributes::kRelief))
+    return;
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint32_t v = corners ? corners->source[i] : static_cast<std::uint32_t>(i);
     const Eigen::Vector3f& p = mesh.positions[v];
     const Eigen::Vector3f& n = mesh.normals[v];
-    const Eigen::Vector3f& t = mesh.tangents_u[v];
-    const Eigen::Vector2f uv = reliefCoordinate(mesh, texturing, i);
     object_->position(p.x(), p.y(), p.z());
     object_->normal(n.x(), n.y(), n.z());
+    if (lit_per_vertex) continue;
+    const Eigen::Vector3f& t = mesh.tangents_u[v];
+    const Eigen::Vector2f uv = reliefCoordinate(mesh, texturing, i);
     object_->tangent(t.x(), t.y(), t.z());
     object_->textureCoord(uv.x(), uv.y());
     const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[v] : Eigen::Vector2f::Zero();
