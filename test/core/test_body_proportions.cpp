@@ -371,9 +371,11 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
 
 // Issue 39: another subject's walk, which nothing here was fitted on (CMU 07_01), meets the body
 // fit's goals as 02_01 does: every mapped joint within 2 cm mean and 5 cm max of the capture's FK,
-// and our skeleton on the unsmoothed retarget within 3 cm at worst. Measured: 1.06 / 3.81 cm and
-// 0.84 / 2.77 cm. With our chest turned as the capture's Spine alone (before its carried neck and
-// shoulders were fitted: CarriedJoints in mocap_retarget.cpp) 1.15 / 4.17 and 0.96 / 3.38 cm.
+// and our skeleton on the unsmoothed retarget within 3 cm at worst. fit_motion --order 6 reports
+// 0.52 / 3.95 cm and 0.09 / 0.41 cm, the neck 0.40 / 1.27 cm. With the chest turned to the carried neck and shoulders
+// as the capture's rest pose has them, not as it holds them while walking (carried_joints.h):
+// 1.05 / 4.11 and 0.84 / 2.77 cm, the neck 2.60 / 3.59 cm; with the chest turned as the capture's
+// Spine alone 1.15 / 4.17 and 0.96 / 3.38 cm.
 TEST(BodyProportions, AnotherCmuSubjectsWalkMeetsTheSameGoals) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   const FitAccuracy accuracy = fitCmuCapture(skeleton, loadBvhFile(kOtherCmuWalk), kOtherCmuWalk, true).accuracy;
@@ -381,10 +383,37 @@ TEST(BodyProportions, AnotherCmuSubjectsWalkMeetsTheSameGoals) {
               accuracy.against_capture.mean_cm, accuracy.against_capture.max_cm,
               accuracy.unsmoothed_against_capture.mean_cm, accuracy.unsmoothed_against_capture.max_cm,
               accuracy.stance_foot_height.mean_cm, accuracy.stance_foot_height.max_cm);
-  EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
-  EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    const PositionError& joint = accuracy.joint_against_capture[j];
+    ASSERT_GT(joint.samples, 0u) << humanJointNames()[j];
+    EXPECT_LE(joint.mean_cm, 2.0) << humanJointNames()[j];
+    EXPECT_LE(joint.max_cm, 5.0) << humanJointNames()[j];
+  }
   EXPECT_LE(accuracy.unsmoothed_against_capture.max_cm, 3.0);
   EXPECT_LT(accuracy.max_rms_degrees, 6.0);
+}
+
+// A capture that holds its neck bent all along (CMU's Neck joint, between the chest and the neck's
+// top that our neck joint maps to, turned 20 degrees about x on every frame: the top of the neck
+// about 3 cm from where the T-pose has it, relative to the shoulders). A chest turned to the T-pose's
+// layout cannot put neck and shoulders there (measured: 1.06 / 3.37 cm against 0.42 / 1.44 cm on
+// the plain walk); the fitted body holds them where the capture does: 0.15 / 0.65 against
+// 0.15 / 0.57 cm. Allowed: a tenth of what the bend moves the neck, on the worst frame.
+TEST(BodyProportions, ACaptureThatHoldsItsNeckBentIsFittedAsClosely) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
+  const BvhClip plain = loadBvhFile(kCmuWalk);
+  BvhClip bent = plain;
+  const BvhJoint& neck = bent.joints[static_cast<std::size_t>(bent.findJoint("Neck"))];
+  std::size_t x_channel = neck.first_channel;
+  while (neck.channels[x_channel - neck.first_channel] != BvhChannel::kXrotation) ++x_channel;
+  for (std::vector<double>& frame : bent.frames) frame[x_channel] -= 20.0;
+  const FitAccuracy plain_fit = fitCmuCapture(skeleton, plain, kCmuWalk, true).accuracy;
+  const FitAccuracy bent_fit = fitCmuCapture(skeleton, bent, kCmuWalk, true).accuracy;
+  std::printf("unsmoothed retarget: plain %.2f / %.2f cm, neck held bent %.2f / %.2f cm\n",
+              plain_fit.unsmoothed_against_capture.mean_cm, plain_fit.unsmoothed_against_capture.max_cm,
+              bent_fit.unsmoothed_against_capture.mean_cm, bent_fit.unsmoothed_against_capture.max_cm);
+  EXPECT_LE(bent_fit.unsmoothed_against_capture.max_cm, plain_fit.unsmoothed_against_capture.max_cm + 0.3);
+  EXPECT_LE(bent_fit.unsmoothed_against_capture.mean_cm, plain_fit.unsmoothed_against_capture.mean_cm + 0.05);
 }
 
 TEST(CaptureUnits, NamesNumbersAndImpossibleStaturesAreSaid) {

@@ -6,8 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include <Eigen/SVD>
-
+#include "dressed_human/core/motion/carried_joints.h"
 #include "dressed_human/core/motion/motion.h"
 
 namespace dressed_human {
@@ -35,72 +34,6 @@ RestPose ourRestPose(const Skeleton& skeleton) {
     rest.position[b] = pose.bone_in_world[b].translation;
   }
   return rest;
-}
-
-// The rotation Q that best takes the `rest` vectors onto the `now` ones (least squares, Wahba's
-// problem, by the SVD; a proper rotation).
-Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& rest, const std::vector<Eigen::Vector3d>& now) {
-  Eigen::Matrix3d correlation = Eigen::Matrix3d::Zero();
-  for (std::size_t k = 0; k < rest.size(); ++k) correlation += now[k] * rest[k].transpose();
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(correlation, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
-  sign(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-  return svd.matrixU() * sign * svd.matrixV().transpose();
-}
-
-// Our joints whose bone hangs (through fixed bones) from joint `j`'s bone.
-std::vector<std::size_t> childJoints(const Skeleton& skeleton, std::size_t j) {
-  std::vector<std::size_t> children;
-  const int bone = skeleton.joint(j).bone;
-  for (std::size_t k = 0; k < kJointCount; ++k) {
-    int parent = skeleton.bone(static_cast<std::size_t>(skeleton.joint(k).bone)).parent;
-    while (parent >= 0 && parent != bone && skeleton.bone(static_cast<std::size_t>(parent)).joint < 0) {
-      parent = skeleton.bone(static_cast<std::size_t>(parent)).parent;
-    }
-    if (parent == bone) children.push_back(k);
-  }
-  return children;
-}
-
-// A segment of ours that carries several joints the source reaches through joints we do not
-// have (our chest: CMU's Spine1, Neck and clavicles lie between its Spine and the neck and
-// shoulders) is turned every frame to put those joints, as a whole, where the source has them.
-struct CarriedJoints {
-  std::vector<std::size_t> source;       // the source joints
-  std::vector<Eigen::Vector3d> at_rest;  // from the segment's source joint, at rest, our axes
-};
-
-CarriedJoints carriedJoints(const BvhClip& clip, const BvhPose& source_rest, const BvhJointMap& map,
-                            const Skeleton& skeleton, std::size_t joint, std::size_t segment_source,
-                            const Eigen::Matrix3d& to_ours) {
-  std::vector<std::size_t> ends;
-  bool through_others = false;
-  for (const std::size_t k : childJoints(skeleton, joint)) {
-    if (map.joints[k].empty()) continue;
-    ends.push_back(static_cast<std::size_t>(clip.findJoint(map.joints[k])));
-    through_others = through_others || clip.joints[ends.back()].parent != static_cast<int>(segment_source);
-  }
-  CarriedJoints carried;
-  if (ends.size() < 2 || !through_others) return carried;
-  for (const std::size_t end : ends) {
-    const Eigen::Vector3d at_rest = to_ours * (source_rest.position[end] - source_rest.position[segment_source]);
-    if (at_rest.norm() < 1e-9) continue;
-    carried.source.push_back(end);
-    carried.at_rest.push_back(at_rest);
-  }
-  if (carried.source.size() < 2) carried = CarriedJoints();
-  return carried;
-}
-
-// The segment's world rotation in `pose` that puts its carried joints where the source has them
-// (their rest rotation is the identity: BVH rest poses carry no rotation).
-Eigen::Matrix3d carriedRotation(const CarriedJoints& carried, const BvhPose& pose, std::size_t segment_source,
-                                const Eigen::Matrix3d& to_ours, std::vector<Eigen::Vector3d>& scratch) {
-  scratch.clear();
-  for (const std::size_t end : carried.source) {
-    scratch.push_back(to_ours * (pose.position[end] - pose.position[segment_source]));
-  }
-  return bestRotation(carried.at_rest, scratch);
 }
 
 // Rest direction of a source segment: towards the middle of its children where it branches (an
@@ -220,7 +153,8 @@ void levelFloor(SampledMotion& motion) {
 // of the capture: our joints (FK with the fitted shape on the retargeted angles) and the
 // capture's, both relative to the source root, differ by a constant offset of our root in the
 // pelvis frame; it is the mean of their differences, turned into the body frame, over every
-// driven joint and frame (least squares).
+// driven joint and frame (least squares). The fitted body holds the carried joints where the
+// capture holds them (carried_joints.h).
 void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
                      const Eigen::Matrix3d& to_ours, std::size_t root,
                      const std::array<std::size_t, kJointCount>& source_joint, const std::string& units,
@@ -229,6 +163,7 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
   motion.proportions = fitBodyProportions(clip, map, skeleton, motion.units.metres_per_unit, motion.source);
   motion.body_fitted = true;
   const double metres = motion.units.metres_per_unit;
+  holdCarriedJoints(skeleton, metres, motion.held_joints, motion.source, motion.proportions.shape);
   const ForwardKinematics kinematics(skeleton, motion.proportions.shape);
   const std::size_t frames = clip.frames.size();
   std::vector<BvhPose> poses(frames);
@@ -486,6 +421,9 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
       map.joints[kHead].empty() ? motion.root_scale : skeletonStature(skeleton) / (source_high - source_low);
 
   const std::size_t frames = clip.frames.size();
+  std::vector<BvhPose> poses(frames);
+  for (std::size_t f = 0; f < frames; ++f) poses[f] = bvhForwardKinematics(clip, f);
+  holdPostures(poses, source_joint, to_ours, rest_offset, carried, motion.held_joints);
   motion.times.resize(frames);
   motion.angles.resize(frames);
   motion.root.resize(frames);
@@ -494,7 +432,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   std::array<const Eigen::Matrix3d*, kJointCount> target_pointer{};
   std::vector<Eigen::Vector3d> carried_now;
   for (std::size_t f = 0; f < frames; ++f) {
-    const BvhPose pose = bvhForwardKinematics(clip, f);
+    const BvhPose& pose = poses[f];
     motion.times[f] = static_cast<double>(f) * clip.frame_time;
     const Eigen::Matrix3d body = to_ours * pose.rotation[root] * to_ours.transpose();
     for (std::size_t j = 0; j < kJointCount; ++j) {

@@ -11,6 +11,7 @@
 // local rotation relative to our parent bone is split into our R_rest * Ry * Rx * Rz.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,11 @@ struct SampledMotion {
   // Our root's place relative to the source root, in our body frame (metres): the offset that puts
   // our joints nearest the capture's over the whole record (least squares), when body_fitted.
   Eigen::Vector3d root_offset = Eigen::Vector3d::Zero();
+  // Each joint that a segment of ours carries through joints we lack (our chest: the neck and
+  // shoulders; carried_joints.h): where the capture holds it over the record, in the carrying
+  // segment's frame, from its joint, source units; a fitted body's offsets put it there. Empty for
+  // other joints.
+  std::array<std::optional<Eigen::Vector3d>, kJointCount> held_joints;
 
   double frameTime() const { return times.size() > 1 ? times[1] - times[0] : 0.0; }
 };
