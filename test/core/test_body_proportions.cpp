@@ -474,6 +474,8 @@ BodyShape someShape(const Skeleton& skeleton) {
   shape.scale[boneIndex(skeleton, "l_pelvis")].z() = 1.3;
   shape.offset[boneIndex(skeleton, "l_pelvis")] = {0.03, 0.001, 0.015};
   shape.offset[boneIndex(skeleton, "r_clavicle")] = {-0.02, 0.0, -0.01};
+  // An articulated bone moves by the first joint of its three (a fitted neck held forward).
+  shape.offset[boneIndex(skeleton, "neck")] = {-0.015, 0.005, 0.001};
   return shape;
 }
 

@@ -133,10 +133,11 @@ std::string shapedUrdf(const std::string& urdf_xml, const BodyShape& shape) {
   };
   // A joint hanging from a bone sits at the bone's scaled offset (the bone's own a, b, c); the
   // joint that places a bone (its fixed joint, or the first of its three) moves by its offset.
+  // An articulated bone's link hangs from the last of its three joints, which stays at the origin.
   std::map<std::string, std::size_t> placed_by;
   for (std::size_t b = 0; b < kBoneCount; ++b) {
-    placed_by[std::string(humanBoneLayout()[b].name) + suffix] = b;
-    placed_by[std::string(humanBoneLayout()[b].name) + "_ry_link" + suffix] = b;
+    const BoneLayoutEntry& bone = humanBoneLayout()[b];
+    placed_by[std::string(bone.name) + (bone.articulated ? "_ry_link" : "") + suffix] = b;
   }
   for (tinyxml2::XMLElement* joint = robot->FirstChildElement("joint"); joint;
        joint = joint->NextSiblingElement("joint")) {
