@@ -392,7 +392,11 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
   }
   std::ostringstream text;
   if (sampled.body_fitted) {
-    text << "Body fitted from the rest pose (units: " << sampled.units.name << ", " << sampled.units.reason
+    text << "Body fitted from the rest pose"
+         << (sampled.rest_frame >= 0 ? " (the file's zero pose does not stand: frame " +
+                                           std::to_string(sampled.rest_frame + 1) + " is taken as the rest pose)"
+                                     : std::string())
+         << " (units: " << sampled.units.name << ", " << sampled.units.reason
          << "; limbs " << format(sampled.proportions.overall, 3) << "x ours).\n"
          << "Joint positions vs the capture's own FK (metres, every mapped joint and frame, root-relative): mean "
          << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2)

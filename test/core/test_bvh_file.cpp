@@ -31,6 +31,20 @@ std::string errorOf(const std::string& text) {
   return "(no error)";
 }
 
+// Position channels replace the offset, as Blender reads them: a joint whose file keys its
+// position (Bandai-Namco's rig keys every joint's, LAFAN1's root repeats its first place as its
+// OFFSET) stands where its channels say, not twice as far.
+TEST(BvhFile, PositionChannelsReplaceTheOffset) {
+  const std::string text =
+      "HIERARCHY\nROOT Hips\n{\n OFFSET 1 90 3\n CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation "
+      "Xrotation\n JOINT Spine\n {\n  OFFSET 0 10 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation "
+      "Yrotation Xrotation\n  End Site\n  {\n   OFFSET 0 5 0\n  }\n }\n}\nMOTION\nFrames: 1\nFrame Time: 0.01\n"
+      "-2 91 4 0 0 0 0 10 0 0 0 0\n";
+  const BvhPose pose = bvhForwardKinematics(parseBvh(text, "keyed.bvh"), 0);
+  EXPECT_LT((pose.position[0] - Eigen::Vector3d(-2, 91, 4)).norm(), 1e-12);
+  EXPECT_LT((pose.position[1] - Eigen::Vector3d(-2, 101, 4)).norm(), 1e-12);
+}
+
 TEST(BvhFile, CmuWalkReadsCompletely) {
   const BvhClip clip = loadBvhFile(kSource + "/data/motion/cmu_02_01_walk.bvh");
   EXPECT_EQ(clip.joints.size(), 31u);

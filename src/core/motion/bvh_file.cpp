@@ -234,10 +234,12 @@ Eigen::Matrix3d BvhClip::localRotation(std::size_t frame, std::size_t joint) con
 Eigen::Vector3d BvhClip::localTranslation(std::size_t frame, std::size_t joint) const {
   const BvhJoint& j = joints.at(joint);
   const std::vector<double>& values = frames.at(frame);
-  // Position channels add to the offset (the root's offset is zero in practically every file).
+  // Position channels replace the offset, as Blender's importer reads them: rigs that key every
+  // joint's position (Bandai-Namco's) repeat the offset there, and roots whose offset is their
+  // first frame's place (LAFAN1's) would otherwise stand twice as far off.
   Eigen::Vector3d translation = j.offset;
   for (std::size_t c = 0; c < j.channels.size(); ++c) {
-    if (!isRotation(j.channels[c])) translation[static_cast<int>(j.channels[c])] += values[j.first_channel + c];
+    if (!isRotation(j.channels[c])) translation[static_cast<int>(j.channels[c])] = values[j.first_channel + c];
   }
   return translation;
 }

@@ -167,12 +167,16 @@ const CoordinateJointMap& builtinOpenSimGaitMap() {
   return map;
 }
 
-void checkBvhJointMap(const BvhJointMap& map, const BvhClip& clip, const std::string& source_name) {
+void checkBvhJointNames(const BvhJointMap& map, const BvhClip& clip, const std::string& source_name) {
   const std::vector<std::string> missing = missingJoints(map, clip);
   if (!missing.empty()) {
     throw JointMapError(source_name + ": the " + map.name + " joint map needs joints this BVH does not have: " +
                         joinNames(missing) + " (give a joint map file with --map for other skeletons)");
   }
+}
+
+void checkBvhJointMap(const BvhJointMap& map, const BvhClip& clip, const std::string& source_name) {
+  checkBvhJointNames(map, clip, source_name);
   if (clip.joints.empty() || clip.joints[0].name != map.root) {
     throw JointMapError(source_name + ": the " + map.name + " joint map takes the pelvis from '" + map.root +
                         "', which must be the BVH root (the root is '" +
@@ -192,7 +196,7 @@ BvhJointMap chooseBvhJointMap(const BvhClip& clip, const std::string& source_nam
       best_missing = missing;
     }
   }
-  checkBvhJointMap(*best, clip, source_name);
+  checkBvhJointNames(*best, clip, source_name);  // the pelvis may hang below a still root (bvh_standing_rest.h)
   return *best;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "dressed_human/core/motion/bvh_standing_rest.h"
 #include "dressed_human/core/motion/carried_joints.h"
 #include "dressed_human/core/motion/motion.h"
 
@@ -344,8 +345,10 @@ double legScale(const BvhClip& clip, const BvhPose& source_rest, const BvhJointM
 
 }  // namespace
 
-SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
+SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, const Skeleton& skeleton,
                           const std::string& source_name, const RetargetOptions& options) {
+  const StandingRest standing = standingRest(file_clip, map, source_name);
+  const BvhClip& clip = standing.clip;
   checkBvhJointMap(map, clip, source_name);
   const BvhPose source_rest = bvhRestPose(clip);
   const RestPose our_rest = ourRestPose(skeleton);
@@ -362,6 +365,7 @@ SampledMotion retargetBvh(const BvhClip& clip, const BvhJointMap& map, const Ske
   std::array<CarriedJoints, kJointCount> carried;
   SampledMotion motion;
   motion.source = source_name;
+  motion.rest_frame = standing.rest_frame;
   for (std::size_t j = 0; j < kJointCount; ++j) {
     motion.driven[j] = !map.joints[j].empty();
     if (!motion.driven[j]) continue;

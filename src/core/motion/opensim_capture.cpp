@@ -159,7 +159,7 @@ BvhClip openSimMotionClip(const OpenSimModel& model, const OpenSimTable& table, 
       const Eigen::Vector3d yxz = decomposeYxz(local.linear());
       double* channel = &frame[kChannelsPerJoint * j];
       for (int k = 0; k < 3; ++k) {
-        channel[k] = moved[k];
+        channel[k] = local.translation()[k];  // position channels replace the offset (BvhClip::localTranslation)
         channel[3 + k] = yxz[k] * kRadiansToDegrees;
       }
       if (!moved.allFinite() || !yxz.allFinite() || moved.cwiseAbs().maxCoeff() > 1e4) {

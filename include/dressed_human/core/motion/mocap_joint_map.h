@@ -83,6 +83,8 @@ const CoordinateJointMap& builtinOpenSimGaitMap();
 // joints the best map needs but the clip does not have.
 BvhJointMap chooseBvhJointMap(const BvhClip& clip, const std::string& source_name);
 // Throws JointMapError naming every joint of the map missing in the clip.
+void checkBvhJointNames(const BvhJointMap& map, const BvhClip& clip, const std::string& source_name);
+// The same, and that the map's pelvis is the clip's root (standingRest lifts it there).
 void checkBvhJointMap(const BvhJointMap& map, const BvhClip& clip, const std::string& source_name);
 // Throws JointMapError naming every column of the map missing in the table.
 void checkCoordinateJointMap(const CoordinateJointMap& map, const OpenSimTable& table, const std::string& source_name);

@@ -63,6 +63,10 @@ struct SampledMotion {
   // other joints.
   std::array<std::optional<Eigen::Vector3d>, kJointCount> held_joints;
 
+  // The source frame taken as its rest pose where the file's zero pose does not stand
+  // (bvh_standing_rest.h); -1: the file's own.
+  int rest_frame = -1;
+
   double frameTime() const { return times.size() > 1 ? times[1] - times[0] : 0.0; }
 };
 
