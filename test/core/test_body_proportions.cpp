@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "bvh_test_support.h"
+#include "capture_fit_test_support.h"
 #include "dressed_human/core/io/text_file.h"
 #include "dressed_human/core/motion/body_proportions.h"
 #include "dressed_human/core/motion/capture_units.h"
@@ -313,26 +314,6 @@ TEST(BodyProportions, ARetargetOnTheFittedBodyPutsEveryJointWhereTheCaptureHasIt
   }
 }
 
-// A CMU capture retargeted (on its fitted body or on ours), fitted with the default options and
-// measured against the capture.
-struct FittedCapture {
-  SampledMotion sampled;
-  FitAccuracy accuracy;
-};
-
-FittedCapture fitCmuCapture(const Skeleton& skeleton, const BvhClip& clip, const std::string& path, bool fit_body) {
-  RetargetOptions options;
-  options.fit_body = fit_body;
-  FittedCapture fitted;
-  fitted.sampled = retargetBvh(clip, chooseBvhJointMap(clip, path), skeleton, path, options);
-  if (fit_body) {
-    EXPECT_EQ(fitted.sampled.units.name, "cmu") << path << ": " << fitted.sampled.units.reason;
-  }
-  const MotionFit fit = fitMotion(fitted.sampled, MotionFitOptions());
-  fitted.accuracy = measureFitAccuracy(skeleton, fitted.sampled, fit, fit.motion);
-  return fitted;
-}
-
 TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
   const BvhClip clip = loadBvhFile(kCmuWalk);
@@ -407,13 +388,8 @@ TEST(BodyProportions, ACaptureThatHoldsItsNeckBentIsFittedAsClosely) {
   std::size_t x_channel = neck.first_channel;
   while (neck.channels[x_channel - neck.first_channel] != BvhChannel::kXrotation) ++x_channel;
   for (std::vector<double>& frame : bent.frames) frame[x_channel] -= 20.0;
-  const FitAccuracy plain_fit = fitCmuCapture(skeleton, plain, kCmuWalk, true).accuracy;
-  const FitAccuracy bent_fit = fitCmuCapture(skeleton, bent, kCmuWalk, true).accuracy;
-  std::printf("unsmoothed retarget: plain %.2f / %.2f cm, neck held bent %.2f / %.2f cm\n",
-              plain_fit.unsmoothed_against_capture.mean_cm, plain_fit.unsmoothed_against_capture.max_cm,
-              bent_fit.unsmoothed_against_capture.mean_cm, bent_fit.unsmoothed_against_capture.max_cm);
-  EXPECT_LE(bent_fit.unsmoothed_against_capture.max_cm, plain_fit.unsmoothed_against_capture.max_cm + 0.3);
-  EXPECT_LE(bent_fit.unsmoothed_against_capture.mean_cm, plain_fit.unsmoothed_against_capture.mean_cm + 0.05);
+  expectUnsmoothedAsClose(fitCmuCapture(skeleton, plain, kCmuWalk, true).accuracy,
+                          fitCmuCapture(skeleton, bent, kCmuWalk, true).accuracy, "neck held bent", 0.3, 0.05);
 }
 
 TEST(CaptureUnits, NamesNumbersAndImpossibleStaturesAreSaid) {
