@@ -15,16 +15,6 @@ using namespace human_joint;  // NOLINT: the joint indices by name
 constexpr double kStandingCosine = 0.7;
 constexpr double kDegrees = 180.0 / M_PI;
 
-bool motionless(const BvhClip& clip, std::size_t joint) {
-  const BvhJoint& j = clip.joints[joint];
-  for (const std::vector<double>& frame : clip.frames) {
-    for (std::size_t c = 0; c < j.channels.size(); ++c) {
-      if (frame[j.first_channel + c] != clip.frames.front()[j.first_channel + c]) return false;
-    }
-  }
-  return true;
-}
-
 double upCosine(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
   const Eigen::Vector3d d = to - from;
   return d.norm() > 0.0 ? d.y() / d.norm() : -1.0;
@@ -114,14 +104,6 @@ StandingRest standingRest(const BvhClip& clip, const BvhJointMap& map, const std
   const int right_ankle = clip.findJoint(map.joints[kRightAnkle]);
   // Joints the map names but the clip lacks are the map check's to report.
   if (pelvis < 0 || clip.frames.empty()) return result;
-  for (int above = clip.joints[static_cast<std::size_t>(pelvis)].parent; above >= 0;
-       above = clip.joints[static_cast<std::size_t>(above)].parent) {
-    if (!motionless(clip, static_cast<std::size_t>(above))) {
-      throw JointMapError(source_name + ": the pelvis '" + map.root + "' hangs below '" +
-                          clip.joints[static_cast<std::size_t>(above)].name +
-                          "', which moves: the pelvis must be the BVH root or below joints that keep still");
-    }
-  }
   result.lifted = pelvis != 0;
   bool stands = true;
   std::size_t best_frame = 0;
