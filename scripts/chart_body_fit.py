@@ -4,9 +4,11 @@ own forward kinematics, in cm, against the Fourier order, on the fitted body and
 1.75 m body, with the angle residual in degrees; the feet in stance. Runs fit_motion's order sweep
 on the CMU walk, on another CMU subject's walk that nothing here was fitted on (07_01) and on
 OpenSim's tutorial gait cycle (on the gait2392 model) and writes the chart and the Markdown tables
-from those runs.
+from those runs. With BANDAI_MIRROR (a bare clone of BandaiNamcoResearchInc/
+Bandai-Namco-Research-Motiondataset, whose CC BY-NC-ND captures this repository does not carry),
+also every dataset-1 walk's first take: another lab's rig, fitted at fit_motion's default order.
 
-Usage: chart_body_fit.py FIT_MOTION [CAPTURE]
+Usage: [BANDAI_MIRROR=DIR] chart_body_fit.py FIT_MOTION [CAPTURE]
   writes docs/body_fit_accuracy.png, docs/body_fit_accuracy.md, docs/body_fit_sweep_cmu_02_01.csv,
   docs/body_fit_sweep_cmu_07_01.csv and docs/body_fit_sweep_opensim_gait2392.csv
 """
@@ -59,6 +61,49 @@ def reportLines(report):
                if line.strip().startswith(("Body fitted", "Lowest foot point"))]
     per_joint = [line.strip() for line in report.splitlines() if re.match(r"^ {4}[a-z_]+ +mean ", line)]
     return summary, per_joint
+
+
+BANDAI_WALKS = "dataset/Bandai-Namco-Research-Motiondataset-1/data/"
+
+
+def bandai_rows(tool, mirror):
+    """One Markdown row per dataset-1 walk (first take of each style) fitted from BANDAI_MIRROR."""
+    listing = subprocess.run(["git", "--git-dir", mirror, "ls-tree", "--name-only", "HEAD", BANDAI_WALKS],
+                             capture_output=True, text=True, check=True).stdout.split()
+    walks = sorted(p for p in listing if re.search(r"dataset-1_walk_[a-z-]+_001\.bvh$", p))
+    if not walks:
+        sys.stderr.write("%s: no dataset-1 walks under %s\n" % (mirror, BANDAI_WALKS))
+        sys.exit(1)
+    commit = subprocess.run(["git", "--git-dir", mirror, "rev-parse", "HEAD"], capture_output=True, text=True,
+                            check=True).stdout.strip()
+    rows = ["| walk | period, speed | joints: mean / max (cm) | worst joint (mean / max, cm) | "
+            "our skeleton on the unsmoothed retarget: mean / max (cm) | rest |", "|---|---|---|---|---|---|"]
+    with tempfile.TemporaryDirectory() as directory:
+        for walk in walks:
+            path = os.path.join(directory, os.path.basename(walk))
+            with open(path, "wb") as f:
+                f.write(subprocess.run(["git", "--git-dir", mirror, "show", "HEAD:" + walk], capture_output=True,
+                                       check=True).stdout)
+            run = subprocess.run([tool, path, "--urdf", os.path.join(ROOT, "urdf", "human.urdf"), "-o",
+                                  os.path.join(directory, "walk.yaml"), "-v"], capture_output=True, text=True, cwd=ROOT)
+            style = re.search(r"walk_([a-z-]+)_001", walk).group(1)
+            if run.returncode != 0:
+                reason = run.stderr.strip().splitlines()[-1].replace("fit_motion: %s: " % path, "")
+                rows.append("| %s | not fitted: %s | | | | |" % (style, reason))
+                continue
+            report = run.stderr
+            number = lambda pattern: re.search(pattern, report)
+            period = number(r"period ([0-9.]+) s")
+            speed = number(r"forward speed ([0-9.]+) m/s")
+            joints = number(r"root-relative\): mean ([0-9.]+) cm, max ([0-9.]+) cm")
+            floor = number(r"unsmoothed retarget vs the capture's FK: mean ([0-9.]+) cm, max ([0-9.]+) cm")
+            per_joint = re.findall(r"^ {4}([a-z_]+) +mean ([0-9.]+) cm, max ([0-9.]+) cm", report, re.M)
+            worst = max(per_joint, key=lambda j: float(j[2]))
+            rest = number(r"frame (\d+) is taken as the rest pose")
+            rows.append("| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s / %s | %s |" % (
+                style, period.group(1), speed.group(1), joints.group(1), joints.group(2), worst[0], worst[1],
+                worst[2], floor.group(1), floor.group(2), "frame %s" % rest.group(1) if rest else "zero pose"))
+    return rows, commit
 
 
 def main():
@@ -137,6 +182,15 @@ def main():
               "One cycle (`--period 1`); the reference is the model's own forward kinematics, knee translation included.",
               ""] + osim_summary + [""] + table(osim_rows)
     lines += ["", "Per joint at the order fit_motion chose by tolerance (fitted body):", "", "```"] + osim_per_joint + ["```", ""]
+    mirror = os.environ.get("BANDAI_MIRROR", "")
+    if mirror:
+        bandai, commit = bandai_rows(tool, mirror)
+        lines += ["## Bandai-Namco dataset-1 walks (BVH): another lab's rig, not fitted on", "",
+                  "BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @%s, every walk style's first take "
+                  "(CC BY-NC-ND 4.0, read from a clone, not carried here). Their pelvis hangs below a root joint "
+                  "and their zero pose is folded: fit_motion takes their most upright frame as the rest pose. "
+                  "Fitted at fit_motion's default tolerances, over every whole cycle of each take." % commit[:7], ""]
+        lines += bandai + [""]
     with open(os.path.join(DOCS, "body_fit_accuracy.md"), "w") as f:
         f.write("\n".join(lines))
     print("wrote %s, %s, %s, %s, %s" % (chart, os.path.join(DOCS, "body_fit_accuracy.md"), sweep_path, other_path,
