@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -17,6 +18,7 @@
 #include "capture_fit_test_support.h"
 #include "dressed_human/core/io/text_file.h"
 #include "dressed_human/core/motion/body_proportions.h"
+#include "dressed_human/core/motion/carried_joints.h"
 #include "dressed_human/core/motion/capture_units.h"
 #include "dressed_human/core/motion/fit_accuracy.h"
 #include "dressed_human/core/motion/mocap_retarget.h"
@@ -390,6 +392,24 @@ TEST(BodyProportions, ACaptureThatHoldsItsNeckBentIsFittedAsClosely) {
   for (std::vector<double>& frame : bent.frames) frame[x_channel] -= 20.0;
   expectUnsmoothedAsClose(fitCmuCapture(skeleton, plain, kCmuWalk, true).accuracy,
                           fitCmuCapture(skeleton, bent, kCmuWalk, true).accuracy, "neck held bent", 0.3, 0.05);
+}
+
+// A held joint no person's body reaches (a wrong joint map, a unit off by 100) is refused by name,
+// not written as an offset the URDF and the skeleton would then refuse with less to go on.
+TEST(BodyProportions, AHeldJointBeyondAnyBodyIsRefused) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kUrdfPath);
+  std::array<std::optional<Eigen::Vector3d>, kJointCount> held;
+  held[static_cast<std::size_t>(human_joint::kNeck)] = Eigen::Vector3d(0.5, 0.0, 0.2);  // m at 1 m a unit
+  BodyShape shape;
+  try {
+    holdCarriedJoints(skeleton, 1.0, held, "far.bvh", shape);
+    FAIL() << "a neck held half a metre off was taken";
+  } catch (const MotionError& error) {
+    EXPECT_NE(std::string(error.what()).find("far.bvh: the capture holds the joint it maps to our neck"),
+              std::string::npos)
+        << error.what();
+  }
+  EXPECT_TRUE(shape.offset[boneIndex(skeleton, "neck")].isZero());  // nothing half-written
 }
 
 TEST(CaptureUnits, NamesNumbersAndImpossibleStaturesAreSaid) {

@@ -6,6 +6,8 @@
 #include <map>
 #include <vector>
 
+#include "dressed_human/core/motion/mocap_retarget.h"
+
 namespace dressed_human {
 namespace {
 
@@ -13,7 +15,7 @@ using namespace human_joint;  // NOLINT: the joint indices by name
 
 // A segment stands when it is within 45 degrees of the vertical (BVH is Y-up).
 constexpr double kStandingCosine = 0.7;
-constexpr double kDegrees = 180.0 / M_PI;
+constexpr double kDegrees = 180.0 / M_PI;  // BVH angles are degrees
 
 double upCosine(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
   const Eigen::Vector3d d = to - from;
@@ -27,14 +29,6 @@ double uprightness(const BvhPose& pose, std::size_t pelvis, std::size_t head, st
   const std::vector<Eigen::Vector3d>& p = pose.position;
   return std::min({upCosine(p[pelvis], p[head]), upCosine(p[left_ankle], p[pelvis]),
                    upCosine(p[right_ankle], p[pelvis])});
-}
-
-// R = Rz(z) Ry(y) Rx(x) -> (z, y, x) in degrees; at gimbal lock x = 0.
-Eigen::Vector3d decomposeZyxDegrees(const Eigen::Matrix3d& r) {
-  const double cos_y = std::hypot(r(2, 1), r(2, 2));
-  const double y = std::atan2(-r(2, 0), cos_y);
-  if (cos_y < 1e-8) return Eigen::Vector3d(std::atan2(-r(0, 1), r(1, 1)), y, 0.0) * kDegrees;
-  return Eigen::Vector3d(std::atan2(r(1, 0), r(0, 0)), y, std::atan2(r(2, 1), r(2, 2))) * kDegrees;
 }
 
 bool hasPositionChannels(const BvhJoint& joint) {
@@ -65,7 +59,7 @@ BvhClip bvhOnZeroPose(const BvhClip& clip, std::size_t root, const std::vector<E
     if (i == 0 || hasPositionChannels(old)) {
       joint.channels = {BvhChannel::kXposition, BvhChannel::kYposition, BvhChannel::kZposition};
     }
-    for (const BvhChannel c : {BvhChannel::kZrotation, BvhChannel::kYrotation, BvhChannel::kXrotation}) {
+    for (const BvhChannel c : {BvhChannel::kYrotation, BvhChannel::kXrotation, BvhChannel::kZrotation}) {
       joint.channels.push_back(c);
     }
     joint.first_channel = out.channel_count;
@@ -89,8 +83,8 @@ BvhClip bvhOnZeroPose(const BvhClip& clip, std::size_t root, const std::vector<E
         translation = rest[parent] * clip.localTranslation(f, old);
       }
       if (out.joints[i].channels.size() == 6) values.insert(values.end(), translation.data(), translation.data() + 3);
-      const Eigen::Vector3d zyx = decomposeZyxDegrees(local);
-      values.insert(values.end(), zyx.data(), zyx.data() + 3);
+      const Eigen::Vector3d yxz = decomposeYxz(local) * kDegrees;  // the channels' order
+      values.insert(values.end(), yxz.data(), yxz.data() + 3);
     }
   }
   return out;

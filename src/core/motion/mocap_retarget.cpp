@@ -156,8 +156,8 @@ void levelFloor(SampledMotion& motion) {
 // pelvis frame; it is the mean of their differences, turned into the body frame, over every
 // driven joint and frame (least squares). The fitted body holds the carried joints where the
 // capture holds them (carried_joints.h).
-void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton& skeleton,
-                     const Eigen::Matrix3d& to_ours, std::size_t root,
+void placeFittedBody(const BvhClip& clip, const std::vector<BvhPose>& poses, const BvhJointMap& map,
+                     const Skeleton& skeleton, const Eigen::Matrix3d& to_ours, std::size_t root,
                      const std::array<std::size_t, kJointCount>& source_joint, const std::string& units,
                      SampledMotion& motion) {
   motion.units = units.empty() ? detectBvhUnits(clip, motion.source) : unitsByName(units);
@@ -167,12 +167,10 @@ void placeFittedBody(const BvhClip& clip, const BvhJointMap& map, const Skeleton
   holdCarriedJoints(skeleton, metres, motion.held_joints, motion.source, motion.proportions.shape);
   const ForwardKinematics kinematics(skeleton, motion.proportions.shape);
   const std::size_t frames = clip.frames.size();
-  std::vector<BvhPose> poses(frames);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   std::size_t count = 0;
   SkeletonPose ours;
   for (std::size_t f = 0; f < frames; ++f) {
-    poses[f] = bvhForwardKinematics(clip, f);
     RigidTransform body;
     body.rotation = motion.root[f].rotation;
     kinematics.compute(body, motion.angles[f], ours);
@@ -459,7 +457,7 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
     motion.root[f].translation = position;
     motion.root[f].rotation = Eigen::Quaterniond(body).normalized();
   }
-  if (options.fit_body) placeFittedBody(clip, map, skeleton, to_ours, root, source_joint, options.units, motion);
+  if (options.fit_body) placeFittedBody(clip, poses, map, skeleton, to_ours, root, source_joint, options.units, motion);
   return motion;
 }
 

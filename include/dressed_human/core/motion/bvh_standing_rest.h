@@ -15,13 +15,13 @@
 namespace dressed_human {
 
 struct StandingRest {
-  BvhClip clip;       // the pelvis (map.root) its root; every joint's rotation channels Z Y X
+  BvhClip clip;       // the pelvis (map.root) its root; every joint's rotation channels Y X Z
   bool lifted = false;   // the pelvis had joints above it, now dropped (their motion is the pelvis's)
   int rest_frame = -1;   // the frame the zero pose is now; -1: the file's own zero pose stands
 };
 
 // `clip`'s subtree at `root`, re-expressed on the zero pose whose world rotations are `rest` (one per
-// joint of `clip`): `root` the new root, every joint's rotation channels Z Y X, offsets and end sites
+// joint of `clip`): `root` the new root, every joint's rotation channels Y X Z, offsets and end sites
 // turned with their joint's rest, and every frame's world poses those of `clip` (rotations times
 // the joint's rest inverse).
 BvhClip bvhOnZeroPose(const BvhClip& clip, std::size_t root, const std::vector<Eigen::Matrix3d>& rest);
