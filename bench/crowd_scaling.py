@@ -14,9 +14,9 @@ a screenshot when its measurement starts and one when it ends and fails unless e
 N figures is drawn in both (rviz_scaling.drawn): at least MIN_BOX_SHARE of the box its place projects to (0.6 m wide
 across the row, where neighbours stand 1 m apart; rows far enough apart that no box overlaps the
 next row's on screen) covered by figure pixels. rviz CPU per human
-per frame = (rviz CPU per frame - rviz drawing only its grid while the same publisher runs) / N,
-each subject against its own publisher's grid. The crowd publisher's own CPU is measured while
-ours are.
+per frame = (rviz CPU per frame - rviz drawing only its grid) / N, the grid's cost the median of
+every grid run at that N, each measured while one subject's publisher runs (ours and the peer's
+alike). The crowd publisher's own CPU is measured while ours are.
 
 Memory: `roslaunch dressed_human crowd.launch count:=40`, as a user starts it (rviz's default
 anti-aliasing, as in the harness, which does not disable it), on its own virtual X server for
@@ -125,12 +125,11 @@ def measure_ours(count, distances, args, shots, directory, env):
                 cpu_start, wall_start = cpu_seconds(publisher.pid), time.time()
                 point = measure(OURS, count, distance, args, shots, env)
                 publisher_cpu.append(100.0 * (cpu_seconds(publisher.pid) - cpu_start) / (time.time() - wall_start))
-                point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
                 point["grid_ms"] = grid["cpu_ms_per_frame"]
                 runs[distance].append(point)
     finally:
         stop(publisher)
-    return {d: summary(points, max(publisher_cpu)) for d, points in runs.items()}
+    return runs, max(publisher_cpu)
 
 
 def measure_peer(count, distances, args, shots, env):
@@ -147,18 +146,22 @@ def measure_peer(count, distances, args, shots, env):
                               env_script=env_script)
             for distance in distances:
                 point = measure(PEER, count, distance, args, shots, env, env_script)
-                point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid["cpu_ms_per_frame"]) / count
                 point["grid_ms"] = grid["cpu_ms_per_frame"]
                 runs[distance].append(point)
     finally:
         stop(publisher)
-    return {d: summary(points, -1.0) for d, points in runs.items()}
+    return runs
 
 
-def summary(points, publisher_cpu):
-    """The repetitions of one point: medians, the per-human cost's range, the fewest drawn."""
+def summary(points, count, grid_ms, publisher_cpu):
+    """The repetitions of one point: medians, the per-human cost against `grid_ms` and its range,
+    the fewest drawn."""
+    for point in points:
+        point["per_human_ms"] = (point["cpu_ms_per_frame"] - grid_ms) / count
     median = lambda key: float(numpy.median([p[key] for p in points]))  # noqa: E731
-    result = {key: median(key) for key in ("fps", "cpu_percent", "cpu_ms_per_frame", "grid_ms", "per_human_ms")}
+    result = {key: median(key) for key in ("fps", "cpu_percent", "cpu_ms_per_frame", "per_human_ms")}
+    result["grid_ms"] = grid_ms
+    result["grid_range"] = (min(p["grid_ms"] for p in points), max(p["grid_ms"] for p in points))
     result["per_human_range"] = (min(p["per_human_ms"] for p in points), max(p["per_human_ms"] for p in points))
     result["fps_range"] = (min(p["fps"] for p in points), max(p["fps"] for p in points))
     result["drawn"] = min(p["drawn"] for p in points)
@@ -289,7 +292,7 @@ def memory_growth(samples, from_s, to_s):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--seconds", type=float, default=15.0)
-    parser.add_argument("--repeats", type=int, default=2, help="runs per point, each against its own grid run")
+    parser.add_argument("--repeats", type=int, default=2, help="runs per point, each after a grid run")
     parser.add_argument("--points", nargs="+", default=DEFAULT_POINTS, help="COUNT@DISTANCE ...")
     parser.add_argument("--peer-workspace", default="")
     parser.add_argument("--memory-minutes", type=float, default=5.0, help="0: no memory run")
@@ -315,11 +318,18 @@ def main():
             master.setParam("/robot_description", f.read())
         for count in sorted(set(n for n, _ in points)):
             distances = [d for n, d in points if n == count]
-            for distance, point in measure_ours(count, distances, args, shots, directory, env).items():
-                results[(OURS[0], count, distance)] = point
-            if args.peer_workspace:
-                for distance, point in measure_peer(count, distances, args, shots, env).items():
-                    results[(PEER[0], count, distance)] = point
+            ours, publisher_cpu = measure_ours(count, distances, args, shots, directory, env)
+            peer = measure_peer(count, distances, args, shots, env) if args.peer_workspace else {}
+            # One baseline for both subjects: rviz drawing its grid measured alike with either
+            # publisher running (10.5-11.3 ms against 11.0-11.4 ms, 4 runs each, 10 humans), while
+            # single grid runs of one evaluation differed by 4 ms: subtracting each subject's own
+            # grid run moved its per-human cost by up to 0.4 ms at 10 humans.
+            grids = [run["grid_ms"] for subject in (ours, peer) for runs in subject.values() for run in runs]
+            grid_ms = float(numpy.median(grids))
+            for distance, runs in ours.items():
+                results[(OURS[0], count, distance)] = summary(runs, count, grid_ms, publisher_cpu)
+            for distance, runs in peer.items():
+                results[(PEER[0], count, distance)] = summary(runs, count, grid_ms, -1.0)
         if args.memory_minutes > 0:
             memory = measure_memory(args.memory_count, args.memory_minutes, shots, env)
     finally:
@@ -327,8 +337,8 @@ def main():
             stop(process)
 
     failed = ["%s x %d at %g m" % key for key, p in results.items() if p["drawn"] < key[1]]
-    lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per frame (grid with the same "
-             "publisher) | rviz CPU per human per frame (range) | crowd_publisher CPU (most) |",
+    lines = ["| humans | distance | display | drawn | fps | rviz CPU | rviz CPU per frame (grid: median of both "
+             "subjects' runs; this subject's) | rviz CPU per human per frame (range) | crowd_publisher CPU (most) |",
              "|---|---|---|---|---|---|---|---|---|"]
     rows = ["display,humans,distance_m,drawn,fps,cpu_percent,cpu_ms_per_frame,grid_ms,per_human_ms,publisher_cpu,"
             "screenshot"]
@@ -340,15 +350,17 @@ def main():
             drawn_text = "%d/%d" % (p["drawn"], count) + ("" if p["drawn"] == count else " **FAILED**")
             publisher = "%.1f %%" % p["publisher_cpu"] if p["publisher_cpu"] >= 0 else "—"
             fps_text = "%.1f" % p["fps"] + ("" if p["fps_range"][1] - p["fps_range"][0] < 0.5 else " (%.1f–%.1f)" % p["fps_range"])
-            lines.append("| %d | %g m | %s | %s | %s | %.0f %% | %.1f ms (%.1f ms) | %.2f ms (%.2f–%.2f) | %s |" % (
+            lines.append("| %d | %g m | %s | %s | %s | %.0f %% | %.1f ms (%.1f ms; %.1f–%.1f) | %.2f ms (%.2f–%.2f) | %s |" % (
                 count, distance, label, drawn_text, fps_text, p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
-                p["per_human_ms"], p["per_human_range"][0], p["per_human_range"][1], publisher))
+                p["grid_range"][0], p["grid_range"][1], p["per_human_ms"], p["per_human_range"][0], p["per_human_range"][1], publisher))
             rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%.1f,%s" % (
                 label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
                 p["per_human_ms"], p["publisher_cpu"], p["screenshot"]))
     lines.append("")
-    lines.append("Medians of %d runs per point, each run's per-human cost against its own grid run (the range: "
-                 "lowest and highest run). " % args.repeats +
+    lines.append("Medians of %d runs per point; rviz CPU per human per frame = (rviz CPU per frame - the grid's) / N, "
+                 "the grid's the median of every grid run at that N, ours and the peer's (each run measures rviz drawing "
+                 "only its grid while that subject's publisher runs: the grid column shows that median and, in brackets, "
+                 "the lowest and highest of the subject's own grid runs); the range: lowest and highest run. " % args.repeats +
                  "Humans on treadmills (1.2 m/s) in rows of %d (at most %d rows: longer rows beyond %d humans), 1 m apart, rows %g m apart, the distance from the camera to "
                  "the middle of the nearest row (the others farther off); one message for all at "
                  "%g Hz (ours: crowd_publisher's dressed_human/Crowd, with each root frame on /tf; the peer: "
