@@ -80,6 +80,42 @@ def inner(mask):
     return core
 
 
+def crease_sharpness(change, garment):
+    """Mean |Laplacian| of the luminance change over its mean |change|, on the garment pixels
+    where it is 1 grey level or more (None below 50 such pixels), and those pixels."""
+    laplacian = numpy.zeros_like(change)
+    laplacian[1:-1, 1:-1] = (4.0 * change[1:-1, 1:-1] - change[:-2, 1:-1] - change[2:, 1:-1] - change[1:-1, :-2] -
+                             change[1:-1, 2:])
+    shown = garment & (numpy.abs(change) >= 1.0)
+    sharpness = float(numpy.abs(laplacian[shown]).mean() / numpy.abs(change[shown]).mean()) if shown.sum() >= 50 else None
+    return sharpness, shown
+
+
+def screenshot_floor(flat, change, shown, garment):
+    """The crease sharpness of a perfectly smooth fold as the two 8-bit screenshots show it: a
+    sinusoid of the folds' own period, direction and mean |change|, added to the flat shot's
+    colours over its garment pixels and rounded to grey levels as rviz's screenshot rounds them.
+    Rounding alone puts steps of one grey level into a smooth change of a few levels, and the
+    Laplacian counts every step: at 25 px and a mean |change| of 5 levels such a fold measures
+    about 0.26, at 10 levels about 0.15 (test/tools/test_crease_sharpness.py), far above
+    (2 pi / period)^2 = 0.06."""
+    rows, columns = numpy.nonzero(shown)
+    window = numpy.where(shown, change, 0.0)[rows.min():rows.max() + 1, columns.min():columns.max() + 1]
+    power = numpy.abs(numpy.fft.fft2(window - window.mean())) ** 2
+    fy = numpy.fft.fftfreq(window.shape[0])[:, None] + numpy.zeros((1, window.shape[1]))
+    fx = numpy.fft.fftfreq(window.shape[1])[None, :] + numpy.zeros((window.shape[0], 1))
+    frequency = numpy.hypot(fy, fx)
+    power[(frequency < 1.0 / 60.0) | (frequency > 1.0 / 3.0)] = 0.0
+    peak = numpy.argmax(power)
+    y, x = numpy.mgrid[0:change.shape[0], 0:change.shape[1]].astype(float)
+    amplitude = 0.5 * numpy.pi * numpy.abs(change[shown]).mean()  # a sinusoid's mean |value| is 2 / pi of its peak
+    fold = amplitude * numpy.sin(2.0 * numpy.pi * (fy.flat[peak] * y + fx.flat[peak] * x))
+    luminance = numpy.maximum(flat @ LUMINANCE, 1.0)
+    smooth = numpy.clip(numpy.round(flat + (fold / luminance)[:, :, None] * flat), 0.0, 255.0)
+    sharpness, _ = crease_sharpness(numpy.where(garment, (smooth - flat) @ LUMINANCE, 0.0), garment)
+    return sharpness
+
+
 def measure(relief, flat):
     cloth_a, skin_a = classes(relief)
     cloth_b, skin_b = classes(flat)
@@ -89,15 +125,11 @@ def measure(relief, flat):
            "skin_change": float(difference[skin].mean()) if skin.any() else None,
            "garment_change": float(difference[cloth].mean()) if cloth.any() else None}
     change = (relief - flat) @ LUMINANCE
-    laplacian = numpy.zeros_like(change)
-    laplacian[1:-1, 1:-1] = (4.0 * change[1:-1, 1:-1] - change[:-2, 1:-1] - change[2:, 1:-1] - change[1:-1, :-2] -
-                             change[1:-1, 2:])
     garment = inner(cloth)
-    shown = garment & (numpy.abs(change) >= 1.0)
-    row["crease_sharpness"] = (float(numpy.abs(laplacian[shown]).mean() / numpy.abs(change[shown]).mean())
-                               if shown.sum() >= 50 else None)
+    row["crease_sharpness"], shown = crease_sharpness(change, garment)
     row["fold_coverage"] = float(shown.sum() / garment.sum()) if garment.any() else None
     row["fold_period_px"] = fold_period(change, shown) if shown.sum() >= 50 else None
+    row["screenshot_floor"] = screenshot_floor(flat, change, shown, garment) if shown.sum() >= 50 else None
     return row, skin | cloth
 
 
@@ -205,7 +237,8 @@ def main():
         return "-" if value is None else form % value
 
     lines = ["| view | build | skin pixels | skin: relief - flat | garment pixels | garments: relief - flat | "
-             "fold pixels (share) | crease sharpness | fold period (its floor) | rviz CPU ms/frame, relief (flat) |",
+             "fold pixels (share) | crease sharpness (8-bit floor) | fold period (its floor) | "
+             "rviz CPU ms/frame, relief (flat) |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
         period = row["fold_period_px"]
@@ -213,7 +246,9 @@ def main():
         lines.append("| %s | %s | %d | %s | %d | %s | %s | %s | %s | %.1f (%.1f) |" % (
             row["view"], row["build"], row["skin_pixels"], number(row["skin_change"], "%.2f"), row["garment_pixels"],
             number(row["garment_change"], "%.2f"), number(row["fold_coverage"] and 100 * row["fold_coverage"], "%.1f %%"),
-            number(row["crease_sharpness"], "%.2f"), floor, row["relief_cpu_ms"], row["flat_cpu_ms"]))
+            number(row["crease_sharpness"], "%.2f") + ("" if row["screenshot_floor"] is None else
+                                                       " (%.2f)" % row["screenshot_floor"]),
+            floor, row["relief_cpu_ms"], row["flat_cpu_ms"]))
     lines.append("")
     lines.append("One human frozen at phase %g of walk.yaml (mode replay, speed 0), an orbit view of the named frame "
                  "in a 1000 x 700 panel, Mesa llvmpipe, default properties. 'relief - flat': mean of the largest "
@@ -221,7 +256,7 @@ def main():
                  "(garment) in both (grey levels). Fold pixels: inner garment pixels whose luminance the relief "
                  "changes by 1 grey level or more, and their share of the inner garment pixels. Crease sharpness: "
                  "mean |Laplacian| of that luminance change over its mean |change| on the fold pixels (soft folds "
-                 "low, creases high). Fold period: the strongest spatial frequency of that change on screen; in brackets "
+                 "low, creases high); in brackets what a perfectly smooth fold of the folds' own period, direction and mean |change| measures once both 8-bit screenshots round it to grey levels (steps of one level are what the Laplacian sees in a smooth change of a few levels): the floor the screenshots put under it. Fold period: the strongest spatial frequency of that change on screen; in brackets "
                  "(2 pi / period)^2, what a perfectly smooth fold of that period measures as crease sharpness, the "
                  "floor for folds of that size however soft. rviz CPU ms/frame: rviz's process CPU time per drawn frame over the %d s of each "
                  "shot, with the relief and with 'Relief: Flat'. `bench/relief_distance.py`%s." %
