@@ -718,8 +718,9 @@ humans publishing that differ only in what rviz draws:
 `bench/crowd_scaling.py`: one `crowd_publisher` walks every human (on treadmills, in the rows
 above) and publishes one `dressed_human/Crowd` message for all at 30 Hz; one DressedHuman display
 draws them (`Humans: From Topic`). The peer, spencer's TrackedPersons display with its walking-man
-meshes, gets one TrackedPersons message for all persons at the same rate and places. Each subject's
-per-human cost is counted against rviz drawing only its grid while that subject's publisher runs.
+meshes, gets one TrackedPersons message for all persons at the same rate and places. Both subjects'
+per-human costs are counted against one baseline per crowd size: the median of every run of rviz
+drawing only its grid at that size, each with one subject's publisher running.
 Then rviz's resident memory over minutes with the shipped `crowd.launch count:=40`.
 
 {crowd_scaling}
