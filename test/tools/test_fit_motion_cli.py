@@ -21,6 +21,32 @@ def run(*arguments):
     return result.returncode, result.stderr
 
 
+class ShippedMotionsSayHowToFitThemAgain(unittest.TestCase):
+    """Each shipped motion written by fit_motion records its command in its header. fit_motion
+    fits the person's body unless told --body default, and the node refuses a fitted-body motion
+    on the plain URDF: a command that would make the other kind of file does not reproduce it."""
+
+    def test_the_recorded_command_makes_a_motion_of_the_same_kind(self):
+        folder = os.path.join(ROOT, "config", "motions")
+        checked = 0
+        for name in sorted(os.listdir(folder)):
+            with open(os.path.join(folder, name)) as f:
+                text = f.read()
+            lines = text.splitlines()
+            if len(lines) < 2 or not lines[0].startswith("# Fitted to motion capture by:"):
+                continue
+            command = lines[1].lstrip("# ").split()
+            self.assertEqual(command[0], "fit_motion", name)
+            default_body = any(a == "--body" and b == "default" for a, b in zip(command, command[1:]))
+            fitted_body = "\nbody_shape:" in text
+            self.assertNotEqual(default_body, fitted_body,
+                                "%s: %s, but its command %s --body default" % (
+                                    name, "has a fitted body_shape" if fitted_body else "has no body_shape",
+                                    "passes" if default_body else "lacks"))
+            checked += 1
+        self.assertGreaterEqual(checked, 2)
+
+
 class FitMotionRefusesAbsurdInput(unittest.TestCase):
     def assertRefused(self, expected_message, *arguments):
         code, stderr = run(*arguments)
