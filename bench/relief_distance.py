@@ -91,25 +91,17 @@ def crease_sharpness(change, garment):
     return sharpness, shown
 
 
-def screenshot_floor(flat, change, shown, garment):
+def screenshot_floor(flat, change, shown, garment, frequency):
     """The crease sharpness of a perfectly smooth fold as the two 8-bit screenshots show it: a
-    sinusoid of the folds' own period, direction and mean |change|, added to the flat shot's
+    sinusoid of the folds' own frequency (fold_frequency) and mean |change|, added to the flat shot's
     colours over its garment pixels and rounded to grey levels as rviz's screenshot rounds them.
     Rounding alone puts steps of one grey level into a smooth change of a few levels, and the
     Laplacian counts every step: at 25 px and a mean |change| of 5 levels such a fold measures
     about 0.26, at 10 levels about 0.15 (test/tools/test_crease_sharpness.py), far above
     (2 pi / period)^2 = 0.06."""
-    rows, columns = numpy.nonzero(shown)
-    window = numpy.where(shown, change, 0.0)[rows.min():rows.max() + 1, columns.min():columns.max() + 1]
-    power = numpy.abs(numpy.fft.fft2(window - window.mean())) ** 2
-    fy = numpy.fft.fftfreq(window.shape[0])[:, None] + numpy.zeros((1, window.shape[1]))
-    fx = numpy.fft.fftfreq(window.shape[1])[None, :] + numpy.zeros((window.shape[0], 1))
-    frequency = numpy.hypot(fy, fx)
-    power[(frequency < 1.0 / 60.0) | (frequency > 1.0 / 3.0)] = 0.0
-    peak = numpy.argmax(power)
     y, x = numpy.mgrid[0:change.shape[0], 0:change.shape[1]].astype(float)
     amplitude = 0.5 * numpy.pi * numpy.abs(change[shown]).mean()  # a sinusoid's mean |value| is 2 / pi of its peak
-    fold = amplitude * numpy.sin(2.0 * numpy.pi * (fy.flat[peak] * y + fx.flat[peak] * x))
+    fold = amplitude * numpy.sin(2.0 * numpy.pi * (frequency[0] * y + frequency[1] * x))
     luminance = numpy.maximum(flat @ LUMINANCE, 1.0)
     smooth = numpy.clip(numpy.round(flat + (fold / luminance)[:, :, None] * flat), 0.0, 255.0)
     sharpness, _ = crease_sharpness(numpy.where(garment, (smooth - flat) @ LUMINANCE, 0.0), garment)
@@ -128,24 +120,28 @@ def measure(relief, flat):
     garment = inner(cloth)
     row["crease_sharpness"], shown = crease_sharpness(change, garment)
     row["fold_coverage"] = float(shown.sum() / garment.sum()) if garment.any() else None
-    row["fold_period_px"] = fold_period(change, shown) if shown.sum() >= 50 else None
-    row["screenshot_floor"] = screenshot_floor(flat, change, shown, garment) if shown.sum() >= 50 else None
+    row["fold_period_px"] = row["screenshot_floor"] = None
+    if shown.sum() >= 50:
+        frequency = fold_frequency(change, shown)
+        row["fold_period_px"] = 1.0 / float(numpy.hypot(*frequency))
+        row["screenshot_floor"] = screenshot_floor(flat, change, shown, garment, frequency)
     return row, skin | cloth
 
 
-def fold_period(change, shown):
-    """The folds' dominant period on screen (pixels): the strongest spatial frequency of the
-    luminance change over the fold pixels' bounding box (periods from 3 to 60 pixels). A perfectly
-    smooth fold of period p measures (2 pi / p)^2 on the crease sharpness: the floor for folds of
-    that size, however soft."""
+def fold_frequency(change, shown):
+    """The folds' dominant spatial frequency on screen (cycles per pixel, down and across): the
+    strongest of the luminance change over the fold pixels' bounding box (periods from 3 to 60
+    pixels). A perfectly smooth fold of period p measures (2 pi / p)^2 on the crease sharpness:
+    the floor for folds of that size, however soft."""
     rows, columns = numpy.nonzero(shown)
     window = numpy.where(shown, change, 0.0)[rows.min():rows.max() + 1, columns.min():columns.max() + 1]
     power = numpy.abs(numpy.fft.fft2(window - window.mean())) ** 2
-    fy = numpy.fft.fftfreq(window.shape[0])[:, None]
-    fx = numpy.fft.fftfreq(window.shape[1])[None, :]
+    fy = numpy.fft.fftfreq(window.shape[0])[:, None] + numpy.zeros((1, window.shape[1]))
+    fx = numpy.fft.fftfreq(window.shape[1])[None, :] + numpy.zeros((window.shape[0], 1))
     frequency = numpy.hypot(fy, fx)
     power[(frequency < 1.0 / 60.0) | (frequency > 1.0 / 3.0)] = 0.0
-    return float(1.0 / frequency.flat[numpy.argmax(power)])
+    peak = numpy.argmax(power)
+    return float(fy.flat[peak]), float(fx.flat[peak])
 
 
 def crop(image, mask, size):

@@ -39,8 +39,9 @@ class CreaseSharpness(unittest.TestCase):
     def measured(self, wave, amplitude):
         change, garment, flat = shots(wave, amplitude)
         sharpness, shown = rd.crease_sharpness(change, garment)
-        self.assertAlmostEqual(rd.fold_period(change, shown), PERIOD, delta=1.0)
-        return sharpness, rd.screenshot_floor(flat, change, shown, garment)
+        frequency = rd.fold_frequency(change, shown)
+        self.assertAlmostEqual(1.0 / numpy.hypot(*frequency), PERIOD, delta=1.0)
+        return sharpness, rd.screenshot_floor(flat, change, shown, garment, frequency)
 
     def test_a_smooth_fold_measures_near_its_floor(self):
         for amplitude in (4.0, 10.0):
