@@ -110,6 +110,7 @@ def measure(subject, count, distance, args, shots, env, env_script=None):
 
 
 def measure_ours(count, distances, args, shots, directory, env):
+    """One run per distance, after one grid run, while crowd_publisher runs."""
     places = positions(count)
     publisher = start([os.path.join(rs.DEVEL, "lib", "dressed_human", "crowd_publisher"),
                        "_crowd_file:=" + crowd_file(places, directory), "_rate:=%g" % PUBLISH_HZ], env)
@@ -117,22 +118,22 @@ def measure_ours(count, distances, args, shots, directory, env):
         time.sleep(3)
         if publisher.poll() is not None:
             raise RuntimeError("crowd_publisher exited (status %s)" % publisher.returncode)
-        runs = {d: [] for d in distances}
+        runs = {}
         publisher_cpu = []
-        for _ in range(args.repeats):
-            grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_ours_%d.png" % count), env)
-            for distance in distances:
-                cpu_start, wall_start = cpu_seconds(publisher.pid), time.time()
-                point = measure(OURS, count, distance, args, shots, env)
-                publisher_cpu.append(100.0 * (cpu_seconds(publisher.pid) - cpu_start) / (time.time() - wall_start))
-                point["grid_ms"] = grid["cpu_ms_per_frame"]
-                runs[distance].append(point)
+        grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_ours_%d.png" % count), env)
+        for distance in distances:
+            cpu_start, wall_start = cpu_seconds(publisher.pid), time.time()
+            point = measure(OURS, count, distance, args, shots, env)
+            publisher_cpu.append(100.0 * (cpu_seconds(publisher.pid) - cpu_start) / (time.time() - wall_start))
+            point["grid_ms"] = grid["cpu_ms_per_frame"]
+            runs[distance] = point
     finally:
         stop(publisher)
     return runs, max(publisher_cpu)
 
 
 def measure_peer(count, distances, args, shots, env):
+    """One run per distance, after one grid run, while the peer's publisher runs."""
     setup = os.path.join(args.peer_workspace, "devel")
     places = ["%g,%g" % place for place in positions(count)]
     publisher = start(["/bin/bash", "-c", ". %s/setup.bash && exec /usr/bin/python3 %s %g %s" % (
@@ -140,14 +141,13 @@ def measure_peer(count, distances, args, shots, env):
     env_script = os.path.join(setup, "env.sh")
     try:
         time.sleep(4)
-        runs = {d: [] for d in distances}
-        for _ in range(args.repeats):
-            grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_peer_%d.png" % count), env,
-                              env_script=env_script)
-            for distance in distances:
-                point = measure(PEER, count, distance, args, shots, env, env_script)
-                point["grid_ms"] = grid["cpu_ms_per_frame"]
-                runs[distance].append(point)
+        runs = {}
+        grid = rs.harness("rviz/Grid", 0, args.seconds, [], os.path.join(shots, "grid_peer_%d.png" % count), env,
+                          env_script=env_script)
+        for distance in distances:
+            point = measure(PEER, count, distance, args, shots, env, env_script)
+            point["grid_ms"] = grid["cpu_ms_per_frame"]
+            runs[distance] = point
     finally:
         stop(publisher)
     return runs
@@ -318,8 +318,19 @@ def main():
             master.setParam("/robot_description", f.read())
         for count in sorted(set(n for n, _ in points)):
             distances = [d for n, d in points if n == count]
-            ours, publisher_cpu = measure_ours(count, distances, args, shots, directory, env)
-            peer = measure_peer(count, distances, args, shots, env) if args.peer_workspace else {}
+            # The subjects take turns, one run of each per repeat: a drift of the machine over the
+            # minutes a crowd size takes then falls on both alike, not on whichever went last.
+            ours = {d: [] for d in distances}
+            peer = {d: [] for d in distances} if args.peer_workspace else {}
+            publisher_cpu = 0.0
+            for _ in range(args.repeats):
+                runs, cpu = measure_ours(count, distances, args, shots, directory, env)
+                publisher_cpu = max(publisher_cpu, cpu)
+                for distance, point in runs.items():
+                    ours[distance].append(point)
+                if args.peer_workspace:
+                    for distance, point in measure_peer(count, distances, args, shots, env).items():
+                        peer[distance].append(point)
             # One baseline for both subjects: rviz drawing its grid measured alike with either
             # publisher running (10.5-11.3 ms against 11.0-11.4 ms, 4 runs each, 10 humans), while
             # single grid runs of one evaluation differed by 4 ms: subtracting each subject's own
@@ -357,7 +368,7 @@ def main():
                 label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
                 p["per_human_ms"], p["publisher_cpu"], p["screenshot"]))
     lines.append("")
-    lines.append("Medians of %d runs per point; rviz CPU per human per frame = (rviz CPU per frame - the grid's) / N, "
+    lines.append("Medians of %d runs per point, the subjects taking turns (a run of ours, then one of the peer's); rviz CPU per human per frame = (rviz CPU per frame - the grid's) / N, "
                  "the grid's the median of every grid run at that N, ours and the peer's (each run measures rviz drawing "
                  "only its grid while that subject's publisher runs: the grid column shows that median and, in brackets, "
                  "the lowest and highest of the subject's own grid runs); the range: lowest and highest run. " % args.repeats +
