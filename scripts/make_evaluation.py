@@ -720,7 +720,9 @@ above) and publishes one `dressed_human/Crowd` message for all at 30 Hz; one Dre
 draws them (`Humans: From Topic`). The peer, spencer's TrackedPersons display with its walking-man
 meshes, gets one TrackedPersons message for all persons at the same rate and places. Both subjects'
 per-human costs are counted against one baseline per crowd size: the median of every run of rviz
-drawing only its grid at that size, each with one subject's publisher running.
+drawing only its grid at that size, each with one subject's publisher running. The subjects take
+turns, a run of ours and then one of the peer's per repeat, so that a drift of the machine over a
+crowd size's minutes falls on both.
 Then rviz's resident memory over minutes with the shipped `crowd.launch count:=40`.
 
 {crowd_scaling}
