@@ -341,6 +341,9 @@ def main():
                 results[(OURS[0], count, distance)] = summary(runs, count, grid_ms, publisher_cpu)
             for distance, runs in peer.items():
                 results[(PEER[0], count, distance)] = summary(runs, count, grid_ms, -1.0)
+                # Runs taken in turns pair up: their difference is free of the drift between pairs.
+                results[(OURS[0], count, distance)]["paired_ms"] = [
+                    (a["cpu_ms_per_frame"] - b["cpu_ms_per_frame"]) / count for a, b in zip(ours[distance], runs)]
         if args.memory_minutes > 0:
             memory = measure_memory(args.memory_count, args.memory_minutes, shots, env)
     finally:
@@ -367,6 +370,12 @@ def main():
             rows.append("%s,%d,%g,%d,%.2f,%.1f,%.3f,%.3f,%.3f,%.1f,%s" % (
                 label, count, distance, p["drawn"], p["fps"], p["cpu_percent"], p["cpu_ms_per_frame"], p["grid_ms"],
                 p["per_human_ms"], p["publisher_cpu"], p["screenshot"]))
+    paired = ["%d at %g m: %s" % (count, distance, ", ".join("%+.2f" % d for d in results[(OURS[0], count, distance)]["paired_ms"]))
+              for count, distance in points if "paired_ms" in results.get((OURS[0], count, distance), {})]
+    if paired:
+        lines.append("")
+        lines.append("Ours less the peer, rviz CPU per human per frame, pair by pair (ms; a run of each, taken in turns; "
+                     "below zero: ours cost less): " + "; ".join(paired) + ".")
     lines.append("")
     lines.append("Medians of %d runs per point, the subjects taking turns (a run of ours, then one of the peer's); rviz CPU per human per frame = (rviz CPU per frame - the grid's) / N, "
                  "the grid's the median of every grid run at that N, ours and the peer's (each run measures rviz drawing "
