@@ -5,6 +5,8 @@
 // through the walk, so automatic levels move as they do on screen.
 #include "dressed_human/core/model/human_model.h"
 
+#include "dressed_human/core/model/calibration_poses.h"
+
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -20,6 +22,7 @@ namespace {
 void HumanModelUpdate(benchmark::State& state) {
   HumanModelSettings settings;
   settings.garment_directory = benchmarkSourcePath("config/garments");
+  settings.calibration_poses = calibrationPosesFromFile(benchmarkSourcePath("config/motions/walk.yaml"));  // as the display
   HumanModel model(walkFixture().skeleton, walkFixture().body, settings);
   model.setVertexEvaluation(state.range(0) == 0 ? VertexEvaluation::kCpu : VertexEvaluation::kGpu);
   LevelOfDetail lod;

@@ -9,6 +9,7 @@
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
 
+#include "dressed_human/core/model/calibration_poses.h"
 #include "dressed_human/core/skeleton/body_shape_groups.h"
 #include "dressed_human/core/skeleton/crowd_human_body.h"
 #include "crowd_message_source.h"
@@ -79,6 +80,7 @@ void DressedHumanDisplay::onInitialize() {
   }
   garment_properties_->updateVisibility();
   crowd_properties_->updateVisibility();
+  loadCalibrationPoses();
   regenerateSkinRelief();
   regenerateClothRelief();
   loadCrowdFile();  // and the robot description, and every human
@@ -198,8 +200,22 @@ void DressedHumanDisplay::rebuildHumans() {
   context_->queueRender();
 }
 
+void DressedHumanDisplay::loadCalibrationPoses() {
+  const std::string walk = ros::package::getPath("dressed_human") + "/config/motions/walk.yaml";
+  try {
+    calibration_poses_ = calibrationPosesFromFile(walk);
+    status_.clear("Level Of Detail");
+  } catch (const std::exception& error) {
+    calibration_poses_.clear();
+    status_.warn("Level Of Detail", std::string(error.what()) +
+                                        "; levels of detail are calibrated at rest alone, with a wider margin "
+                                        "(more triangles for the same Max Screen Error)");
+  }
+}
+
 HumanModelSettings DressedHumanDisplay::settingsFor(const std::string& suffix) const {
   HumanModelSettings settings;
+  settings.calibration_poses = calibration_poses_;
   settings.skin_colour = body_properties_->skinColour();
   settings.garment_directory = ros::package::getPath("dressed_human") + "/config/garments";
   garment_properties_->apply(settings);

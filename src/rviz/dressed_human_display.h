@@ -65,6 +65,8 @@ class DressedHumanDisplay : public rviz::Display {
   // `stature`: its size against the skeleton's (a crowd message's); NaN: read from its TF.
   void addHuman(const std::string& suffix, double stature = 1.0);
   HumanModelSettings settingsFor(const std::string& suffix) const;
+  // The shipped walk's poses every human's level of detail is calibrated in (calibration_poses.h).
+  void loadCalibrationPoses();
   // The robot description parameter's text; false if it is not set.
   bool readRobotDescription(std::string& urdf) const;
   // Crowd: adds each human TF carries that the display lacks, and drops each one whose TF stopped.
@@ -103,6 +105,7 @@ class DressedHumanDisplay : public rviz::Display {
   std::unique_ptr<BodyDescription> body_;                      // as the body file says
   BodyShape shape_;                                            // the file's shape times the Body Shape properties
   std::map<std::string, HumanAppearance> crowd_file_;          // by human id
+  std::vector<JointAngles> calibration_poses_;                 // HumanModelSettings::calibration_poses
   std::map<std::string, std::unique_ptr<DrawnHuman>> humans_;  // by frame suffix
   float seconds_since_roster_ = 0.0f;                          // since lookForHumans()
   CrowdTopic crowd_topic_;

@@ -7,11 +7,13 @@
 // tessellation error: per patch the calibrated bound (HumanModel::partErrorBound) in mm,
 // and that bound projected to pixels at the patch's nearest distance to the camera (fov 0.8 rad,
 // 1000 px viewport, as rviz's default view at that window height). The human's own settings:
-// jacket + skirt. Automatic level of detail is measured twice: with the CPU evaluating every
+// jacket + skirt, its level of detail calibrated in the walk as the display's (calibration_poses.h).
+// Automatic level of detail is measured twice: with the CPU evaluating every
 // vertex ("cpu") and with the renderer's vertex shader doing it ("gpu", VertexEvaluation::
 // kGpu: the update then poses control points and lays out the mesh only).
 //
 //   scene_budget [package directory, default .] [--poses N]
+#include "dressed_human/core/model/calibration_poses.h"
 #include "dressed_human/core/model/human_model.h"
 #include "dressed_human/core/motion/motion_evaluator.h"
 #include "dressed_human/core/motion/motion_file.h"
@@ -128,6 +130,7 @@ int main(int argc, char** argv) {
     }
     HumanModelSettings settings;
     settings.garment_directory = source + "/config/garments";
+    settings.calibration_poses = calibrationPoses(walk.motion());
     std::printf("humans,distance_m,lod,level,vertices,median_update_ms,triangles,max_error_mm,max_error_px\n");
     const auto row = [&](int humans, double distance, bool automatic, int level,
                          VertexEvaluation evaluation = VertexEvaluation::kCpu) {

@@ -97,8 +97,7 @@ std::vector<std::string> garmentFileNames(Outfit outfit) {
 
 HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, const HumanModelSettings& settings)
     : settings_(settings), skin_(skeleton, body), skin_tiling_(skin_) {
-  addPart("skin", ReliefKind::kSkin, settings_.skin_colour, std::nullopt,
-          CalibratedErrorBound::shared(skin_.patches()));
+  addPart("skin", ReliefKind::kSkin, settings_.skin_colour, std::nullopt);
   parts_.back().closed = true;  // every skin part is a closed surface (skin.h)
   for (const std::string& name : garmentFileNames(settings_.outfit)) {
     GarmentDescription description = loadGarmentFile(settings_.garment_directory + "/" + name + ".yaml", skeleton);
@@ -118,8 +117,7 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
             ? colour->second
             : Eigen::Vector4f(static_cast<float>(description.colour.x()), static_cast<float>(description.colour.y()),
                               static_cast<float>(description.colour.z()), 1.0f);
-    addPart(name, ReliefKind::kCloth, rgba, garments_.size() - 1,
-            CalibratedErrorBound::shared(garments_.back().rest_patches));
+    addPart(name, ReliefKind::kCloth, rgba, garments_.size() - 1);
   }
   std::vector<BezierPatch> cloth;
   for (const DressedGarment& dressed : garments_) {
@@ -129,10 +127,35 @@ HumanModel::HumanModel(const Skeleton& skeleton, const BodyDescription& body, co
   std::vector<const std::vector<BezierPatch>*> rest{&skin_.patches()};  // built in the same rest pose
   for (const DressedGarment& dressed : garments_) rest.push_back(&dressed.rest_patches);
   covered_ = sharedCoveredPatches(rest);
+  calibrateErrorBounds(skeleton, body.shape);
+}
+
+void HumanModel::calibrateErrorBounds(const Skeleton& skeleton, const BodyShape& shape) {
+  const std::vector<BezierPatch> skin_rest = skin_.patches();
+  std::vector<std::vector<std::vector<BezierPatch>>> posed(parts_.size());  // per part, per pose
+  if (!settings_.calibration_poses.empty()) {
+    const ForwardKinematics kinematics(skeleton, shape);
+    SkeletonPose pose;
+    for (const JointAngles& angles : settings_.calibration_poses) {
+      kinematics.compute(RigidTransform(), angles, pose);
+      poseSurfaces(pose.root, pose.bone_in_world);
+      for (std::size_t p = 0; p < parts_.size(); ++p) posed[p].push_back(partPatches(p));
+    }
+    skin_.poseAtRest();
+    JointAngles zero;
+    zero.fill(0.0);
+    kinematics.compute(RigidTransform(), zero, pose);
+    for (DressedGarment& dressed : garments_) dressed.garment.pose(pose);
+  }
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    const std::optional<std::size_t>& garment = part_states_[p].garment;
+    part_states_[p].error_bound =
+        CalibratedErrorBound::shared(garment ? garments_[*garment].rest_patches : skin_rest, posed[p]);
+  }
 }
 
 void HumanModel::addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour,
-                         std::optional<std::size_t> garment, std::shared_ptr<const CalibratedErrorBound> error_bound) {
+                         std::optional<std::size_t> garment) {
   SurfacePart part;
   part.name = name;
   part.relief = relief;
@@ -141,7 +164,6 @@ void HumanModel::addPart(const std::string& name, ReliefKind relief, const Eigen
   parts_.push_back(std::move(part));
   part_states_.emplace_back();
   part_states_.back().garment = garment;
-  part_states_.back().error_bound = std::move(error_bound);
 }
 
 void HumanModel::setSkinCellSize(double forearm_cell_spacing) {

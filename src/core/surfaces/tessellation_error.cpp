@@ -180,45 +180,67 @@ double measuredTessellationError(const BezierPatch& patch, int level) {
   return worst;
 }
 
-CalibratedErrorBound::CalibratedErrorBound(const std::vector<BezierPatch>& reference) {
-  scale_.resize(reference.size());
-  for (std::size_t p = 0; p < reference.size(); ++p) {
-    const double constant = errorBoundConstant(reference[p]);
-    const auto scaleAt = [&](int level) {
-      const double bound = constant / (static_cast<double>(level) * level);
-      // A flat patch has neither error nor bound.
-      return bound > 0.0 ? std::min(1.0, measuredTessellationError(reference[p], level) / bound) : 1.0;
-    };
-    for (int level = 1; level < kCalibratedLevels; ++level) scale_[p][level - 1] = scaleAt(level);
-    // Finer levels: error * n^2 still changes from 4 to 8 and on to 16 (the default max_level) on
-    // some patches (the skirt's, by 5 %: with 4 and 8 only, the bound was below the drawn error at
-    // levels 11..16); the largest holds.
-    double finer = scale_[p][kCalibratedLevels - 2];  // level 4's
-    for (const int level : kFineReferenceLevels) finer = std::max(finer, scaleAt(level));
-    scale_[p][kCalibratedLevels - 1] = finer;
+CalibratedErrorBound::CalibratedErrorBound(const std::vector<BezierPatch>& reference,
+                                           const std::vector<std::vector<BezierPatch>>& posed)
+    : scale_(reference.size(), std::array<double, kCalibratedLevels>{}),
+      margin_(posed.empty() ? kRestMargin : kPosedMargin) {
+  calibrateAgainst(reference, {kFineReferenceLevels.begin(), kFineReferenceLevels.end()});
+  for (std::size_t k = 0; k < posed.size(); ++k) {
+    if (posed[k].size() != reference.size()) {
+      throw std::invalid_argument("CalibratedErrorBound: posed reference " + std::to_string(k) + " has " +
+                                  std::to_string(posed[k].size()) + " patches, the rest reference " +
+                                  std::to_string(reference.size()));
+    }
+    // Level 16 alone costs 70 % of a pose's measurement; level 8 follows the pose as well.
+    calibrateAgainst(posed[k], {kFineReferenceLevels.front()});
   }
 }
 
-std::shared_ptr<const CalibratedErrorBound> CalibratedErrorBound::shared(const std::vector<BezierPatch>& reference) {
+void CalibratedErrorBound::calibrateAgainst(const std::vector<BezierPatch>& patches,
+                                            const std::vector<int>& fine_levels) {
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    const double constant = errorBoundConstant(patches[p]);
+    const auto scaleAt = [&](int level) {
+      const double bound = constant / (static_cast<double>(level) * level);
+      // A flat patch has neither error nor bound.
+      return bound > 0.0 ? std::min(1.0, measuredTessellationError(patches[p], level) / bound) : 1.0;
+    };
+    std::array<double, kCalibratedLevels>& scale = scale_[p];
+    for (int level = 1; level < kCalibratedLevels; ++level) {
+      scale[level - 1] = std::max(scale[level - 1], scaleAt(level));
+    }
+    // Finer levels: error * n^2 still changes from 4 to 8 and on to 16 (the default max_level) on
+    // some patches (the skirt's, by 5 %: with 4 and 8 only, the bound was below the drawn error at
+    // levels 11..16); the largest holds.
+    double finer = std::max(scale[kCalibratedLevels - 1], scale[kCalibratedLevels - 2]);  // level 4's
+    for (const int level : fine_levels) finer = std::max(finer, scaleAt(level));
+    scale[kCalibratedLevels - 1] = finer;
+  }
+}
+
+std::shared_ptr<const CalibratedErrorBound> CalibratedErrorBound::shared(
+    const std::vector<BezierPatch>& reference, const std::vector<std::vector<BezierPatch>>& posed) {
   static PatchKeyedCache<CalibratedErrorBound> cache;
-  return cache.obtain({&reference}, [&] { return std::make_shared<const CalibratedErrorBound>(reference); });
+  std::vector<const std::vector<BezierPatch>*> key{&reference};
+  for (const std::vector<BezierPatch>& patches : posed) key.push_back(&patches);
+  return cache.obtain(key, [&] { return std::make_shared<const CalibratedErrorBound>(reference, posed); });
 }
 
 double CalibratedErrorBound::bound(std::size_t index, const BezierPatch& live, int level) const {
   if (level < 1) throw std::invalid_argument("CalibratedErrorBound: level must be >= 1");
   const double scale = scale_.at(index)[static_cast<std::size_t>(std::min(level, kCalibratedLevels) - 1)];
-  return std::min(1.0, kMargin * scale) * errorBoundConstant(live) / (static_cast<double>(level) * level);
+  return std::min(1.0, margin_ * scale) * errorBoundConstant(live) / (static_cast<double>(level) * level);
 }
 
 int CalibratedErrorBound::smallestLevel(std::size_t index, double constant, double allowed, int max_level) const {
   if (!(allowed > 0.0)) return max_level;
   const std::array<double, kCalibratedLevels>& scale = scale_[index];
   for (int level = 1; level <= std::min(kCalibratedLevels, max_level); ++level) {
-    const double factor = std::min(1.0, kMargin * scale[static_cast<std::size_t>(level - 1)]);
+    const double factor = std::min(1.0, margin_ * scale[static_cast<std::size_t>(level - 1)]);
     if (factor * constant / (static_cast<double>(level) * level) <= allowed) return level;
   }
   if (max_level <= kCalibratedLevels) return max_level;
-  const double finest = std::min(1.0, kMargin * scale[kCalibratedLevels - 1]);
+  const double finest = std::min(1.0, margin_ * scale[kCalibratedLevels - 1]);
   return std::max(kCalibratedLevels + 1, smallestLevelFor(finest * constant, allowed, max_level));
 }
 

@@ -115,6 +115,10 @@ struct HumanModelSettings {
   double skirt_length = -1.0;     // normalized c in [0, 1] (Eq. 8'); < 0: as the skirt file says
   // Per garment file name ("jacket", "skirt", ...): RGBA replacing the file's colour.
   std::map<std::string, Eigen::Vector4f> garment_colours;
+  // Joint angles the level of detail's error bound is calibrated across, besides rest
+  // (CalibratedErrorBound): poses like those the human will be drawn in, so its margin for
+  // unseen poses can be small. None: rest alone, with the wider margin.
+  std::vector<JointAngles> calibration_poses;
 };
 
 class HumanModel {
@@ -160,8 +164,8 @@ class HumanModel {
   const std::vector<BezierPatch>& partPatches(std::size_t part) const;
   const std::vector<int>& partLevels(std::size_t part) const;
   // The error bound automatic level of detail chooses part `part`'s levels by: calibrated on the
-  // part at rest (CalibratedErrorBound, about 2x tighter than geometricErrorBound, so about half
-  // the triangles for the same screen error).
+  // part at rest and in HumanModelSettings::calibration_poses (CalibratedErrorBound, about 2x
+  // tighter than geometricErrorBound, so about half the triangles for the same screen error).
   const CalibratedErrorBound& partErrorBound(std::size_t part) const;
   const Skin& skin() const { return skin_; }
   // The skin relief's level-1 cell spacing on the forearm (m, > 0), the other regions in their
@@ -189,7 +193,7 @@ class HumanModel {
   // What the model keeps of one drawn part between updates (parts_[p] is what it hands out).
   struct PartState {
     std::optional<std::size_t> garment;                       // index in garments_; none: the skin
-    std::shared_ptr<const CalibratedErrorBound> error_bound;  // calibrated at rest, shared by humans of one body
+    std::shared_ptr<const CalibratedErrorBound> error_bound;  // shared by humans of one body and outfit
     std::unique_ptr<Tessellator> tessellator = std::make_unique<Tessellator>();  // not movable
     AutomaticLevels automatic;
     CornerSplit corners;
@@ -215,7 +219,9 @@ class HumanModel {
   };
 
   void addPart(const std::string& name, ReliefKind relief, const Eigen::Vector4f& colour,
-               std::optional<std::size_t> garment, std::shared_ptr<const CalibratedErrorBound> error_bound);
+               std::optional<std::size_t> garment);
+  // Every part's error bound, at rest and in settings_.calibration_poses; leaves the surfaces at rest.
+  void calibrateErrorBounds(const Skeleton& skeleton, const BodyShape& shape);
   const PatchTopology& topologyOf(const PartState& state) const;
   // update()'s steps, in order.
   void poseSurfaces(const RigidTransform& root, const std::array<RigidTransform, kBoneCount>& bones);
