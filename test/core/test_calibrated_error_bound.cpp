@@ -229,7 +229,7 @@ TEST(CalibratedErrorBound, CalibratedAtRestHoldsForTheDrawnMeshOverAWalk) {
   EXPECT_GT(checkOverPoses(walkPoses(4, body().shape), false), 20000u);
 }
 
-TEST(CalibratedErrorBound, BadQueriesThrowAndEqualBodiesShareOneCalibration) {
+TEST(CalibratedErrorBound, BadQueriesThrowAndEqualBodiesShareOneCalibrationKeptPastItsHolders) {
   Skin skin(skeleton(), body());
   const std::vector<BezierPatch> rest = skin.patches();
   const CalibratedErrorBound calibrated(rest);
@@ -248,11 +248,16 @@ TEST(CalibratedErrorBound, BadQueriesThrowAndEqualBodiesShareOneCalibration) {
   EXPECT_EQ(levels.size(), rest.size());
 
   // Two humans of one body: one calibration; another body: another one.
-  const std::shared_ptr<const CalibratedErrorBound> first = CalibratedErrorBound::shared(rest);
+  std::shared_ptr<const CalibratedErrorBound> first = CalibratedErrorBound::shared(rest);
   EXPECT_EQ(CalibratedErrorBound::shared(Skin(skeleton(), body()).patches()), first);
   BodyShape wider = body().shape;
   for (Eigen::Vector3d& factors : wider.scale) factors.x() *= 1.1;
   EXPECT_NE(CalibratedErrorBound::shared(Skin(skeleton(), body(), wider).patches()), first);
+  // Nobody holds it any more: it is kept (a display rebuilding its humans finds it again).
+  const std::weak_ptr<const CalibratedErrorBound> released = first;
+  first.reset();
+  ASSERT_FALSE(released.expired());
+  EXPECT_EQ(CalibratedErrorBound::shared(rest), released.lock());
 }
 
 }  // namespace

@@ -220,7 +220,9 @@ void CalibratedErrorBound::calibrateAgainst(const std::vector<BezierPatch>& patc
 
 std::shared_ptr<const CalibratedErrorBound> CalibratedErrorBound::shared(
     const std::vector<BezierPatch>& reference, const std::vector<std::vector<BezierPatch>>& posed) {
-  static PatchKeyedCache<CalibratedErrorBound> cache;
+  // A crowd's bodies and outfits (9 statures x the skin and 4 garments in crowd.launch), kept
+  // through a rebuild of every human: calibrating one skin in the walk takes ~100 ms.
+  static PatchKeyedCache<CalibratedErrorBound> cache(64);
   std::vector<const std::vector<BezierPatch>*> key{&reference};
   for (const std::vector<BezierPatch>& patches : posed) key.push_back(&patches);
   return cache.obtain(key, [&] { return std::make_shared<const CalibratedErrorBound>(reference, posed); });

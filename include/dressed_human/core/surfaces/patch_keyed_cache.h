@@ -1,9 +1,13 @@
 // One value per set of surfaces in the process, computed once and shared while anyone holds it:
 // a crowd of humans of one body and outfit calibrates and judges its surfaces once, and humans
 // coming and going do not redo it. Keyed by the control points of every patch of every surface.
+// A cache made with `retained` > 0 also keeps that many of the values it made last alive when
+// nobody holds them: a display rebuilding every human (a property changed) finds them again.
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -15,6 +19,8 @@ namespace dressed_human {
 template <typename Value>
 class PatchKeyedCache {
  public:
+  explicit PatchKeyedCache(std::size_t retained = 0) : retained_(retained) {}
+
   // The value for `surfaces`: the one still held somewhere, or make() (a shared_ptr to a new
   // value), called under the cache's lock so two callers never compute the same value.
   template <typename Make>
@@ -31,6 +37,10 @@ class PatchKeyedCache {
     for (const std::vector<BezierPatch>* surface : surfaces) entry.surfaces.push_back(*surface);
     entry.value = value;
     entries_.push_back(std::move(entry));
+    if (retained_ > 0) {
+      recent_.push_back(value);
+      if (recent_.size() > retained_) recent_.pop_front();
+    }
     return value;
   }
 
@@ -53,6 +63,8 @@ class PatchKeyedCache {
   }
   std::mutex mutex_;
   std::vector<Entry> entries_;
+  std::size_t retained_;
+  std::deque<std::shared_ptr<const Value>> recent_;  // the last `retained_` values made
 };
 
 }  // namespace dressed_human

@@ -137,9 +137,9 @@ class CalibratedErrorBound {
   // `posed`: the same patches in other poses (each as many as `reference`); none: rest alone.
   explicit CalibratedErrorBound(const std::vector<BezierPatch>& reference,
                                 const std::vector<std::vector<BezierPatch>>& posed = {});
-  // The calibration of `reference` (and `posed`), built once for as long as someone holds it:
-  // every human of the same body and outfit shares one (building it measures ~1.1 million surface
-  // points per pose for the skin, ~30 ms).
+  // The calibration of `reference` (and `posed`), built once while someone holds it or it is one
+  // of the last 64 built: every human of the same body and outfit shares one (building it
+  // measures ~1.1 million surface points for the skin at rest, ~30 ms, and ~0.3 million per pose).
   static std::shared_ptr<const CalibratedErrorBound> shared(const std::vector<BezierPatch>& reference,
                                                             const std::vector<std::vector<BezierPatch>>& posed = {});
 
