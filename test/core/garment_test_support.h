@@ -38,8 +38,9 @@ inline std::vector<std::pair<std::string, std::vector<std::string>>> outfits() {
 }
 
 // `count` poses evenly over one walk cycle (with the default body's shape).
-inline std::vector<SkeletonPose> walkPoses(int count, const BodyShape& shape) {
-  MotionEvaluator evaluator(loadMotionFile(sourcePath("config/motions/walk.yaml")));
+// `count` poses of a motion file (relative to the source tree) at phases k / count of its period.
+inline std::vector<SkeletonPose> motionPoses(const std::string& file, int count, const BodyShape& shape) {
+  MotionEvaluator evaluator(loadMotionFile(sourcePath(file)));
   ForwardKinematics fk(skeleton(), shape);
   std::vector<SkeletonPose> poses(static_cast<std::size_t>(count));
   const double period = evaluator.motion().period;
@@ -50,6 +51,10 @@ inline std::vector<SkeletonPose> walkPoses(int count, const BodyShape& shape) {
     fk.compute(root, angles, poses[static_cast<std::size_t>(k)]);
   }
   return poses;
+}
+
+inline std::vector<SkeletonPose> walkPoses(int count, const BodyShape& shape) {
+  return motionPoses("config/motions/walk.yaml", count, shape);
 }
 
 }  // namespace garment_test

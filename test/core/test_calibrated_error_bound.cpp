@@ -99,21 +99,6 @@ HumanModelSettings settingsFor(Outfit outfit, bool posed_calibration) {
   return settings;
 }
 
-// `count` poses of a motion file at phases k / count: none is a calibration pose of the walk,
-// which sit at (k + 1/2) / 8.
-std::vector<SkeletonPose> motionPoses(const std::string& file, int count) {
-  MotionEvaluator evaluator(loadMotionFile(sourcePath(file)));
-  const ForwardKinematics fk(skeleton(), body().shape);
-  std::vector<SkeletonPose> poses(static_cast<std::size_t>(count));
-  for (int k = 0; k < count; ++k) {
-    JointAngles angles{};
-    RigidTransform root;
-    evaluator.evaluate(evaluator.motion().period * k / count, angles, root);
-    fk.compute(root, angles, poses[static_cast<std::size_t>(k)]);
-  }
-  return poses;
-}
-
 // The crowd's walker at its fastest, where knees and hips bend furthest.
 std::vector<SkeletonPose> fastGaitPoses(int count) {
   SpeedGait gait = locomotion_test::gait();
@@ -217,7 +202,8 @@ std::size_t checkOverPoses(const std::vector<SkeletonPose>& poses, bool posed_ca
 TEST(CalibratedErrorBound, CalibratedInTheWalkHoldsForTheDrawnMeshInPosesItHasNotSeen) {
   std::vector<SkeletonPose> poses = walkPoses(4, body().shape);
   for (const char* file : {"config/motions/cmu_02_01_fitted.yaml", "config/motions/hand_made_walk.yaml"}) {
-    const std::vector<SkeletonPose> other = motionPoses(file, 4);
+    // Phases k / 4: none is a calibration pose of the walk, which sit at (k + 1/2) / 8.
+    const std::vector<SkeletonPose> other = motionPoses(file, 4, body().shape);
     poses.insert(poses.end(), other.begin(), other.end());
   }
   const std::vector<SkeletonPose> fast = fastGaitPoses(4);
