@@ -77,7 +77,8 @@ def bandai_rows(tool, mirror):
     commit = subprocess.run(["git", "--git-dir", mirror, "rev-parse", "HEAD"], capture_output=True, text=True,
                             check=True).stdout.strip()
     rows = ["| walk | period, speed | joints: mean / max (cm) | worst joint (mean / max, cm) | "
-            "our skeleton on the unsmoothed retarget: mean / max (cm) | rest |", "|---|---|---|---|---|---|"]
+            "the capture's cycle-to-cycle variation: mean / max (cm) | "
+            "our skeleton on the unsmoothed retarget: mean / max (cm) | rest |", "|---|---|---|---|---|---|---|"]
     with tempfile.TemporaryDirectory() as directory:
         for walk in walks:
             path = os.path.join(directory, os.path.basename(walk))
@@ -89,7 +90,7 @@ def bandai_rows(tool, mirror):
             style = re.search(r"walk_([a-z-]+)_001", walk).group(1)
             if run.returncode != 0:
                 reason = run.stderr.strip().splitlines()[-1].replace("fit_motion: %s: " % path, "")
-                rows.append("| %s | not fitted: %s | | | | |" % (style, reason))
+                rows.append("| %s | not fitted: %s | | | | | |" % (style, reason))
                 continue
             report = run.stderr
             number = lambda pattern: re.search(pattern, report)
@@ -97,12 +98,14 @@ def bandai_rows(tool, mirror):
             speed = number(r"forward speed ([0-9.]+) m/s")
             joints = number(r"root-relative\): mean ([0-9.]+) cm, max ([0-9.]+) cm")
             floor = number(r"unsmoothed retarget vs the capture's FK: mean ([0-9.]+) cm, max ([0-9.]+) cm")
+            variation = number(r"cycle-to-cycle variation .*?: mean ([0-9.]+) cm, max ([0-9.]+) cm")
             per_joint = re.findall(r"^ {4}([a-z_]+) +mean ([0-9.]+) cm, max ([0-9.]+) cm", report, re.M)
             worst = max(per_joint, key=lambda j: float(j[2]))
             rest = number(r"frame (\d+) is taken as the rest pose")
-            rows.append("| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s / %s | %s |" % (
+            rows.append("| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s / %s | %s / %s | %s |" % (
                 style, period.group(1), speed.group(1), joints.group(1), joints.group(2), worst[0], worst[1],
-                worst[2], floor.group(1), floor.group(2), "frame %s" % rest.group(1) if rest else "zero pose"))
+                worst[2], variation.group(1), variation.group(2), floor.group(1), floor.group(2),
+                "frame %s" % rest.group(1) if rest else "zero pose"))
     return rows, commit
 
 
@@ -189,7 +192,10 @@ def main():
                   "BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @%s, every walk style's first take "
                   "(CC BY-NC-ND 4.0, read from a clone, not carried here). Their pelvis hangs below a root joint "
                   "and their zero pose is folded: fit_motion takes their most upright frame as the rest pose. "
-                  "Fitted at fit_motion's default tolerances, over every whole cycle of each take." % commit[:7], ""]
+                  "Fitted at fit_motion's default tolerances, over every whole cycle of each take. The takes start "
+                  "and end at a standstill and their cycles differ: \"the capture's cycle-to-cycle variation\" is "
+                  "each joint against the mean of the take's cycles at the same phase, how close any periodic motion "
+                  "could follow it on average (fit_motion -v)." % commit[:7], ""]
         lines += bandai + [""]
     with open(os.path.join(DOCS, "body_fit_accuracy.md"), "w") as f:
         f.write("\n".join(lines))

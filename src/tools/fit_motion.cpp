@@ -491,6 +491,14 @@ void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::M
         << format(accuracy.unsmoothed_against_capture.mean_cm, 2) << " cm, max "
         << format(accuracy.unsmoothed_against_capture.max_cm, 2) << " cm\n";
   }
+  if (accuracy.capture_cycle_variation.samples > 0) {
+    // What no periodic motion can beat: the capture's cycles differ from one another.
+    const dh::PositionError& v = accuracy.capture_cycle_variation;
+    out << "  the capture's cycle-to-cycle variation (its joints vs the mean of its " << fit.cycles
+        << " cycles at the same phase): mean " << format(v.mean_cm, 2) << " cm, max " << format(v.max_cm, 2)
+        << " cm (" << dh::humanJointNames()[static_cast<std::size_t>(v.worst_joint)] << " at frame "
+        << fit.skipped_frames + v.worst_frame << ")\n";
+  }
   out << "  joint positions, fitted series vs our skeleton on the unsmoothed angles: mean "
       << format(accuracy.against_samples.mean_cm, 3) << " cm, max " << format(accuracy.against_samples.max_cm, 3)
       << " cm; root translation: mean " << format(accuracy.root_translation.mean_cm, 3) << " cm\n";

@@ -143,12 +143,48 @@ TEST(MotionFit, JointPositionErrorAgainstTheCapture) {
             << " cm; floor of the unsmoothed retarget " << accuracy.unsmoothed_against_capture.mean_cm
             << " cm; vs the unsmoothed retarget " << accuracy.against_samples.mean_cm << " cm (max "
             << accuracy.against_samples.max_cm << "); root " << accuracy.root_translation.mean_cm << " cm\n";
+  std::cout << "[ figure   ] the capture's cycle-to-cycle variation: mean " << accuracy.capture_cycle_variation.mean_cm
+            << " cm, max " << accuracy.capture_cycle_variation.max_cm << " cm over " << fit.cycles << " cycles\n";
   ASSERT_GT(accuracy.against_capture.samples, 0u);
+  ASSERT_GT(accuracy.capture_cycle_variation.samples, 0u);
   // The truncated series adds little to what the different bone proportions already cost.
   EXPECT_LT(accuracy.against_samples.mean_cm, 2.0);
   EXPECT_LT(accuracy.against_capture.mean_cm - accuracy.unsmoothed_against_capture.mean_cm, 1.0);
   EXPECT_LT(accuracy.against_capture.mean_cm, 25.0);
   EXPECT_LT(accuracy.root_translation.mean_cm, 3.0);
+}
+
+// A capture whose cycles differ by a known offset: that offset is its cycle-to-cycle variation;
+// an exactly periodic joint has none, at a period that is a whole number of frames or not.
+TEST(MotionFit, CycleToCycleVariationIsTheDistanceToTheMeanCycle) {
+  for (const double period : {1.0, 0.995}) {
+    const double step = 0.01;
+    std::vector<double> times;
+    std::vector<JointPositions> positions;
+    for (int f = 0; f < 320; ++f) {  // 3 cycles and a little more
+      const double t = f * step;
+      JointPositions p;
+      for (Eigen::Vector3d& joint : p) joint.setZero();
+      const double a = 2.0 * M_PI * t / period;
+      p[0] = Eigen::Vector3d(0.1 * std::sin(a), 0.1 * std::cos(a), 0.0);
+      const int cycle = static_cast<int>(std::floor(t / period));
+      const double offset = cycle == 0 ? 0.03 : cycle == 1 ? -0.03 : 0.0;  // mean 0 over 3 cycles
+      p[1] = p[0] + Eigen::Vector3d(offset, 0.0, 0.0);
+      times.push_back(t);
+      positions.push_back(p);
+    }
+    std::array<bool, kJointCount> used{};
+    used[0] = used[1] = true;
+    const PositionError v = periodicCycleVariation(times, positions, period, 3, used);
+    // Joint 1 is 3 cm off in two cycles of three, joint 0 follows its mean cycle. The tolerance:
+    // at 0.995 s a lookup between two frames that straddle a cycle's end mixes two offsets.
+    EXPECT_NEAR(v.max_cm, 3.0, 0.05) << period;
+    EXPECT_NEAR(v.mean_cm, 1.0, 0.05) << period;
+    EXPECT_EQ(v.worst_joint, 1);
+    used[1] = false;
+    EXPECT_LT(periodicCycleVariation(times, positions, period, 3, used).max_cm, 0.02) << period;
+    EXPECT_EQ(periodicCycleVariation(times, positions, period, 1, used).samples, 0u);  // one cycle: none
+  }
 }
 
 TEST(MotionFit, OpenSimSingleCycleFitsWithPeriodOne) {

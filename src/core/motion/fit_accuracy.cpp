@@ -61,7 +61,40 @@ void addStanceFeet(const ForwardKinematics& kinematics, const RigidTransform& ro
   }
 }
 
+// `positions` at `time` within [0, times.back()], linear between the neighbouring frames.
+Eigen::Vector3d positionAt(const std::vector<double>& times,
+                           const std::vector<JointPositions>& positions, std::size_t joint,
+                           double time) {
+  const auto after = std::upper_bound(times.begin(), times.end(), time);
+  if (after == times.begin()) return positions.front()[joint];
+  if (after == times.end()) return positions.back()[joint];
+  const auto next = static_cast<std::size_t>(after - times.begin());
+  const double t0 = times[next - 1], t1 = times[next];
+  const double w = t1 > t0 ? (time - t0) / (t1 - t0) : 0.0;
+  return (1.0 - w) * positions[next - 1][joint] + w * positions[next][joint];
+}
+
 }  // namespace
+
+PositionError periodicCycleVariation(const std::vector<double>& times,
+                                     const std::vector<JointPositions>& positions,
+                                     double period, std::size_t cycles, const std::array<bool, kJointCount>& used) {
+  ErrorAccumulator variation;
+  if (cycles < 2 || !(period > 0.0) || times.size() != positions.size()) return variation.result();
+  const double end = static_cast<double>(cycles) * period;
+  for (std::size_t f = 0; f < times.size() && times[f] < end; ++f) {
+    const double phase_time = std::fmod(times[f], period);
+    for (std::size_t j = 0; j < kJointCount; ++j) {
+      if (!used[j]) continue;
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (std::size_t c = 0; c < cycles; ++c) {
+        mean += positionAt(times, positions, j, phase_time + static_cast<double>(c) * period);
+      }
+      variation.add(positions[f][j], mean / static_cast<double>(cycles), f, static_cast<int>(j));
+    }
+  }
+  return variation.result();
+}
 
 FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sampled, const MotionFit& fit,
                                const Motion& motion) {
@@ -121,6 +154,14 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
     }
   }
   FitAccuracy accuracy;
+  if (has_capture) {
+    std::vector<JointPositions> window(fit.frames_used);
+    for (std::size_t f = 0; f < fit.frames_used; ++f) {
+      for (std::size_t j = 0; j < kJointCount; ++j) window[f][j] = to_walk * sampled.reference_joint_positions[first + f][j];
+    }
+    accuracy.capture_cycle_variation =
+        periodicCycleVariation(fit.times, window, motion.period, fit.cycles, sampled.driven);
+  }
   accuracy.against_capture = capture.result();
   for (std::size_t j = 0; j < kJointCount; ++j) accuracy.joint_against_capture[j] = joint_capture[j].result();
   accuracy.unsmoothed_against_capture = unsmoothed_capture.result();

@@ -35,6 +35,10 @@ struct FitAccuracy {
   // skeletons' different bone proportions set, whatever the order.
   PositionError unsmoothed_against_capture;
   PositionError against_samples;
+  // The capture against itself: each joint against the mean of its cycles at the same phase
+  // (periodicCycleVariation). No periodic motion, of any order, follows a capture closer than
+  // that on average; empty with one cycle or without a capture skeleton.
+  PositionError capture_cycle_variation;
   PositionError root_translation;  // fitted root vs sampled root, walk frame
   // With a fitted body (SampledMotion::body_fitted): the height of our lowest foot point (ankle
   // joint or foot bone end) against the capture's lowest foot point, both feet, over the frames
@@ -44,6 +48,15 @@ struct FitAccuracy {
   double mean_rms_degrees = 0.0;               // over driven angle series
   double max_rms_degrees = 0.0;
 };
+
+// Each joint position against the mean of its positions at the same phase in every cycle of the
+// window: `positions[f][j]` at `times[f]` (increasing, from 0), cycles of `period` seconds
+// (`cycles` >= 2; times at or beyond cycles * period are not used), linear between frames. The
+// cycle-to-cycle variation of a capture, which a periodic fit cannot follow. Joints with
+// `used[j]` false are left out.
+PositionError periodicCycleVariation(const std::vector<double>& times,
+                                     const std::vector<JointPositions>& positions,
+                                     double period, std::size_t cycles, const std::array<bool, kJointCount>& used);
 
 // `motion` is evaluated at the window's times (it may be a refit of `fit` with another order).
 FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sampled, const MotionFit& fit,
