@@ -200,9 +200,9 @@ std::size_t checkOverPoses(const std::vector<SkeletonPose>& poses, bool posed_ca
 
 // README: the bound "never below the drawn error; each part's largest within 2x of its largest".
 TEST(CalibratedErrorBound, CalibratedInTheWalkHoldsForTheDrawnMeshInPosesItHasNotSeen) {
+  // Phases k / 2: no calibration pose of the walk, which sit at (k + 1/2) / 8.
   std::vector<SkeletonPose> poses = walkPoses(2, body().shape);
   for (const char* file : {"config/motions/cmu_02_01_fitted.yaml", "config/motions/hand_made_walk.yaml"}) {
-    // Phases k / 2: none is a calibration pose of the walk, which sit at (k + 1/2) / 8.
     const std::vector<SkeletonPose> other = motionPoses(file, 2, body().shape);
     poses.insert(poses.end(), other.begin(), other.end());
   }
