@@ -11,10 +11,13 @@
 // the overlap. Pooling weights channels by their energy: the large leg and arm swings dominate,
 // and since left and right are half a cycle apart, the stride (not the step) wins. The period is
 // the highest local maximum of r for lags from min_period up to half the record (two cycles must
-// be seen) -- or the shortest peak it is a whole multiple of, if that one is within 0.02 of it
-// (r(T) and r(2T) of a long record differ only by noise) -- refined to sub-frame precision by a
-// parabola through the peak and its neighbours.
-// No local maximum, or one below min_correlation, means no clear period: an error, not a guess.
+// be seen) -- or the shortest peak it is a whole multiple of, if that one is as high within the
+// noise of the two estimates (r(T) and r(3T) of a capture differ by noise and by how its cycles
+// differ): 0.02, or twice the standard error of the difference, each r's standard error taken
+// from the spread of r over the overlap's stretches of one shorter lag -- refined to sub-frame
+// precision by a parabola through the peak and its neighbours.
+// No local maximum, or a highest one below min_correlation, means no clear period: an error, not
+// a guess. PeriodEstimate::correlation is r at the period chosen, which may lie below it.
 
 #include <cstddef>
 #include <vector>
