@@ -91,14 +91,20 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& 
                                const Eigen::AlignedBox3f& bounds, bool lit_per_vertex) {
   const std::vector<float>* relief_weight = vertex_data.relief_weight;
   const std::vector<Eigen::Vector2f>* fold_axis = vertex_data.fold_axis;
+  const std::vector<Eigen::Vector2f>* fold_tile = vertex_data.fold_tile;
+  const std::vector<Eigen::Vector2f>* fold_direction = vertex_data.fold_direction;
   layout_id_ = 0;
   const std::size_t vertices = mesh.positions.size();
-  if ((relief_weight != nullptr && relief_weight->size() != vertices) ||
-      (fold_axis != nullptr && fold_axis->size() != vertices)) {
+  const auto count_of = [vertices](const auto* values) { return values ? values->size() : vertices; };
+  if (count_of(relief_weight) != vertices || count_of(fold_axis) != vertices || count_of(fold_tile) != vertices ||
+      count_of(fold_direction) != vertices || (fold_tile == nullptr) != (fold_direction == nullptr)) {
     throw std::invalid_argument("mesh with " + std::to_string(vertices) + " vertices has " +
-                                std::to_string(relief_weight ? relief_weight->size() : vertices) +
-                                " relief weights and " + std::to_string(fold_axis ? fold_axis->size() : vertices) +
-                                " fold axes");
+                                std::to_string(count_of(relief_weight)) + " relief weights, " +
+                                std::to_string(count_of(fold_axis)) + " fold axes, " +
+                                (fold_tile ? std::to_string(fold_tile->size()) : std::string("no")) +
+                                " fold tile coordinates and " +
+                                (fold_direction ? std::to_string(fold_direction->size()) : std::string("no")) +
+                                " fold directions");
   }
   // Lit per vertex, the relief is not drawn: no corner split, no texturing to check or send.
   const PatchCornerSplit* corners = lit_per_vertex ? nullptr : texturing.corners;
@@ -115,10 +121,14 @@ void SurfaceMeshObject::update(const TriangleMesh& mesh, const ReliefTexturing& 
     object_->normal(n.x(), n.y(), n.z());
     if (lit_per_vertex) continue;
     const Eigen::Vector3f& t = mesh.tangents_u[v];
-    const Eigen::Vector2f uv = reliefCoordinate(mesh, texturing, i);
+    // Folds laid by their coordinates (FoldCoordinates): the tile coordinate instead of the patch's
+    // (u, v), the folds' signed direction instead of their axis (relief_surface.frag, FOLD_COORDINATES).
+    const Eigen::Vector2f uv = fold_tile ? (*fold_tile)[v] : reliefCoordinate(mesh, texturing, i);
     object_->tangent(t.x(), t.y(), t.z());
     object_->textureCoord(uv.x(), uv.y());
-    const Eigen::Vector2f axis = fold_axis != nullptr ? (*fold_axis)[v] : Eigen::Vector2f::Zero();
+    const Eigen::Vector2f axis = fold_direction ? (*fold_direction)[v]
+                                 : fold_axis    ? (*fold_axis)[v]
+                                                : Eigen::Vector2f::Zero();
     object_->textureCoord(relief_weight != nullptr ? (*relief_weight)[v] : 1.0f, axis.x(), axis.y());
   }
   addTriangles(indices, mesh, hidden_patches);

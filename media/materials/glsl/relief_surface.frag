@@ -14,9 +14,12 @@ void main() { gl_FragColor = litColour; }
 // PLAIN_SURFACE: the geometric normal only (no relief map), for reliefs too small to see.
 // ORIENTED_FOLDS: garments; the map holds two fold tiles, turned and blended per fragment
 // (oriented_folds.h, whose orientedFolds() this transcribes and whose tests hold it).
+// FOLD_COORDINATES: garments whose vertices bring fold coordinates (fold_coordinates.h): reliefUv
+// is the tile coordinate, foldAxis the folds' signed direction (foldCoordinateRelief).
 #ifndef PLAIN_SURFACE
 uniform sampler2D normalMap;        // tangent-space normals, encoded n * 0.5 + 0.5 (ORIENTED_FOLDS:
-                                    // x, y of the I tile's, then of the Y-Y tile's)
+                                    // and FOLD_COORDINATES: x, y of the I tile's, then of
+                                    // the Y-Y tile's)
 uniform float reliefStrength;       // 0: flat shading with the geometric normal
 #endif
 uniform vec4 diffuseColour;
@@ -31,6 +34,13 @@ varying vec3 viewTangent;
 varying vec3 lightObject;
 varying vec3 viewObject;
 varying vec3 normalObject;
+
+#if defined(ORIENTED_FOLDS) || defined(FOLD_COORDINATES)
+vec2 slopeOf(vec2 encoded_xy) {
+  vec2 xy = encoded_xy * 2.0 - 1.0;
+  return -xy / sqrt(max(1e-6, 1.0 - dot(xy, xy)));
+}
+#endif
 
 #ifdef ORIENTED_FOLDS
 // foldOrientations(): folds along (p, q), lookup scale k, at degrees from u.
@@ -47,11 +57,6 @@ const vec4 kOrientations[12] = vec4[12](
     vec4(-1.0, 1.0, 2.0, 135.000000),
     vec4(-3.0, 2.0, 1.0, 146.309932),
     vec4(-3.0, 1.0, 1.0, 161.565051));
-
-vec2 slopeOf(vec2 encoded_xy) {
-  vec2 xy = encoded_xy * 2.0 - 1.0;
-  return -xy / sqrt(max(1e-6, 1.0 - dot(xy, xy)));
-}
 
 // Orientation k's slope at patch coordinate uv: the I and Y-Y tiles blended by `strong`, looked
 // up at k [[q, -p], [p, q]] uv and turned back.
@@ -82,6 +87,13 @@ void main() {
   vec2 uv_dx = dFdx(reliefUv), uv_dy = dFdy(reliefUv);
   vec2 slope = (1.0 - t) * orientedSlope(first, reliefUv, uv_dx, uv_dy, strong) +
                t * orientedSlope(second, reliefUv, uv_dx, uv_dy, strong);
+  vec3 n = normalize(vec3(-slope * (reliefStrength * reliefWeight), 1.0));
+#elif defined(FOLD_COORDINATES)
+  // One lookup where the coordinates put it; the tile's x runs across the folds, its y along them.
+  vec2 along = foldAxis / max(length(foldAxis), 1e-6);
+  vec4 texel = texture2D(normalMap, reliefUv);  // continuous coordinates: the implicit mip level holds
+  vec2 g = mix(slopeOf(texel.xy), slopeOf(texel.zw), smoothstep(0.4, 0.8, reliefWeight));  // strongPatternWeight
+  vec2 slope = g.x * vec2(along.y, -along.x) + g.y * along;
   vec3 n = normalize(vec3(-slope * (reliefStrength * reliefWeight), 1.0));
 #else
   vec3 relief = texture2D(normalMap, reliefUv).xyz * 2.0 - 1.0;

@@ -322,6 +322,8 @@ void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, boo
     compression.prepare(*part.mesh, dressed.rest_patches);
     dressed.compressed_layout = part.layout_id;
   }
+  // Coordinates solved before a pause would hold the folds of another pose: start over.
+  if (!cpu_vertices || !wrinkles_wanted_) dressed.fold_coordinates.restart();
   if (!cpu_vertices) {
     part.vertices = GpuVertices{&compression.inverseRestMetric(), compression.strengthConstants()};
   } else if (wrinkles_wanted_ || displaced) {
@@ -329,7 +331,27 @@ void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, boo
     dressed.fold_axes.resize(part.mesh->vertexCount());
     compression.evaluate(*part.mesh, nullptr, dressed.wrinkle_weights.data(), dressed.fold_axes.data());
     part.vertices = CpuVertices{&dressed.wrinkle_weights, &dressed.fold_axes};
+    if (wrinkles_wanted_) solveFoldCoordinates(dressed, part);
   }
+}
+
+void HumanModel::solveFoldCoordinates(DressedGarment& dressed, SurfacePart& part) {
+  const std::vector<BezierPatch>& patches = dressed.garment.patches();
+  const TriangleMesh& grid = dressed.grid_tessellator->tessellate(
+      patches, dressed.garment.topology(), std::vector<int>(patches.size(), FoldCoordinates::kGridLevel));
+  if (!dressed.fold_coordinates.prepared()) {
+    splitPatchCorners(grid, dressed.grid_tessellator->triangleCornerParameters(), dressed.grid_split);
+    dressed.grid_compression.prepare(grid, dressed.rest_patches);
+    dressed.fold_coordinates.prepare(grid, dressed.grid_split);
+  }
+  dressed.grid_strengths.resize(grid.vertexCount());
+  dressed.grid_axes.resize(grid.vertexCount());
+  dressed.grid_compression.evaluate(grid, nullptr, dressed.grid_strengths.data(), dressed.grid_axes.data());
+  dressed.fold_coordinates.solve(dressed.grid_axes, dressed.grid_strengths);
+  dressed.fold_coordinates.sample(*part.mesh, dressed.fold_tiles, dressed.fold_directions);
+  CpuVertices& vertices = std::get<CpuVertices>(part.vertices);
+  vertices.fold_tile = &dressed.fold_tiles;
+  vertices.fold_direction = &dressed.fold_directions;
 }
 
 void HumanModel::displaceAndBound(std::size_t p, const std::vector<int>& levels) {
@@ -344,6 +366,8 @@ void HumanModel::displaceAndBound(std::size_t p, const std::vector<int>& levels)
   const CpuVertices& vertices = std::get<CpuVertices>(part.vertices);  // displaced: always evaluated here
   settings.weights = vertices.relief_weight;
   settings.fold_axes = vertices.fold_axis;
+  settings.fold_tiles = vertices.fold_tile;
+  settings.fold_directions = vertices.fold_direction;
   settings.patch_levels = &levels;
   TriangleMesh& displaced = part_states_[p].displaced;
   displaceMesh(*part.mesh, settings, displaced);

@@ -106,6 +106,15 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
     throw std::invalid_argument("relief displacement: " + std::to_string(displacement.weights->size()) +
                                 " vertex weights for " + std::to_string(n) + " vertices");
   }
+  if ((displacement.fold_tiles != nullptr) != (displacement.fold_directions != nullptr) ||
+      (displacement.fold_tiles != nullptr &&
+       (displacement.fold_tiles->size() != n || displacement.fold_directions->size() != n))) {
+    throw std::invalid_argument("relief displacement: " +
+                                std::to_string(displacement.fold_tiles ? displacement.fold_tiles->size() : 0) +
+                                " fold tile coordinates and " +
+                                std::to_string(displacement.fold_directions ? displacement.fold_directions->size() : 0) +
+                                " fold directions for a mesh of " + std::to_string(n) + " vertices");
+  }
   if (displacement.fold_axes != nullptr && displacement.fold_axes->size() != n) {
     throw std::invalid_argument("relief displacement: " + std::to_string(displacement.fold_axes->size()) +
                                 " fold axes for " + std::to_string(n) + " vertices");
@@ -158,7 +167,12 @@ void displaceMesh(const TriangleMesh& base, const ReliefDisplacement& displaceme
             ? Eigen::Vector2d((*displacement.patch_tiles)[base.vertex_patch[i]].cast<double>())
             : Eigen::Vector2d::Constant(displacement.tiling);
     ReliefSample relief;
-    if (displacement.folds) {
+    if (displacement.folds && displacement.fold_tiles) {
+      const Eigen::Vector2d tile = (*displacement.fold_tiles)[i].cast<double>();
+      const Eigen::Vector2f& along = (*displacement.fold_directions)[i];
+      relief = displacement.fold_mips ? foldCoordinateRelief(*displacement.fold_mips, tile, along, weight, uv_spacing)
+                                      : foldCoordinateRelief(*displacement.folds, tile, along, weight);
+    } else if (displacement.folds) {
       relief = displacement.fold_mips ? orientedFolds(*displacement.fold_mips, uv, axis, weight, uv_spacing)
                                       : orientedFolds(*displacement.folds, uv, axis, weight);
     } else {

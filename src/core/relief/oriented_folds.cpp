@@ -120,6 +120,42 @@ ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, co
                            });
 }
 
+namespace {
+
+// foldCoordinateRelief from the two tiles' samples at the coordinate.
+ReliefSample laidFolds(const ReliefSample& slight, const ReliefSample& strong_sample, const Eigen::Vector2f& direction,
+                       float strength) {
+  const double strong = strongPatternWeight(strength);
+  const Eigen::Vector2d g = (1.0 - strong) * slight.slope + strong * strong_sample.slope;
+  // The tile's x runs across the folds (along (d_v, -d_u)), its y along them (d), as orientation
+  // (1, 0) lays it out: the slope turns back by that rotation and keeps its size.
+  const Eigen::Vector2d d = direction.cast<double>().normalized();
+  ReliefSample sample;
+  sample.height = strength * ((1.0 - strong) * slight.height + strong * strong_sample.height) / kFoldTilesPerPatch;
+  sample.slope = strength * (g.x() * Eigen::Vector2d(d.y(), -d.x()) + g.y() * d);
+  return sample;
+}
+
+}  // namespace
+
+ReliefSample foldCoordinateRelief(const FoldTiles& tiles, const Eigen::Vector2d& tile, const Eigen::Vector2f& direction,
+                                  float strength) {
+  return laidFolds(sampleReliefMap(tiles.slight, tile.x(), tile.y()), sampleReliefMap(tiles.strong, tile.x(), tile.y()),
+                   direction, strength);
+}
+
+ReliefSample foldCoordinateRelief(const FoldTileMips& mips, const Eigen::Vector2d& tile, const Eigen::Vector2f& direction,
+                                  float strength, double uv_spacing) {
+  if (mips.slight.empty() || mips.slight.size() != mips.strong.size()) {
+    throw std::invalid_argument("foldCoordinateRelief: fold tile mip chains of " + std::to_string(mips.slight.size()) +
+                                " and " + std::to_string(mips.strong.size()) + " levels");
+  }
+  // The coordinates run kFoldTilesPerPatch tiles a patch.
+  const double texels = uv_spacing * kFoldTilesPerPatch * mips.slight.front().width;
+  return laidFolds(sampleReliefLevels(mips.slight, tile.x(), tile.y(), texels),
+                   sampleReliefLevels(mips.strong, tile.x(), tile.y(), texels), direction, strength);
+}
+
 FoldTileMips buildFoldTileMips(const FoldTiles& tiles) {
   return FoldTileMips{buildMipChain(tiles.slight), buildMipChain(tiles.strong)};
 }

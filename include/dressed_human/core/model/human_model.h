@@ -21,6 +21,7 @@
 #include "dressed_human/core/surfaces/patch_corner_split.h"
 #include "dressed_human/core/surfaces/skin.h"
 #include "dressed_human/core/surfaces/tessellation.h"
+#include "dressed_human/core/relief/fold_coordinates.h"
 #include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/model/relief_kind.h"
 #include "dressed_human/core/model/skin_relief_tiling.h"
@@ -36,6 +37,11 @@ struct CpuVertices {
   // Garments, per vertex of the mesh: which way the folds run (VertexStretch::fold_axis,
   // oriented_folds.h); null for the skin.
   const std::vector<Eigen::Vector2f>* fold_axis = nullptr;
+  // Garments, per vertex of the mesh: where the fold tile lies (fold_coordinates.h), its tile
+  // coordinate and the folds' signed direction in (u, v); null for the skin, and when the
+  // wrinkles are not wanted.
+  const std::vector<Eigen::Vector2f>* fold_tile = nullptr;
+  const std::vector<Eigen::Vector2f>* fold_direction = nullptr;
 };
 
 // A part the renderer evaluates (VertexEvaluation::kGpu): its mesh is only the layout (uv,
@@ -208,6 +214,15 @@ class HumanModel {
     std::uint64_t compressed_layout = 0;     // Tessellator::layoutId() `compression` was prepared for
     std::vector<float> wrinkle_weights;      // per vertex, last levels used
     std::vector<Eigen::Vector2f> fold_axes;  // per vertex, last levels used
+    // The fold coordinates (fold_coordinates.h): solved every update on the garment's own grid,
+    // whatever the level of detail, and sampled at the drawn vertices.
+    std::unique_ptr<Tessellator> grid_tessellator = std::make_unique<Tessellator>();
+    PatchCornerSplit grid_split;
+    VertexCompression grid_compression;
+    std::vector<float> grid_strengths;
+    std::vector<Eigen::Vector2f> grid_axes;
+    FoldCoordinates fold_coordinates;
+    std::vector<Eigen::Vector2f> fold_tiles, fold_directions;  // per drawn vertex
   };
   struct Displacement {
     std::shared_ptr<const ReliefMap> map;
@@ -230,6 +245,7 @@ class HumanModel {
   const std::vector<int>& withCoveredHidden(std::size_t part, const std::vector<int>& levels, bool hide);
   void tessellate(std::size_t part, const std::vector<int>& levels, bool cpu_vertices);
   void measureWrinkles(DressedGarment& dressed, SurfacePart& part, bool cpu_vertices, bool displaced);
+  void solveFoldCoordinates(DressedGarment& dressed, SurfacePart& part);
   void displaceAndBound(std::size_t part, const std::vector<int>& levels);
 
   HumanModelSettings settings_;

@@ -32,6 +32,10 @@ struct ReliefDisplacement {
   /// shader does; heights are then for a tile one patch across (tiling must be 1).
   const FoldTiles* folds = nullptr;
   const std::vector<Eigen::Vector2f>* fold_axes = nullptr;
+  /// Garments with fold coordinates (fold_coordinates.h; SurfacePart's CpuVertices::fold_tile and
+  /// fold_direction, both or neither): the tiles laid by them (foldCoordinateRelief) instead.
+  const std::vector<Eigen::Vector2f>* fold_tiles = nullptr;
+  const std::vector<Eigen::Vector2f>* fold_directions = nullptr;
   /// Optional filtering, so relief finer than the vertices fades instead of aliasing: the mip
   /// chain of `map` (buildMipChain; of `folds`: buildFoldTileMips) and each patch's tessellation
   /// level (vertices 1 / level apart in patch coordinates). Each vertex then reads the relief at

@@ -79,6 +79,15 @@ struct FoldTiles {
 ReliefSample orientedFolds(const FoldTiles& tiles, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
                            float strength);
 
+/// The relief drawn where the fold tile's coordinates follow the folds (fold_coordinates.h): the
+/// tiles read at tile coordinate `tile` as they are, the slope turned back from the tile's x
+/// (across the folds) and y (along `direction`, the folds' signed direction in (u, v)) to the
+/// patch's (u, v); height in map units for a tile 1 / kFoldTilesPerPatch of a patch across, scaled
+/// by `strength` (the strong tile's share as in orientedFolds). relief_surface.frag
+/// (FOLD_COORDINATES) transcribes this one.
+ReliefSample foldCoordinateRelief(const FoldTiles& tiles, const Eigen::Vector2d& tile, const Eigen::Vector2f& direction,
+                                  float strength);
+
 /// Both tiles' mip chains (buildMipChain), for lookups filtered to a sample spacing.
 struct FoldTileMips {
   std::vector<ReliefMap> slight, strong;
@@ -92,6 +101,11 @@ FoldTileMips buildFoldTileMips(const FoldTiles& tiles);
 /// `uv_spacing` 0 reads level 0: orientedFolds(FoldTiles).
 ReliefSample orientedFolds(const FoldTileMips& mips, const Eigen::Vector2d& uv, const Eigen::Vector2f& fold_axis,
                            float strength, double uv_spacing);
+
+/// foldCoordinateRelief from the tiles' mip chains, filtered for samples `uv_spacing` apart in
+/// patch coordinates, as orientedFolds(FoldTileMips) filters.
+ReliefSample foldCoordinateRelief(const FoldTileMips& mips, const Eigen::Vector2d& tile, const Eigen::Vector2f& direction,
+                                  float strength, double uv_spacing);
 
 /// The texture the shader samples: per pixel the slight tile's normal x, y then the strong
 /// tile's, each (n + 1) / 2 * 255 (z is sqrt(1 - x^2 - y^2), n_z > 0). RGBA, row-major.
