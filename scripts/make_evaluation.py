@@ -687,7 +687,9 @@ standing at rest (every joint at 0: no garment compressed, so no fold may show) 
 then the default relief of the build this run was given as "before" (if any) and of this commit.
 The skin's cells are sized in metres per body region (README, the rviz display); the garments'
 folds are the exact folds blurred by `Fold Softness` (twice as far along the folds as across them)
-and kept as deep as the exact folds.
+and kept as deep as the exact folds, laid along the folds' direction by fold coordinates
+(`fold_coordinates.h`: one pattern that bends with the field, where twelve fixed orientations
+cross-faded two patterns of unrelated phase and read as creases where the direction turns).
 
 {relief_distance}
 
