@@ -21,7 +21,6 @@ const char* const kBaseMaterial = "dressed_human/ReliefSurface";
 const char* const kBezierMaterial = "dressed_human/ReliefBezierSurface";
 const char* const kReliefFragment = "dressed_human/ReliefSurfaceFragment";
 const char* const kPlainFragment = "dressed_human/PlainSurfaceFragment";
-const char* const kFoldFragment = "dressed_human/FoldSurfaceFragment";
 const char* const kFoldCoordinateFragment = "dressed_human/FoldCoordinateFragment";
 const char* const kVertexLitFragment = "dressed_human/VertexLitFragment";
 const char* const kSurfaceVertex = "dressed_human/ReliefSurfaceVertex";
@@ -100,7 +99,7 @@ bool ReliefMaterial::bezierEvaluationAvailable(std::string* why) {
 ReliefMaterial::ReliefMaterial(const std::string& unique_name, bool gpu_vertices, bool oriented_folds)
     : name_(unique_name),
       gpu_vertices_(gpu_vertices),
-      relief_fragment_(oriented_folds ? (gpu_vertices ? kFoldFragment : kFoldCoordinateFragment) : kReliefFragment),
+      relief_fragment_(oriented_folds ? kFoldCoordinateFragment : kReliefFragment),
       normal_channels_(oriented_folds ? 4 : 3) {
   loadMediaOnce();
   material_ = Ogre::MaterialManager::getSingleton()

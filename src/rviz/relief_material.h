@@ -36,9 +36,8 @@ class ReliefMaterial {
 
   // gpu_vertices: the vertex shader evaluates the patches (setPatches), the mesh brings only
   // (u, v, patch) per vertex (SurfaceMeshObject::updateLayout). oriented_folds: a garment's, whose
-  // map holds the two fold tiles (encodeFoldTilesRgba, 4 channels): laid by the vertices' fold
-  // coordinates (FoldCoordinates, CpuVertices::fold_tile) when the CPU evaluates them, turned to
-  // fixed orientations by the fold axis when the vertex shader does (it has no coordinates).
+  // map holds the two fold tiles (encodeFoldTilesRgba, 4 channels), laid by the vertices' fold
+  // coordinates (FoldCoordinates: CpuVertices or GpuVertices::fold_tile and fold_direction).
   ReliefMaterial(const std::string& unique_name, bool gpu_vertices, bool oriented_folds);
   ~ReliefMaterial();
   ReliefMaterial(const ReliefMaterial&) = delete;

@@ -140,30 +140,42 @@ void SurfaceMeshObject::updateLayout(const TriangleMesh& layout, const ReliefTex
                                      const GpuVertices& vertex_data, const std::vector<bool>* hidden_patches,
                                      std::uint64_t layout_id, const Eigen::AlignedBox3f& bounds) {
   const std::vector<Eigen::Vector4f>* inverse_rest_metric = vertex_data.inverse_rest_metric;
+  const std::vector<Eigen::Vector2f>* fold_tile = vertex_data.fold_tile;
+  const std::vector<Eigen::Vector2f>* fold_direction = vertex_data.fold_direction;
   const PatchCornerSplit* corners = texturing.corners;
   const std::uint64_t tiles = texturing.tiles ? texturing.tiles_id : 0;
+  // Fold coordinates change every frame: the layout goes out again with them.
   if (layout_id == 0 || layout_id != layout_id_ || (corners != nullptr) != split_sent_ || tiles != tiles_sent_ ||
-      hidden_patches != hidden_sent_) {
+      hidden_patches != hidden_sent_ || fold_tile != nullptr || attributes_ == VertexAttributes::kLayoutFolds) {
     const std::size_t vertices = layout.uv.size();
-    if (layout.vertex_patch.size() != vertices ||
-        (inverse_rest_metric != nullptr && inverse_rest_metric->size() != vertices)) {
+    const auto count_of = [vertices](const auto* values) { return values ? values->size() : vertices; };
+    if (layout.vertex_patch.size() != vertices || count_of(inverse_rest_metric) != vertices ||
+        count_of(fold_tile) != vertices || count_of(fold_direction) != vertices ||
+        (fold_tile == nullptr) != (fold_direction == nullptr)) {
       throw std::invalid_argument("mesh layout with " + std::to_string(vertices) + " vertices has " +
-                                  std::to_string(layout.vertex_patch.size()) + " vertex patches and " +
-                                  std::to_string(inverse_rest_metric ? inverse_rest_metric->size() : vertices) +
-                                  " rest metrics");
+                                  std::to_string(layout.vertex_patch.size()) + " vertex patches, " +
+                                  std::to_string(count_of(inverse_rest_metric)) + " rest metrics, " +
+                                  (fold_tile ? std::to_string(fold_tile->size()) : std::string("no")) +
+                                  " fold tile coordinates and " +
+                                  (fold_direction ? std::to_string(fold_direction->size()) : std::string("no")) +
+                                  " fold directions");
     }
     checkTexturing(layout, texturing);
     const std::vector<std::uint32_t>& indices = corners ? corners->indices : layout.indices;
     const std::size_t count = corners ? corners->source.size() : vertices;
-    if (!beginFilling(count, indices.size(), VertexAttributes::kLayout)) return;
+    if (!beginFilling(count, indices.size(), fold_tile ? VertexAttributes::kLayoutFolds : VertexAttributes::kLayout))
+      return;
     for (std::size_t i = 0; i < count; ++i) {
       // The owner's (u, v, patch) for the position, so that copies evaluate to the same bits.
       const std::uint32_t v = corners ? corners->source[i] : static_cast<std::uint32_t>(i);
       object_->position(layout.uv[v].x(), layout.uv[v].y(), static_cast<float>(layout.vertex_patch[v]));
       const Eigen::Vector4f metric = inverse_rest_metric ? (*inverse_rest_metric)[v] : Eigen::Vector4f::Zero();
       object_->textureCoord(metric.x(), metric.y(), metric.z(), metric.w());
-      const Eigen::Vector2f uv = reliefCoordinate(layout, texturing, i);
+      // With fold coordinates, the tile coordinate in place of the relief's (u, v), and the folds'
+      // direction (relief_surface.vert, EVALUATE_BEZIER).
+      const Eigen::Vector2f uv = fold_tile ? (*fold_tile)[v] : reliefCoordinate(layout, texturing, i);
       object_->textureCoord(uv.x(), uv.y());
+      if (fold_direction) object_->textureCoord((*fold_direction)[v].x(), (*fold_direction)[v].y());
     }
     addTriangles(indices, layout, hidden_patches);
     object_->end();

@@ -70,7 +70,7 @@ class SurfaceMeshObject {
   std::size_t index_count_ = 0;
   std::size_t rebuild_count_ = 0;  // buffer (re)creations
   // What each vertex of the buffers holds: another set needs another section (its declaration).
-  enum class VertexAttributes { kNone, kShading, kRelief, kLayout };
+  enum class VertexAttributes { kNone, kShading, kRelief, kLayout, kLayoutFolds };
   VertexAttributes attributes_ = VertexAttributes::kNone;
   std::uint64_t layout_id_ = 0;                     // of the layout the buffers hold; 0: evaluated vertices
   bool split_sent_ = false;                         // the buffers hold the corner split of that layout

@@ -1,9 +1,10 @@
 // Close-ups of the garment folds inside the left elbow (jacket) and behind the left knee (pants),
 // bent and straight (the walk cycle's most and least bent poses), three ways (issue 21's figure):
 //   exact      the exact buckling folds (the piecewise-planar tiles) moved into the geometry,
-//              oriented and weighted as the renderer does (displaced geometry, level 64);
-//   bump       what the display draws now: the smooth folds (oriented_folds.h) tilting only the
-//              normals, per vertex of the same fine mesh (the shader does it per pixel);
+//              laid (fold_coordinates.h) and weighted as the renderer does (displaced geometry,
+//              level 64);
+//   bump       what the display draws now: the smooth folds laid by the fold coordinates tilting
+//              only the normals, per vertex of the same fine mesh (the shader does it per pixel);
 //   before     what it drew before issue 21: the exact Y-Y tile once per patch, not oriented,
 //              weighted with the old threshold (0.98), tilting the normals.
 // Writes <out>/closeup_<joint>_<state>_<method>.png and closeups.csv (joint, state, bend);
@@ -15,11 +16,13 @@
 #include "dressed_human/core/model/relief_map_jobs.h"
 #include "dressed_human/core/motion/motion_evaluator.h"
 #include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/relief/fold_coordinates.h"
 #include "dressed_human/core/relief/mesh_displacement.h"
 #include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/render/mesh_rasterizer.h"
 #include "dressed_human/core/skeleton/body_description.h"
 #include "dressed_human/core/skeleton/forward_kinematics.h"
+#include "dressed_human/core/surfaces/patch_corner_split.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,12 +132,31 @@ int run(const std::string& source, const std::string& directory) {
       std::vector<Eigen::Vector2f> axes(mesh.vertexCount());
       compression.evaluate(mesh, nullptr, strength.data(), axes.data());
       previous.evaluate(mesh, nullptr, previous_strength.data());
+      // The fold coordinates as the display solves them: on the garment's own grid, sampled here.
+      Tessellator grid_tessellator;
+      const TriangleMesh& grid = grid_tessellator.tessellate(
+          garment.patches(), garment.topology(), std::vector<int>(garment.patches().size(), FoldCoordinates::kGridLevel));
+      PatchCornerSplit grid_split;
+      splitPatchCorners(grid, grid_tessellator.triangleCornerParameters(), grid_split);
+      VertexCompression grid_compression;
+      grid_compression.prepare(grid, rest);
+      std::vector<float> grid_strength(grid.vertexCount());
+      std::vector<Eigen::Vector2f> grid_axes(grid.vertexCount()), fold_tiles, fold_directions;
+      grid_compression.evaluate(grid, nullptr, grid_strength.data(), grid_axes.data());
+      FoldCoordinates folds;
+      folds.prepare(grid, grid_split);
+      folds.solve(grid_axes, grid_strength);
+      folds.sample(mesh, fold_tiles, fold_directions);
       const float height_to_tile = ReliefMapJobs::clothHeightToTile();
       TriangleMesh exact_mesh, bump_mesh, before_mesh;
-      displaceMesh(mesh, ReliefDisplacement{&exact.strong, 1.0f, height_to_tile, 1.0f, &strength, &exact, &axes},
-                   exact_mesh);
-      displaceMesh(mesh, ReliefDisplacement{&smooth.strong, 1.0f, height_to_tile, 1.0f, &strength, &smooth, &axes},
-                   bump_mesh);
+      ReliefDisplacement exact_folds{&exact.strong, 1.0f, height_to_tile, 1.0f, &strength, &exact, &axes};
+      exact_folds.fold_tiles = &fold_tiles;
+      exact_folds.fold_directions = &fold_directions;
+      displaceMesh(mesh, exact_folds, exact_mesh);
+      ReliefDisplacement smooth_folds = exact_folds;
+      smooth_folds.map = &smooth.strong;
+      smooth_folds.folds = &smooth;
+      displaceMesh(mesh, smooth_folds, bump_mesh);
       displaceMesh(mesh, ReliefDisplacement{&before, 1.0f, height_to_tile, 1.0f, &previous_strength, nullptr, nullptr},
                    before_mesh);
       bump_mesh.positions = mesh.positions;  // bump mapping tilts normals only

@@ -105,7 +105,7 @@ TEST_F(DisplayLifecycleTest, UnseenReliefIsDrawnWithThePlainMaterial) {
   };
   // Too small for the relief is here also too small for per-pixel lighting: lit per vertex.
   const std::string vertex_lit = "dressed_human/VertexLitFragment", plain = "dressed_human/PlainSurfaceFragment",
-                    skin = "dressed_human/ReliefSurfaceFragment", folds = "dressed_human/FoldSurfaceFragment";
+                    skin = "dressed_human/ReliefSurfaceFragment", folds = "dressed_human/FoldCoordinateFragment";
   struct View {
     int height;
     QVariant distance;

@@ -16,9 +16,12 @@ attribute vec3 normal;
 attribute vec3 tangent;
 attribute vec4 uv0;                 // Bezier: the rest metric (a, b, c, det) of G_rest^-1 (garments)
 attribute vec4 uv1;                 // x: how much of the relief shows here (wrinkles follow compression),
-                                    // yz: which way garment folds run (VertexStretch::fold_axis);
-                                    // Bezier: xy the vertex's (u, v) in the patch of its triangles
-                                    // (patch_corner_split.h; `vertex` has its owner patch's)
+                                    // yz: which way garment folds run (their signed direction,
+                                    // FoldCoordinates); Bezier: xy the vertex's (u, v) in the
+                                    // patch of its triangles (patch_corner_split.h; `vertex` has
+                                    // its owner patch's), or a garment's fold tile coordinate
+attribute vec4 uv2;                 // Bezier garments with their wrinkles: xy the folds' signed
+                                    // direction (FoldCoordinates); absent (0, 0) otherwise
 
 uniform mat4 worldViewProj;
 uniform vec4 lightPositionObject;   // w = 0 for rviz's directional light
@@ -114,7 +117,7 @@ void main() {
   reliefUv = uv1.xy;  // one relief tile per patch
   vec2 axis = vec2(0.0);
   reliefWeight = wrinkleWeighting > 0.5 ? wrinkleStrength(uv0, du, dv, axis) : 1.0;
-  foldAxis = axis;
+  foldAxis = uv2.xy;  // the fold coordinates' direction; `axis` (the shader's own) is not signed
 #elif defined(SHADING_ONLY)
   // Lit per vertex, without the relief: the vertices bring no tangent and no texture
   // coordinates (SurfaceMeshObject), and the lighting below needs the normal alone.

@@ -323,9 +323,10 @@ void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, boo
     dressed.compressed_layout = part.layout_id;
   }
   // Coordinates solved before a pause would hold the folds of another pose: start over.
-  if (!cpu_vertices || !wrinkles_wanted_) dressed.fold_coordinates.restart();
+  if (!wrinkles_wanted_) dressed.fold_coordinates.restart();
   if (!cpu_vertices) {
     part.vertices = GpuVertices{&compression.inverseRestMetric(), compression.strengthConstants()};
+    if (wrinkles_wanted_) solveFoldCoordinates(dressed, part);
   } else if (wrinkles_wanted_ || displaced) {
     dressed.wrinkle_weights.resize(part.mesh->vertexCount());
     dressed.fold_axes.resize(part.mesh->vertexCount());
@@ -348,10 +349,14 @@ void HumanModel::solveFoldCoordinates(DressedGarment& dressed, SurfacePart& part
   dressed.grid_axes.resize(grid.vertexCount());
   dressed.grid_compression.evaluate(grid, nullptr, dressed.grid_strengths.data(), dressed.grid_axes.data());
   dressed.fold_coordinates.solve(dressed.grid_axes, dressed.grid_strengths);
+  // The mesh's vertex_patch and uv: filled by tessellate() and by layout() alike.
   dressed.fold_coordinates.sample(*part.mesh, dressed.fold_tiles, dressed.fold_directions);
-  CpuVertices& vertices = std::get<CpuVertices>(part.vertices);
-  vertices.fold_tile = &dressed.fold_tiles;
-  vertices.fold_direction = &dressed.fold_directions;
+  std::visit(
+      [&](auto& vertices) {
+        vertices.fold_tile = &dressed.fold_tiles;
+        vertices.fold_direction = &dressed.fold_directions;
+      },
+      part.vertices);
 }
 
 void HumanModel::displaceAndBound(std::size_t p, const std::vector<int>& levels) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -76,7 +75,6 @@ void FoldCoordinates::prepare(const TriangleMesh& grid, const PatchCornerSplit& 
   edge_weight_.assign(edges_.size(), 0.0f);
   tiles_.assign(vertices, Eigen::Vector2f::Zero());
   directions_.assign(vertices, Eigen::Vector2f::Zero());
-
   rhs_ = residual_ = search_ = product_ = tiles_;
   signed_.assign(vertices, 0);
   queue_.reserve(vertices);

@@ -51,6 +51,10 @@ struct CpuVertices {
 struct GpuVertices {
   const std::vector<Eigen::Vector4f>* inverse_rest_metric = nullptr;  // garments, per vertex; null: the skin
   WrinkleStrengthConstants wrinkle_constants;
+  // Garments, per vertex of the layout, while the wrinkles are wanted: the fold coordinates, as
+  // CpuVertices (solved on the CPU from the posed patches, new every frame).
+  const std::vector<Eigen::Vector2f>* fold_tile = nullptr;
+  const std::vector<Eigen::Vector2f>* fold_direction = nullptr;
 };
 
 struct SurfacePart {

@@ -54,7 +54,8 @@ class FoldCoordinates {
   static constexpr float kHold = 3.0f;
   static constexpr float kFirstHold = 1e-4f;
   /// Conjugate gradient iterations of a first solve, and of every later one by default (from the
-  /// last solution; the frozen pose's creases read the same at 8, 24 and 60).
+  /// last solution: walking, within a tenth of a tile of the converged solution; a pose held
+  /// still converges over its frames).
   static constexpr int kFirstIterations = 400;
   static constexpr int kIterations = 8;
 

@@ -22,7 +22,12 @@
 // the I tile, above 0.8 the Y-Y tile, blended in between: I where compression is slight, the
 // chain that curls around sleeves and legs where it is strong.
 //
-// relief_surface.frag (ORIENTED_FOLDS) transcribes orientedFolds(); the tests hold this one.
+// What the display draws since issue 40 is foldCoordinateRelief: the same tiles laid along the
+// fold direction field by fold coordinates (fold_coordinates.h), since where the folds' angle
+// turns this blend mixes two patterns of unrelated phase, which read as creases. orientedFolds
+// stays for displaced geometry without coordinates and as the reference the coordinates are
+// checked against (at an orientation's own angle both draw the same). relief_surface.frag
+// (FOLD_COORDINATES) transcribes foldCoordinateRelief(); the tests hold this one.
 #pragma once
 
 #include <array>
