@@ -14,6 +14,7 @@
 #include "dressed_human/core/relief/oriented_folds.h"
 #include "dressed_human/core/relief/vertex_compression.h"
 #include "dressed_human/core/surfaces/patch_corner_split.h"
+#include "allocation_counter.h"
 #include "garment_test_support.h"
 
 namespace dressed_human {
@@ -302,6 +303,27 @@ TEST(FoldCoordinates, DrawnAsTheFixedOrientationDrawsTheSameFolds) {
       }
     }
   }
+}
+
+// Every frame of a drawn garment: once sized, a solve and a sample allocate nothing.
+TEST(FoldCoordinates, AFrameAllocatesNothing) {
+  JacketGrid g;
+  FoldCoordinates folds;
+  folds.prepare(g.grid, g.split);
+  const std::size_t nodes = g.grid.vertexCount();
+  const std::vector<Eigen::Vector2f> axes(nodes, axisOfFoldsAt(0.4));
+  const std::vector<float> strengths(nodes, 0.7f);
+  std::vector<Eigen::Vector2f> tiles, directions;
+  folds.solve(axes, strengths);
+  folds.sample(g.grid, tiles, directions);
+  allocation_count = 0;
+  counting_allocations = true;
+  for (int frame = 0; frame < 3; ++frame) {
+    folds.solve(axes, strengths);
+    folds.sample(g.grid, tiles, directions);
+  }
+  counting_allocations = false;
+  EXPECT_EQ(allocation_count.load(), 0);
 }
 
 TEST(FoldCoordinates, BadInputIsRefusedByName) {

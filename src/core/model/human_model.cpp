@@ -338,8 +338,9 @@ void HumanModel::measureWrinkles(DressedGarment& dressed, SurfacePart& part, boo
 
 void HumanModel::solveFoldCoordinates(DressedGarment& dressed, SurfacePart& part) {
   const std::vector<BezierPatch>& patches = dressed.garment.patches();
-  const TriangleMesh& grid = dressed.grid_tessellator->tessellate(
-      patches, dressed.garment.topology(), std::vector<int>(patches.size(), FoldCoordinates::kGridLevel));
+  dressed.grid_levels.resize(patches.size(), FoldCoordinates::kGridLevel);
+  const TriangleMesh& grid =
+      dressed.grid_tessellator->tessellate(patches, dressed.garment.topology(), dressed.grid_levels);
   if (!dressed.fold_coordinates.prepared()) {
     splitPatchCorners(grid, dressed.grid_tessellator->triangleCornerParameters(), dressed.grid_split);
     dressed.grid_compression.prepare(grid, dressed.rest_patches);

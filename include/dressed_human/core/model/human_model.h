@@ -221,6 +221,7 @@ class HumanModel {
     // The fold coordinates (fold_coordinates.h): solved every update on the garment's own grid,
     // whatever the level of detail, and sampled at the drawn vertices.
     std::unique_ptr<Tessellator> grid_tessellator = std::make_unique<Tessellator>();
+    std::vector<int> grid_levels;  // FoldCoordinates::kGridLevel per patch
     PatchCornerSplit grid_split;
     VertexCompression grid_compression;
     std::vector<float> grid_strengths;
