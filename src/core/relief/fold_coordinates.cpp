@@ -15,9 +15,8 @@ constexpr std::uint32_t kMissing = 0xffffffffu;
 
 // The folds' direction at a node as the renderer reads it: the fold axis is a double angle.
 Eigen::Vector2f foldDirection(const Eigen::Vector2f& fold_axis) {
-  const Eigen::Vector2f axis = fold_axis + Eigen::Vector2f(-kFoldAxisBias, 0.0f);
-  const float angle = 0.5f * std::atan2(axis.y(), axis.x());
-  return {std::cos(angle), std::sin(angle)};
+  const double angle = foldAngle(fold_axis);
+  return Eigen::Vector2d(std::cos(angle), std::sin(angle)).cast<float>();
 }
 
 float sum(const std::vector<Eigen::Vector2f>& a, const std::vector<Eigen::Vector2f>& b, int k) {

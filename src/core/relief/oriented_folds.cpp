@@ -39,10 +39,14 @@ const std::array<FoldOrientation, kFoldOrientations>& foldOrientations() {
   return orientations;
 }
 
-FoldBlend foldOrientationBlend(const Eigen::Vector2f& fold_axis) {
+double foldAngle(const Eigen::Vector2f& fold_axis) {
   const Eigen::Vector2f axis = fold_axis + Eigen::Vector2f(-kFoldAxisBias, 0.0f);
-  // The folds' angle in [0, 180): half the double angle.
-  double degrees = 0.5 * std::atan2(static_cast<double>(axis.y()), static_cast<double>(axis.x())) * 180.0 / kPi;
+  return 0.5 * std::atan2(static_cast<double>(axis.y()), static_cast<double>(axis.x()));
+}
+
+FoldBlend foldOrientationBlend(const Eigen::Vector2f& fold_axis) {
+  // The folds' angle in [0, 180).
+  double degrees = foldAngle(fold_axis) * 180.0 / kPi;
   if (degrees < 0.0) degrees += 180.0;
   const auto& table = foldOrientations();
   int first = kFoldOrientations - 1;

@@ -56,6 +56,9 @@ struct FoldOrientation {
 };
 const std::array<FoldOrientation, kFoldOrientations>& foldOrientations();
 
+/// The folds' angle from u (radians, in (-pi/2, pi/2]): half the fold axis's double angle, with
+/// kFoldAxisBias taken off its first component (where no direction is preferred: folds along v).
+double foldAngle(const Eigen::Vector2f& fold_axis);
 /// The two orientations either side of the fold axis's angle and their weights (summing to 1).
 struct FoldBlend {
   int first = 0, second = 1;
