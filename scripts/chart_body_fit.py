@@ -46,7 +46,7 @@ def sweep(tool, capture, name, extra):
 
 def table(rows):
     lines = ["| order m | angle RMS mean / worst (deg) | joints, fitted body: mean / max (cm) | "
-             "joints, default body: mean / max (cm) | feet in stance, fitted: mean / max (cm) |",
+             "joints, default body: mean / max (cm) | sole in stance off one floor, fitted: mean / max (cm) |",
              "|---|---|---|---|---|"]
     for r in rows:
         lines.append("| %s | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f |" % (
@@ -58,7 +58,7 @@ def table(rows):
 
 def reportLines(report):
     summary = [line.strip() for line in report.splitlines()
-               if line.strip().startswith(("Body fitted", "Lowest foot point"))]
+               if line.strip().startswith(("Body fitted", "Our sole in stance"))]
     per_joint = [line.strip() for line in report.splitlines() if re.match(r"^ {4}[a-z_]+ +mean ", line)]
     return summary, per_joint
 

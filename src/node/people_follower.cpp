@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dressed_human/core/locomotion/normative_gait.h"
+#include "drawn_feet.h"
 #include "parameters.h"
 #include "people_messages.h"
 
@@ -28,8 +29,9 @@ PeopleFollower::PeopleFollower(ros::NodeHandle node, const CrowdPublisherSetting
       topic_(node.resolveName(topic)),
       skeleton_(crowdSkeleton(Parameters(node).requiredText("robot_description"))) {
   const Motion motion = crowdMotion(settings_.motion_file);
-  gait_ =
-      std::make_unique<SpeedGait>(motion, loadNormativeGaitFile(settings_.gait_file), skeleton_, skeleton_.bodyShape());
+  const BodyDescription body = drawnBody(settings_.body_file, skeleton_, Parameters(ros::NodeHandle("~")));
+  gait_ = std::make_unique<SpeedGait>(motion, loadNormativeGaitFile(settings_.gait_file), skeleton_,
+                                      skeleton_.bodyShape(), FootSoles(skeleton_, skeleton_.bodyShape(), body));
   TrackedCrowdSettings crowd_settings;
   crowd_settings.track.smoothing = smoothing;
   crowd_ = std::make_unique<TrackedCrowd>(

@@ -8,6 +8,7 @@
 #include <ros/package.h>
 
 #include "dressed_human/core/motion/motion_file.h"
+#include "drawn_feet.h"
 #include "parameters.h"
 #include "tick_clock.h"
 #include "transform_messages.h"
@@ -55,6 +56,7 @@ void readWalkSettings(const Parameters& parameters, const std::string& package, 
                          s.route_end + "'");
   }
   s.gait_file = parameters.text("gait_file", package.empty() ? "" : package + "/config/gait/speed_gaits.yaml");
+  s.body_file = bodyFileParameter(parameters, package);
   try {
     s.speed = parameters.numberIn("speed", s.speed, 0.0, WalkerSettings::kMaxSpeed, "m/s");
   } catch (const ParameterError& error) {
@@ -148,9 +150,11 @@ SkeletonPublisher::SkeletonPublisher(ros::NodeHandle node, ros::NodeHandle priva
 
 void SkeletonPublisher::startWalking(const Skeleton& skeleton, const Motion& motion, ros::NodeHandle& private_node) {
   const NormativeGait normative = loadNormativeGaitFile(settings_.gait_file);  // LocomotionError names the file
+  const BodyDescription body = drawnBody(settings_.body_file, skeleton, Parameters(private_node));
   try {
-    walker_ = std::make_unique<Walker>(skeleton, skeleton.bodyShape(),
-                                       SpeedGait(motion, normative, skeleton, skeleton.bodyShape()));
+    walker_ = std::make_unique<Walker>(
+        skeleton, skeleton.bodyShape(),
+        SpeedGait(motion, normative, skeleton, skeleton.bodyShape(), FootSoles(skeleton, skeleton.bodyShape(), body)));
   } catch (const LocomotionError& error) {
     ROS_ERROR("skeleton_publisher: %s; replaying it as recorded (parameter %s is 'walk')", error.what(),
               private_node.resolveName("mode").c_str());

@@ -28,6 +28,7 @@ struct SkeletonPublisherSettings {
   std::string route_end = "loop";          // "loop" or "stand" (stop at the last waypoint)
   double speed = 1.2;                      // m/s along the route; 0: stand
   std::string gait_file;                   // the normative gait table (config/gait/speed_gaits.yaml)
+  std::string body_file;                   // the drawn body, whose feet the walk plants (drawn_feet.h)
   double rate = 100.0;                     // Hz
   double speed_factor = 1.0;               // motion seconds per ROS second
   double start_phase = 0.0;                // radians of the motion cycle at start

@@ -31,6 +31,8 @@
 #include "dressed_human/core/motion/opensim_capture.h"
 #include "dressed_human/core/motion/opensim_motion_file.h"
 #include "dressed_human/core/skeleton/skeleton.h"
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/skeleton/foot_sole.h"
 
 namespace dh = dressed_human;
 
@@ -52,6 +54,8 @@ const char* const kUsage =
     "  --osim FILE           OpenSim input: the model (OpenSim 4 .osim) the motion is of; its joints give the\n"
     "                        body and the reference (default: config/opensim/gait2392_joints.osim, gait2392)\n"
     "  --urdf FILE           our skeleton (default: urdf/human.urdf)\n"
+    "  --body-description FILE  our drawn body, whose feet stand flat where the capture's do\n"
+    "                        (default: config/bodies/default.yaml beside the URDF's folder)\n"
     "  --period SECONDS      gait period (default: estimated by autocorrelation; needs two cycles)\n"
     "  --tolerance-deg D     RMS residual every angle series must reach, degrees (default 0.5)\n"
     "  --tolerance-mm MM     RMS residual every root translation series must reach, mm (default 2)\n"
@@ -82,6 +86,7 @@ struct Arguments {
   std::string format;
   std::string map;
   std::string urdf = "urdf/human.urdf";
+  std::string body_description;  // "": config/bodies/default.yaml beside the URDF's folder
   std::string osim = "config/opensim/gait2392_joints.osim";
   bool osim_given = false;
   std::string name;
@@ -191,6 +196,8 @@ Arguments parseArguments(int argc, char** argv) {
       args.osim_given = true;
     } else if (arg == "--urdf") {
       args.urdf = value();
+    } else if (arg == "--body-description") {
+      args.body_description = value();
     } else if (arg == "--period") {
       args.fit.period =
           parseNumberWithin(arg, value(), dh::MotionLimits::kMinPeriod, dh::MotionLimits::kMaxPeriod, " s");
@@ -253,6 +260,11 @@ Arguments parseArguments(int argc, char** argv) {
   }
   if (args.name.empty()) args.name = stem(args.input);
   args.fit.name = args.name;
+  if (args.body_description.empty()) {  // the package's, beside the URDF's folder
+    const std::size_t slash = args.urdf.find_last_of('/');
+    args.body_description =
+        (slash == std::string::npos ? "." : args.urdf.substr(0, slash)) + "/../config/bodies/default.yaml";
+  }
   return args;
 }
 
@@ -262,6 +274,8 @@ dh::SampledMotion readCapture(const Arguments& args, const dh::Skeleton& skeleto
   dh::RetargetOptions options;
   options.fit_body = fit_body;
   options.units = args.units;
+  options.body =
+      std::make_shared<const dh::BodyDescription>(dh::loadBodyDescriptionFile(args.body_description, skeleton));
   if (args.format == "bvh") {
     const dh::BvhClip clip = dh::loadBvhFile(args.input);
     if (!args.map.empty() && map_file.kind != "bvh") {
@@ -396,8 +410,8 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
          << (sampled.rest_frame >= 0 ? " (the file's zero pose does not stand: frame " +
                                            std::to_string(sampled.rest_frame + 1) + " is taken as the rest pose)"
                                      : std::string())
-         << " (units: " << sampled.units.name << ", " << sampled.units.reason
-         << "; limbs " << format(sampled.proportions.overall, 3) << "x ours).\n"
+         << " (units: " << sampled.units.name << ", " << sampled.units.reason << "; limbs "
+         << format(sampled.proportions.overall, 3) << "x ours).\n"
          << "Joint positions vs the capture's own FK (metres, every mapped joint and frame, root-relative): mean "
          << format(accuracy.against_capture.mean_cm, 2) << " cm, max " << format(accuracy.against_capture.max_cm, 2)
          << " cm";
@@ -407,8 +421,9 @@ std::string accuracyText(const dh::SampledMotion& sampled, const dh::FitAccuracy
            << format(default_body->against_capture.max_cm, 2) << " cm)";
     }
     if (accuracy.stance_foot_height.samples > 0) {
-      text << "\nLowest foot point in stance vs the capture's: mean " << format(accuracy.stance_foot_height.mean_cm, 2)
-           << " cm, max " << format(accuracy.stance_foot_height.max_cm, 2) << " cm (the capture's floor rises "
+      text << "\nOur sole in stance off one floor, as the capture's lowest foot point: mean "
+           << format(accuracy.stance_foot_height.mean_cm, 2) << " cm, max "
+           << format(accuracy.stance_foot_height.max_cm, 2) << " cm (the capture's floor rises "
            << format(100.0 * sampled.floor_rise_per_second, 2) << " cm/s along the record: levelled)";
     }
   } else {
@@ -495,8 +510,8 @@ void report(const Arguments& args, const dh::SampledMotion& sampled, const dh::M
     // What no periodic motion can beat: the capture's cycles differ from one another.
     const dh::PositionError& v = accuracy.capture_cycle_variation;
     out << "  the capture's cycle-to-cycle variation (its joints vs the mean of its " << fit.cycles
-        << " cycles at the same phase): mean " << format(v.mean_cm, 2) << " cm, max " << format(v.max_cm, 2)
-        << " cm (" << dh::humanJointNames()[static_cast<std::size_t>(v.worst_joint)] << " at frame "
+        << " cycles at the same phase): mean " << format(v.mean_cm, 2) << " cm, max " << format(v.max_cm, 2) << " cm ("
+        << dh::humanJointNames()[static_cast<std::size_t>(v.worst_joint)] << " at frame "
         << fit.skipped_frames + v.worst_frame << ")\n";
   }
   out << "  joint positions, fitted series vs our skeleton on the unsmoothed angles: mean "

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "dressed_human/core/skeleton/body_description.h"
 #include "dressed_human/core/io/pedestrian_trajectories.h"
 #include "dressed_human/core/locomotion/normative_gait.h"
 #include "dressed_human/core/locomotion/stance_slide.h"
@@ -174,8 +175,10 @@ int main(int argc, char** argv) {
       }
     }
     const Skeleton skeleton = Skeleton::fromUrdfFile(source + "/urdf/human.urdf");
+    const BodyDescription body = loadBodyDescriptionFile(source + "/config/bodies/default.yaml", skeleton);
     const SpeedGait gait(loadMotionFile(source + "/config/motions/walk.yaml"),
-                         loadNormativeGaitFile(source + "/config/gait/speed_gaits.yaml"), skeleton, BodyShape());
+                         loadNormativeGaitFile(source + "/config/gait/speed_gaits.yaml"), skeleton, BodyShape(),
+                         FootSoles(skeleton, BodyShape(), body));
     std::printf(
         "file,rate_hz,smoothing_s,delay_s,tracks_1s,tracks_1s_drawn,latest_appearance_s,latest_leave_s,"
         "root_median_m,root_p95_m,heading_p95_deg,slide_median_mm,slide_p95_mm,lowest_sole_mm,most_humans,"

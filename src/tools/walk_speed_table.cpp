@@ -4,11 +4,14 @@
 // constant speed). scripts/chart_walk_speed.py draws docs/walk_speed.png from the two CSV files.
 //
 // Usage: walk_speed_table <source_directory> <output_directory>
+#include <algorithm>
 #include <exception>
 #include <fstream>
 #include <iostream>
 #include <string>
 
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/locomotion/foot_contact.h"
 #include "dressed_human/core/locomotion/stance_slide.h"
 #include "dressed_human/core/locomotion/walker.h"
 #include "dressed_human/core/motion/motion_evaluator.h"
@@ -22,9 +25,9 @@ constexpr double kStep = 0.01;     // s, the node's default 100 Hz
 constexpr double kSettle = 3.0;    // s before measuring
 constexpr double kMeasure = 10.0;  // s measured
 
-// Planted: a Walker driven straight at `speed`.
+// Planted: a Walker driven straight at `speed`; its feet's contact with the ground in `contact`.
 double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double speed, double& travelled_speed,
-                    double& lowest) {
+                    double& lowest, FootContactMeter& contact) {
   Walker walker(skeleton, BodyShape(), gait);
   walker.place({0.0, 0.0}, 0.0);
   walker.drive(speed, 0.0);
@@ -35,7 +38,10 @@ double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double spee
   for (int i = 0; i < static_cast<int>((kSettle + kMeasure) / kStep); ++i) {
     walker.step(kStep, angles, pose);
     if (i == static_cast<int>(kSettle / kStep)) start = walker.position().x();
-    if (i >= static_cast<int>(kSettle / kStep)) meter.add(walker.feet(), pose);
+    if (i >= static_cast<int>(kSettle / kStep)) {
+      meter.add(walker.feet(), pose);
+      contact.add(walker.feet().soles(), pose);
+    }
   }
   travelled_speed = (walker.position().x() - start) / kMeasure;
   lowest = meter.lowest;
@@ -43,10 +49,11 @@ double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double spee
 }
 
 // The old playback: the fitted walk at speed_factor = speed / its own speed, root x = speed t.
-double playbackSlide(const Skeleton& skeleton, const Motion& walk, double speed, double& lowest) {
+double playbackSlide(const Skeleton& skeleton, const Motion& walk, const FootSoles& soles, double speed,
+                     double& lowest) {
   MotionEvaluator evaluator(walk);
   ForwardKinematics kinematics(skeleton);
-  PlantedFeet feet(skeleton, BodyShape());
+  PlantedFeet feet(soles);
   const double factor = speed / walk.root.forward_speed;
   JointAngles angles;
   RigidTransform root;
@@ -64,7 +71,9 @@ double playbackSlide(const Skeleton& skeleton, const Motion& walk, double speed,
 int run(const std::string& source, const std::string& output) {
   const Skeleton skeleton = Skeleton::fromUrdfFile(source + "/urdf/human.urdf");
   const Motion walk = loadMotionFile(source + "/config/motions/walk.yaml");
-  const SpeedGait gait(walk, loadNormativeGaitFile(source + "/config/gait/speed_gaits.yaml"), skeleton, BodyShape());
+  const BodyDescription body = loadBodyDescriptionFile(source + "/config/bodies/default.yaml", skeleton);
+  const SpeedGait gait(walk, loadNormativeGaitFile(source + "/config/gait/speed_gaits.yaml"), skeleton, BodyShape(),
+                       FootSoles(skeleton, BodyShape(), body));
 
   std::ofstream trend(output + "/walk_speed_trend.csv");
   trend << "speed_m_s,our_stride_m,our_cadence_steps_min,normative_stride_m,normative_cadence_steps_min\n";
@@ -74,13 +83,18 @@ int run(const std::string& source, const std::string& output) {
   }
   std::ofstream slides(output + "/walk_slide.csv");
   slides << "speed_m_s,planted_worst_slide_mm,playback_worst_slide_mm,planted_travel_m_s,planted_lowest_sole_mm,"
-            "playback_lowest_sole_mm\n";
+            "playback_lowest_sole_mm,stance_percent,flat_percent_of_stance,heel_first_percent\n";
   for (double speed = 0.6; speed <= 1.81; speed += 0.2) {
     double travelled = 0.0, planted_lowest = 0.0, playback_lowest = 0.0;
-    const double planted = plantedSlide(skeleton, gait, speed, travelled, planted_lowest);
-    const double playback = playbackSlide(skeleton, walk, speed, playback_lowest);
+    FootContactMeter contact;
+    const double planted = plantedSlide(skeleton, gait, speed, travelled, planted_lowest, contact);
+    const double playback = playbackSlide(skeleton, walk, gait.soles(), speed, playback_lowest);
     slides << speed << ',' << planted * 1e3 << ',' << playback * 1e3 << ',' << travelled << ',' << planted_lowest * 1e3
-           << ',' << playback_lowest * 1e3 << '\n';
+           << ',' << playback_lowest * 1e3 << ',' << 50.0 * (contact.stanceShare(0) + contact.stanceShare(1)) << ','
+           << 50.0 * (contact.flatShareOfStance(0) + contact.flatShareOfStance(1)) << ','
+           << 100.0 * static_cast<double>(contact.heelFirstStances(0) + contact.heelFirstStances(1)) /
+                  static_cast<double>(std::max<std::size_t>(1, contact.stances(0) + contact.stances(1)))
+           << '\n';
   }
   std::cout << "wrote " << output << "/walk_speed_trend.csv and walk_slide.csv\n";
   return 0;

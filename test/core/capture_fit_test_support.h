@@ -1,10 +1,12 @@
 #pragma once
-// A CMU capture retargeted (on its fitted body or on ours), fitted with the default options and
-// measured against the capture; and two such fits compared on our skeleton's floor.
+// A CMU capture retargeted (on its fitted body or on ours) with our drawn feet, as fit_motion does,
+// fitted with the default options and measured against the capture; and two such fits compared on
+// our skeleton's floor.
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "dressed_human/core/motion/bvh_file.h"
@@ -24,6 +26,8 @@ inline FittedCapture fitCmuCapture(const Skeleton& skeleton, const BvhClip& clip
                                    bool fit_body) {
   RetargetOptions options;
   options.fit_body = fit_body;
+  options.body = std::make_shared<const BodyDescription>(
+      loadBodyDescriptionFile(std::string(DRESSED_HUMAN_SOURCE_DIR) + "/config/bodies/default.yaml", skeleton));
   FittedCapture fitted;
   fitted.sampled = retargetBvh(clip, chooseBvhJointMap(clip, path), skeleton, path, options);
   if (fit_body) {

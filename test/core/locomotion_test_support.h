@@ -9,6 +9,7 @@
 #include "dressed_human/core/locomotion/stance_slide.h"
 #include "dressed_human/core/locomotion/walker.h"
 #include "dressed_human/core/motion/motion_file.h"
+#include "dressed_human/core/skeleton/body_description.h"
 
 namespace dressed_human {
 namespace locomotion_test {
@@ -29,8 +30,13 @@ inline const NormativeGait& normative() {
   static const NormativeGait g = loadNormativeGaitFile(sourcePath("config/gait/speed_gaits.yaml"));
   return g;
 }
+inline const BodyDescription& body() {
+  static const BodyDescription b = loadBodyDescriptionFile(sourcePath("config/bodies/default.yaml"), skeleton());
+  return b;
+}
+inline FootSoles soles() { return FootSoles(skeleton(), BodyShape(), body()); }
 inline const SpeedGait& gait() {
-  static const SpeedGait g(walk(), normative(), skeleton(), BodyShape());
+  static const SpeedGait g(walk(), normative(), skeleton(), BodyShape(), soles());
   return g;
 }
 inline Walker walker() { return Walker(skeleton(), BodyShape(), gait()); }

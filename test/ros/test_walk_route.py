@@ -7,10 +7,11 @@ import math
 import sys
 import threading
 import unittest
-import xml.etree.ElementTree as ElementTree
 
 import numpy as np
+import rospkg
 import rospy
+import yaml
 import rostest
 from geometry_msgs.msg import PoseStamped, Twist
 from nav_msgs.msg import Path
@@ -20,6 +21,8 @@ from tf2_msgs.msg import TFMessage
 WAYPOINTS = [(1.0, 0.0), (5.0, 0.0), (5.0, 3.0), (1.0, 3.0)]
 MAX_TURN_RATE = 2.0  # rad/s, RouteFollowerSettings
 BAND = 0.005         # m: a sole point this near the ground is on it
+CAP_POINTS = 4       # over a toe cap's dome (foot_sole.cpp)
+STEP_CLEARANCE = 0.01  # m: a foot that has been this high and lands again has stepped
 NODE = "/skeleton_publisher"
 
 
@@ -34,15 +37,21 @@ def matrix(transform):
     return m
 
 
-def sole_points(urdf_text):
-    """The soles as the node plants them (PlantedFeet): heel, middle and toe on the underside
-    (+x) of each foot link's cylinder."""
-    robot = ElementTree.fromstring(urdf_text)
+def sole_points(body_file):
+    """The soles as the node plants them (FootSoles of the drawn body, its ~body_file): the
+    bottom (+x) of each section of the foot, then over the toe cap's dome to its tip."""
+    with open(body_file) as f:
+        segments = yaml.safe_load(f)["segments"]
     points = {}
     for foot in ("l_ankle", "r_ankle"):
-        cylinder = robot.find("link[@name='%s']/visual/geometry/cylinder" % foot)
-        radius, length = float(cylinder.get("radius")), float(cylinder.get("length"))
-        points[foot] = [np.array([radius, 0.0, length * k / 2.0, 1.0]) for k in range(3)]
+        segment = next(s for s in segments if s["bone"] == foot)
+        sections = segment["sections"]
+        points[foot] = [np.array([radius_x, 0.0, z, 1.0]) for z, radius_x, _ in sections]
+        z, radius_x, _ = sections[-1]
+        for k in range(1, CAP_POINTS + 1):
+            angle = 0.5 * math.pi * k / CAP_POINTS
+            points[foot].append(np.array([radius_x * math.cos(angle), 0.0,
+                                          z + segment.get("distal_cap", 0.0) * math.sin(angle), 1.0]))
     return points
 
 
@@ -93,18 +102,23 @@ class Recorder:
 
 def ground(samples):
     """Per foot its lowest sole point's spells on the ground: the worst slide in one; the lowest
-    any sole point got; touchdown times (a foot's lowest point entering the band)."""
+    any sole point got; touchdown times (a foot's lowest point entering the band after it has
+    swung higher than STEP_CLEARANCE: a foot rolling off its toes is lifted 8 mm clear for a frame
+    at some handovers, PlantedFeet::kSwingClearance, and that is not a step)."""
     slides, lowest, touchdowns = [0.0], 1e9, []
-    state = {}
+    state, swung = {}, {}
     for time, _, _, feet in samples:
         for foot, points in feet.items():
             k = min(range(len(points)), key=lambda i: points[i][2])
             lowest = min(lowest, points[k][2])
             current = k if points[k][2] < BAND else None
+            if points[k][2] > STEP_CLEARANCE:
+                swung[foot] = True
             last = state.get(foot)
             if last is None or last[0] != current:
-                if last is not None and last[0] is None and current is not None:
+                if last is not None and last[0] is None and current is not None and swung.get(foot):
                     touchdowns.append(time)
+                    swung[foot] = False
                 state[foot] = (current, points[k][:2].copy(), 0.0)
             elif current is not None:
                 slid = max(last[2], float(np.linalg.norm(points[k][:2] - last[1])))
@@ -120,7 +134,8 @@ class WalkRouteTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node("walk_route_test")
-        soles = sole_points(rospy.get_param("/robot_description"))
+        soles = sole_points(rospy.get_param(NODE + "/body_file",
+                                            rospkg.RosPack().get_path("dressed_human") + "/config/bodies/default.yaml"))
         cls.recorder = Recorder(soles)
         rospy.Subscriber("/rosout", Log, lambda m: cls.warnings.append(m.msg) if m.level >= Log.WARN else None)
         cls.twist = rospy.Publisher(NODE + "/cmd_vel", Twist, queue_size=10)

@@ -40,9 +40,10 @@ NormativeGait parseNormativeGaitYaml(const std::string& yaml_text, const std::st
     const std::string key = "classes[" + std::to_string(i) + "]";
     const YAML::Node entry = classes[i];
     reader.requireMap(entry, key);
-    reader.rejectUnknownKeys(entry, key,
-                             {"name", "dimensionless_speed", "dimensionless_cadence", "dimensionless_stride",
-                              "speed_range", "foot_off_percent", "curves"});
+    reader.rejectUnknownKeys(
+        entry, key,
+        {"name", "dimensionless_speed", "dimensionless_cadence", "dimensionless_cadence_sd", "dimensionless_stride",
+         "dimensionless_stride_sd", "speed_range", "foot_off_percent", "curves"});
     NormativeGaitClass c;
     c.name = reader.text(reader.require(entry, "name", key), key + ".name");
     // Dimensionless walking: 0.05 is a shuffle, 1.0 the walk-run transition (Froude number 1).
@@ -52,6 +53,15 @@ NormativeGait parseNormativeGaitYaml(const std::string& yaml_text, const std::st
                                     0.05, 2.0, "");
     c.stride = reader.numberWithin(reader.require(entry, "dimensionless_stride", key), key + ".dimensionless_stride",
                                    0.1, 4.0, "");
+    // Optional: how much the class's subjects differ (0: not given).
+    if (entry["dimensionless_cadence_sd"]) {
+      c.cadence_sd =
+          reader.numberWithin(entry["dimensionless_cadence_sd"], key + ".dimensionless_cadence_sd", 0.0, 1.0, "");
+    }
+    if (entry["dimensionless_stride_sd"]) {
+      c.stride_sd =
+          reader.numberWithin(entry["dimensionless_stride_sd"], key + ".dimensionless_stride_sd", 0.0, 2.0, "");
+    }
     if (!gait.classes.empty() && c.speed <= gait.classes.back().speed) {
       reader.fail(entry, key + ".dimensionless_speed", "the classes must be listed by increasing speed");
     }
@@ -60,6 +70,8 @@ NormativeGait parseNormativeGaitYaml(const std::string& yaml_text, const std::st
     for (const char* name : kSagittalCurves) {
       c.curves[name] = readCurve(reader, reader.require(curves, name, key + ".curves"), key + ".curves." + name);
     }
+    c.curves[kPelvisTiltCurve] = readCurve(reader, reader.require(curves, kPelvisTiltCurve, key + ".curves"),
+                                           key + ".curves." + kPelvisTiltCurve);
     gait.classes.push_back(std::move(c));
   }
   return gait;

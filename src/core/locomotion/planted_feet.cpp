@@ -1,38 +1,19 @@
 #include "dressed_human/core/locomotion/planted_feet.h"
 
-#include <stdexcept>
+#include <utility>
 
 namespace dressed_human {
 
-PlantedFeet::PlantedFeet(const Skeleton& skeleton, const BodyShape& shape) {
-  const std::array<const char*, 2> feet = {"l_ankle", "r_ankle"};
-  for (std::size_t side = 0; side < 2; ++side) {
-    const int bone = skeleton.findBone(feet[side]);
-    if (bone < 0) throw std::invalid_argument(std::string("the skeleton has no foot bone ") + feet[side]);
-    foot_bone_[side] = bone;
-    const Bone& foot = skeleton.bone(static_cast<std::size_t>(bone));
-    const Eigen::Vector3d& scale = shape.scale[static_cast<std::size_t>(bone)];
-    // The foot's +x points to the sole; +z runs from the ankle to the toes.
-    for (std::size_t k = 0; k < kPointsPerFoot; ++k) {
-      const double along = foot.length * static_cast<double>(k) / static_cast<double>(kPointsPerFoot - 1);
-      in_foot_[side * kPointsPerFoot + k] = Eigen::Vector3d(foot.radius * scale.x(), 0.0, along * scale.z());
-    }
-  }
-}
+PlantedFeet::PlantedFeet(FootSoles soles) : soles_(std::move(soles)), relative_(soles_.pointCount()) {}
 
 void PlantedFeet::reset(const Eigen::Vector2d& root_xy) {
   anchored_ = false;
   start_xy_ = root_xy;
 }
 
-Eigen::Vector3d PlantedFeet::solePoint(const SkeletonPose& pose, std::size_t point) const {
-  const RigidTransform& foot = pose.bone_in_world[static_cast<std::size_t>(foot_bone_[isLeft(point) ? 0 : 1])];
-  return foot.translation + foot.rotation * in_foot_[point];
-}
-
 Eigen::Vector3d PlantedFeet::place(const SkeletonPose& pose_at_origin, double dt) {
   std::size_t lowest = 0;
-  for (std::size_t p = 0; p < kPointCount; ++p) {
+  for (std::size_t p = 0; p < relative_.size(); ++p) {
     relative_[p] = solePoint(pose_at_origin, p) - pose_at_origin.root.translation;
     if (relative_[p].z() < relative_[lowest].z()) lowest = p;
   }
@@ -71,9 +52,9 @@ Eigen::Vector3d PlantedFeet::place(const SkeletonPose& pose_at_origin, double dt
 }
 
 void PlantedFeet::holdOtherFoot(const Eigen::Vector3d& root, double dt) {
-  const std::size_t first = otherFoot() * kPointsPerFoot;
+  const std::size_t first = soles_.heel(otherFoot());
   std::size_t low = first;
-  for (std::size_t p = first; p < first + kPointsPerFoot; ++p) {
+  for (std::size_t p = first; p < first + soles_.pointsPerFoot(); ++p) {
     if (relative_[p].z() < relative_[low].z()) low = p;
   }
   const auto natural = [&](std::size_t p) { return root + relative_[p]; };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "dressed_human/core/locomotion/planted_feet.h"
 
@@ -13,6 +14,7 @@ constexpr double kGravity = 9.81;      // m/s^2
 constexpr int kSamplesPerCycle = 100;  // when measuring strides and heel strikes
 constexpr int kStridesPerKnot = 4;     // strides measured per interval between knots
 constexpr std::array<const char*, 2> kSides = {"l_", "r_"};
+constexpr std::size_t kPelvisPitch = 1;  // Motion::root.rotation: roll, pitch, yaw
 constexpr std::array<const char*, 3> kSagittalJoints = {"hip", "knee", "ankle"};
 const std::array<const char*, 6> kLegJoints = {"l_hip", "l_knee", "l_ankle", "r_hip", "r_knee", "r_ankle"};
 
@@ -43,8 +45,8 @@ Motion walkInCycles(const Motion& walk) {
 }  // namespace
 
 SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const Skeleton& skeleton,
-                     const BodyShape& shape)
-    : kinematics_(std::make_shared<const ForwardKinematics>(skeleton, shape)) {
+                     const BodyShape& shape, FootSoles soles)
+    : kinematics_(std::make_shared<const ForwardKinematics>(skeleton, shape)), soles_(std::move(soles)) {
   walk.validate();
   if (normative.classes.empty()) throw LocomotionError("the gait table has no speed classes");
   walk_speed_ = walk.root.forward_speed;
@@ -55,20 +57,20 @@ SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const S
   const Motion cycles = walkInCycles(walk);
   for (std::size_t i = 0; i < kDofCount; ++i) standing_[i] = 0.5 * cycles.dofs[i].a0;
   standing_pelvis_ = rollPitchYaw(0.5 * cycles.root.rotation[0].a0, 0.5 * cycles.root.rotation[1].a0, 0.0);
-  measureLeg(skeleton, shape);
+  measureLeg(skeleton);
 
   // Our heel strike: where the left foot takes the body over from the right (PlantedFeet).
   MotionEvaluator own(cycles);
-  PlantedFeet feet(skeleton, shape);
+  PlantedFeet feet(soles_);
   SkeletonPose pose;
   left_heel_strike_ = -1.0;
   for (int i = 0; i <= 2 * kSamplesPerCycle && left_heel_strike_ < 0.0; ++i) {
     const double phase = static_cast<double>(i) / kSamplesPerCycle;
-    const bool was_right = !PlantedFeet::isLeft(feet.carryingPoint());
+    const bool was_right = !feet.isLeft(feet.carryingPoint());
     own.evaluate(phase, scratch_, scratch_root_);
     kinematics_->compute({Eigen::Vector3d::Zero(), scratch_root_.rotation}, scratch_, pose);
     feet.place(pose, 0.0);
-    if (i > 0 && was_right && PlantedFeet::isLeft(feet.carryingPoint())) left_heel_strike_ = std::fmod(phase, 1.0);
+    if (i > 0 && was_right && feet.isLeft(feet.carryingPoint())) left_heel_strike_ = std::fmod(phase, 1.0);
   }
   if (left_heel_strike_ < 0.0)
     throw LocomotionError("motion '" + walk.name + "' never sets the left foot down after the right");
@@ -80,6 +82,8 @@ SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const S
     knot.speed = c.speed * root_gl;
     knot.normative_stride = c.stride * leg_length_;
     knot.normative_cadence = c.cadence * std::sqrt(kGravity / leg_length_);
+    knot.normative_stride_sd = c.stride_sd * leg_length_;
+    knot.normative_cadence_sd = c.cadence_sd * std::sqrt(kGravity / leg_length_);
     knots_.push_back(knot);
   }
   // Strides measured on a grid finer than the knots: a mixed gait's stride is not the mix of theirs.
@@ -104,12 +108,12 @@ SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const S
 
 // Leg length, the DOFs of the sagittal curves and their signs, and a standing pose with the
 // legs straight and the soles flat.
-void SpeedGait::measureLeg(const Skeleton& skeleton, const BodyShape& shape) {
+void SpeedGait::measureLeg(const Skeleton& skeleton) {
   for (const char* joint : kLegJoints) {
     const int j = skeleton.findJoint(joint);
     for (std::size_t d = 0; d < kDofsPerJoint; ++d) standing_[static_cast<std::size_t>(j) * kDofsPerJoint + d] = 0.0;
   }
-  PlantedFeet feet(skeleton, shape);
+  PlantedFeet feet(soles_);
   SkeletonPose pose;
   const auto at = [&](const JointAngles& angles) -> const SkeletonPose& {
     kinematics_->compute(RigidTransform(), angles, pose);
@@ -120,7 +124,7 @@ void SpeedGait::measureLeg(const Skeleton& skeleton, const BodyShape& shape) {
   };
   for (std::size_t side = 0; side < 2; ++side) {
     const std::string s = kSides[side];
-    const std::size_t heel = side * PlantedFeet::kPointsPerFoot, toe = heel + PlantedFeet::kPointsPerFoot - 1;
+    const std::size_t heel = feet.soles().heel(side), toe = feet.soles().ball(side);
     for (std::size_t c = 0; c < 3; ++c) {
       sagittal_dof_[side][c] = static_cast<std::size_t>(skeleton.findJoint(s + kSagittalJoints[c])) * kDofsPerJoint;
     }
@@ -151,9 +155,15 @@ void SpeedGait::measureLeg(const Skeleton& skeleton, const BodyShape& shape) {
       sagittal_sign_[side][c] = moved > 0.0 ? 1.0 : -1.0;
     }
   }
+  // Anterior tilt brings the chest forward.
+  const double chest = bonePosition(at(standing_), "torso").x();
+  kinematics_->compute({Eigen::Vector3d::Zero(), rollPitchYaw(0.0, 0.1, 0.0)}, standing_, pose);
+  const double tilted = bonePosition(pose, "torso").x() - chest;
+  if (std::abs(tilted) < 1e-4) throw LocomotionError("the root's pitch does not move the torso forward or back");
+  tilt_sign_ = tilted > 0.0 ? 1.0 : -1.0;
   const SkeletonPose& p = at(standing_);
   double sole = 0.0;
-  for (std::size_t k = 0; k < PlantedFeet::kPointCount; ++k) sole = std::min(sole, feet.solePoint(p, k).z());
+  for (std::size_t k = 0; k < feet.soles().pointCount(); ++k) sole = std::min(sole, feet.solePoint(p, k).z());
   leg_length_ = bonePosition(p, "l_hip").z() - sole;
   if (!(leg_length_ > 0.3)) throw LocomotionError("the skeleton's legs are " + std::to_string(leg_length_) + " m long");
 }
@@ -174,11 +184,16 @@ Motion SpeedGait::gaitAt(const Motion& walk_in_cycles, const NormativeGait& norm
       dof = sumOf(dof, inCycles(change), sagittal_sign_[side][c]);
     }
   }
+  // The pelvis tilts twice a cycle, the same at either heel strike: the left side's curve.
+  FourierSeries tilt =
+      sumOf(normative.curveAt(kPelvisTiltCurve, dimensionless_speed), normative.curveAt(kPelvisTiltCurve, own), -1.0);
+  tilt.phase = -2.0 * M_PI * left_heel_strike_;
+  m.root.rotation[kPelvisPitch] = sumOf(m.root.rotation[kPelvisPitch], inCycles(tilt), tilt_sign_);
   return m;
 }
 
 double SpeedGait::measuredStride(double speed) {
-  PlantedFeet feet(kinematics_->skeleton(), kinematics_->shape());
+  PlantedFeet feet(soles_);
   SkeletonPose pose;
   JointAngles angles{};
   Eigen::Quaterniond pelvis;

@@ -22,7 +22,7 @@ Walker::Walker(const Skeleton& skeleton, const BodyShape& shape, SpeedGait gait,
     : gait_(std::move(gait)),
       settings_(settings),
       kinematics_(skeleton, shape),
-      feet_(skeleton, shape),
+      feet_(gait_.soles()),
       leg_ik_(kinematics_),
       follower_(settings.route) {
   waist_ =

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "dressed_human/core/motion/motion_evaluator.h"
+#include "dressed_human/core/skeleton/foot_sole.h"
 
 namespace dressed_human {
 namespace {
@@ -43,28 +46,21 @@ Eigen::Quaterniond rotationFromRollPitchYaw(double roll, double pitch, double ya
                             Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()));
 }
 
-// Our lowest foot point (ankle joint or foot bone end, world height) against the capture's, for
-// each foot the capture has in stance in this frame.
-void addStanceFeet(const ForwardKinematics& kinematics, const RigidTransform& root, const JointAngles& angles,
-                   const std::array<double, 2>& capture_lowest, const std::array<double, 2>& lowest_in_window,
-                   SkeletonPose& pose, ErrorAccumulator& feet) {
+// Our lowest sole point (FootSoles: where our foot meets the floor) above the capture's lowest
+// foot point, for each foot the capture has in stance in this frame.
+void addStanceFeet(const ForwardKinematics& kinematics, const FootSoles& soles, const RigidTransform& root,
+                   const JointAngles& angles, const std::array<double, 2>& capture_lowest,
+                   const std::array<double, 2>& lowest_in_window, SkeletonPose& pose, std::vector<double>& above) {
   kinematics.compute(root, angles, pose);
-  const Skeleton& skeleton = kinematics.skeleton();
   for (std::size_t side = 0; side < 2; ++side) {
     if (capture_lowest[side] > lowest_in_window[side] + FitAccuracy::kStanceBand) continue;
-    const auto foot = static_cast<std::size_t>(skeleton.findBone(side == 0 ? "l_ankle" : "r_ankle"));
-    const RigidTransform& frame = pose.bone_in_world[foot];
-    const double length = kinematics.shape().scale[foot].z() * skeleton.bone(foot).length;
-    const double ours =
-        std::min(frame.translation.z(), (frame.translation + frame.rotation * Eigen::Vector3d(0, 0, length)).z());
-    feet.add(Eigen::Vector3d(0, 0, ours), Eigen::Vector3d(0, 0, capture_lowest[side]));
+    above.push_back(soles.lowest(pose, side) - capture_lowest[side]);
   }
 }
 
 // `positions` at `time` within [0, times.back()], linear between the neighbouring frames.
-Eigen::Vector3d positionAt(const std::vector<double>& times,
-                           const std::vector<JointPositions>& positions, std::size_t joint,
-                           double time) {
+Eigen::Vector3d positionAt(const std::vector<double>& times, const std::vector<JointPositions>& positions,
+                           std::size_t joint, double time) {
   const auto after = std::upper_bound(times.begin(), times.end(), time);
   if (after == times.begin()) return positions.front()[joint];
   if (after == times.end()) return positions.back()[joint];
@@ -74,10 +70,22 @@ Eigen::Vector3d positionAt(const std::vector<double>& times,
   return (1.0 - w) * positions[next - 1][joint] + w * positions[next][joint];
 }
 
+// How far our sole strays from one floor while the capture stands: its height above the capture's
+// lowest point, less the median of that (the capture's lowest point is a joint or a marker, some
+// centimetres above its own sole).
+PositionError strayFromTheFloor(std::vector<double> above) {
+  ErrorAccumulator stray;
+  if (above.empty()) return stray.result();
+  std::vector<double> sorted = above;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double floor = sorted[sorted.size() / 2];
+  for (const double a : above) stray.add(Eigen::Vector3d(0, 0, a - floor), Eigen::Vector3d::Zero());
+  return stray.result();
+}
+
 }  // namespace
 
-PositionError periodicCycleVariation(const std::vector<double>& times,
-                                     const std::vector<JointPositions>& positions,
+PositionError periodicCycleVariation(const std::vector<double>& times, const std::vector<JointPositions>& positions,
                                      double period, std::size_t cycles, const std::array<bool, kJointCount>& used) {
   ErrorAccumulator variation;
   if (cycles < 2 || !(period > 0.0) || times.size() != positions.size()) return variation.result();
@@ -99,6 +107,7 @@ PositionError periodicCycleVariation(const std::vector<double>& times,
 FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sampled, const MotionFit& fit,
                                const Motion& motion) {
   const ForwardKinematics kinematics(skeleton, sampled.proportions.shape);
+  const FootSoles soles = sampled.soles(skeleton);
   MotionEvaluator evaluator(motion);
   ErrorAccumulator capture;
   std::array<ErrorAccumulator, kJointCount> joint_capture;
@@ -107,7 +116,7 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
   ErrorAccumulator root;
   const std::size_t first = fit.skipped_frames;  // the window starts after the skipped frames
   const bool has_capture = sampled.reference_joint_positions.size() >= first + fit.frames_used;
-  ErrorAccumulator feet;
+  std::vector<double> feet;
   const bool has_feet = sampled.body_fitted && sampled.reference_lowest_foot.size() >= first + fit.frames_used;
   std::array<double, 2> lowest_in_window = {std::numeric_limits<double>::infinity(),
                                             std::numeric_limits<double>::infinity()};
@@ -128,8 +137,8 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
                                        fit.samples[kDofCount + 2][f]);
     root.add(fitted_root.translation, sampled_root);
     if (has_feet)
-      addStanceFeet(kinematics, fitted_root, fitted_angles, sampled.reference_lowest_foot[first + f], lowest_in_window,
-                    fitted_pose, feet);
+      addStanceFeet(kinematics, soles, fitted_root, fitted_angles, sampled.reference_lowest_foot[first + f],
+                    lowest_in_window, fitted_pose, feet);
     fitted_root.translation.setZero();
 
     JointAngles sampled_angles{};
@@ -157,7 +166,8 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
   if (has_capture) {
     std::vector<JointPositions> window(fit.frames_used);
     for (std::size_t f = 0; f < fit.frames_used; ++f) {
-      for (std::size_t j = 0; j < kJointCount; ++j) window[f][j] = to_walk * sampled.reference_joint_positions[first + f][j];
+      for (std::size_t j = 0; j < kJointCount; ++j)
+        window[f][j] = to_walk * sampled.reference_joint_positions[first + f][j];
     }
     accuracy.capture_cycle_variation =
         periodicCycleVariation(fit.times, window, motion.period, fit.cycles, sampled.driven);
@@ -167,7 +177,7 @@ FitAccuracy measureFitAccuracy(const Skeleton& skeleton, const SampledMotion& sa
   accuracy.unsmoothed_against_capture = unsmoothed_capture.result();
   accuracy.against_samples = samples.result();
   accuracy.root_translation = root.result();
-  accuracy.stance_foot_height = feet.result();
+  accuracy.stance_foot_height = strayFromTheFloor(std::move(feet));
   std::size_t driven = 0;
   for (std::size_t i = 0; i < Motion::kSeriesCount; ++i) {
     const SeriesFitReport& report = fit.reports[i];

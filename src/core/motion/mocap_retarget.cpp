@@ -218,20 +218,84 @@ void placeFittedBody(const BvhClip& clip, const std::vector<BvhPose>& poses, con
 struct ToeTip {
   BvhPoint point;
   double rest_length = 0.0;  // from the ankle, in the rest pose
+  double flat_height = 0.0;  // of the tip below the ankle over the rest length, the sole flat (negative: lower)
 };
 
-// Where a rigid foot points: the capture's toes bend (at push-off the ankle-to-toe-tip line is
-// shorter than at rest), ours cannot; aimed along that line our toe tip would dig below the
-// capture's. So the foot keeps the line's heading and tilts so that its tip, at the rest length,
-// is as high as the capture's toe tip: where the foot meets the ground is what shows.
+double tipHeight(const BvhClip& clip, const BvhPose& pose, const ToeTip& tip, std::size_t ankle,
+                 const Eigen::Matrix3d& to_ours) {
+  return (to_ours * (bvhPointPosition(clip, pose, tip.point) - pose.position[ankle])).z() / tip.rest_length;
+}
+
+// The capture's foot is flat on the floor when its ankle stands still (between heel strike and
+// heel-off, when the heel has landed and not yet risen): the tip's height then, the median over
+// the stillest tenth of the frames. A rig's rest pose is no measure of it: CMU's stands with the
+// ankle-to-tip line 9.4 and 11.0 deg down, its walk's flat stance at 12.3 and 12.2.
+double flatHeight(const BvhClip& clip, const std::vector<BvhPose>& poses, const ToeTip& tip, std::size_t ankle,
+                  const Eigen::Matrix3d& to_ours) {
+  if (poses.size() < 3) return tip.flat_height;
+  std::vector<std::pair<double, double>> speed_and_height;
+  for (std::size_t f = 1; f + 1 < poses.size(); ++f) {
+    const Eigen::Vector3d moved = to_ours * (poses[f + 1].position[ankle] - poses[f - 1].position[ankle]);
+    speed_and_height.emplace_back(moved.head<2>().norm(), tipHeight(clip, poses[f], tip, ankle, to_ours));
+  }
+  const std::size_t still = std::max<std::size_t>(1, speed_and_height.size() / 10);
+  std::nth_element(speed_and_height.begin(), speed_and_height.begin() + static_cast<std::ptrdiff_t>(still - 1),
+                   speed_and_height.end());
+  std::vector<double> heights;
+  for (std::size_t i = 0; i < still; ++i) heights.push_back(speed_and_height[i].second);
+  std::nth_element(heights.begin(), heights.begin() + static_cast<std::ptrdiff_t>(still / 2), heights.end());
+  return heights[still / 2];
+}
+
+// Our foot's tip (its last sole point: FootSoles) below and along the foot bone, and the bone's
+// pitch when the sole stands flat.
+struct OurFoot {
+  double along = 0.0;
+  double below = 0.0;
+  double flat_pitch = 0.0;
+  explicit OurFoot(const FootSoles& soles)
+      : along(soles.inFoot(soles.pointsPerFoot() - 1).z()),
+        below(soles.inFoot(soles.pointsPerFoot() - 1).x()),
+        flat_pitch(soles.flatPitch()) {}
+  // The tip's height under the ankle with the bone pitched `pitch` (toes up positive).
+  double tipHeight(double pitch) const { return along * std::sin(pitch) - below * std::cos(pitch); }
+};
+
+// Where a rigid foot points: its heading is the capture's ankle-to-tip line's, and its pitch puts
+// its tip as far above or below where it is when our sole stands flat as the capture's tip is
+// above or below its own flat stance (flatHeight), in foot lengths. So our foot stands flat where
+// the capture's does (aimed along the line itself, every stance rode on the toes with the heel
+// 4 cm up, as the capture's ankle sits higher above its toe tip than ours above our sole), and at
+// push-off, where the capture's toes bend and ours cannot, the tip sinks no lower than the
+// capture's does: turned by the line's angle, our longer rigid toes dug in and lifted the body.
 Eigen::Vector3d footAim(const BvhClip& clip, const BvhPose& pose, const ToeTip& toe_tip, std::size_t ankle,
-                        const Eigen::Matrix3d& to_ours) {
+                        const Eigen::Matrix3d& to_ours, const OurFoot& foot, double scale) {
   const Eigen::Vector3d line = to_ours * (bvhPointPosition(clip, pose, toe_tip.point) - pose.position[ankle]);
-  const double rest = toe_tip.rest_length;
   const Eigen::Vector3d heading(line.x(), line.y(), 0.0);
-  if (!(rest > 1e-9) || heading.norm() < 1e-9 || std::abs(line.z()) >= rest) return line;
-  const double drop = line.z() / rest;
-  return heading.normalized() * std::sqrt(1.0 - drop * drop) + Eigen::Vector3d(0, 0, drop);
+  const double reach = std::hypot(foot.along, foot.below);
+  if (!(toe_tip.rest_length > 1e-9) || heading.norm() < 1e-9 || !(reach > 1e-9)) return line;
+  const double wanted =
+      foot.tipHeight(foot.flat_pitch) +
+      (scale * toe_tip.rest_length) * (tipHeight(clip, pose, toe_tip, ankle, to_ours) - toe_tip.flat_height);
+  const double pitch = std::atan2(foot.below, foot.along) + std::asin(std::clamp(wanted / reach, -1.0, 1.0));
+  return heading.normalized() * std::cos(pitch) + Eigen::Vector3d(0, 0, std::sin(pitch));
+}
+
+// From the lowest to the highest joint or end site of the source's rest pose, along our up.
+double restHeight(const BvhClip& clip, const BvhPose& rest, const Eigen::Matrix3d& to_ours, std::size_t root) {
+  double low = 0.0;
+  double high = 0.0;
+  for (std::size_t j = 0; j < clip.joints.size(); ++j) {
+    const double height = (to_ours * (rest.position[j] - rest.position[root])).z();
+    low = std::min(low, height);
+    high = std::max(high, height);
+    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
+      const double end_height = (to_ours * (rest.position[j] + end - rest.position[root])).z();
+      low = std::min(low, end_height);
+      high = std::max(high, end_height);
+    }
+  }
+  return high - low;
 }
 
 }  // namespace
@@ -354,6 +418,8 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
   const std::size_t root = sourceIndex(map.root);
 
   const Eigen::Matrix3d to_ours = bvhToOurAxes(clip, source_rest, map, source_name);
+  const OurFoot our_foot(options.body ? FootSoles(skeleton, BodyShape(), *options.body)
+                                      : FootSoles(skeleton, BodyShape()));
 
   // Constant per-bone offset: our rest frame turned so that its bone axis lies along the source's
   // rest segment. World target of bone b = to_ours * G_source * to_ours^T * offset_b.
@@ -364,6 +430,7 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
   SampledMotion motion;
   motion.source = source_name;
   motion.rest_frame = standing.rest_frame;
+  motion.body = options.body;
   for (std::size_t j = 0; j < kJointCount; ++j) {
     motion.driven[j] = !map.joints[j].empty();
     if (!motion.driven[j]) continue;
@@ -378,7 +445,12 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
     if (own_tip) {
       const BvhPoint tip = bvhFarthestPointBelow(clip, source_rest, source_joint[j]);
       to_tip = bvhPointPosition(clip, source_rest, tip) - source_rest.position[source_joint[j]];
-      toe_tip[j] = ToeTip{tip, to_tip.norm()};
+      const Eigen::Vector3d tip_in_ours = to_ours * to_tip;
+      toe_tip[j] = ToeTip{tip, to_tip.norm(), 0.0};
+      toe_tip[j]->flat_height = tipHeight(clip, source_rest, *toe_tip[j], source_joint[j], to_ours);
+      // At rest our sole lies flat under the capture's foot: the tip's heading, level.
+      const Eigen::Vector3d level(tip_in_ours.x(), tip_in_ours.y(), 0.0);
+      if (level.norm() > 1e-9) to_tip = to_ours.transpose() * level.normalized() * to_tip.norm();
     }
     Eigen::Vector3d direction = distal >= 0 && !map.joints[static_cast<std::size_t>(distal)].empty()
                                     ? source_rest.position[sourceIndex(map.joints[static_cast<std::size_t>(distal)])] -
@@ -405,27 +477,21 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
   const double our_hip_drop = -our_rest.position[static_cast<std::size_t>(skeleton.joint(kLeftHip).bone)].z();
   const double height_shift = our_hip_drop - motion.root_scale * source_hip_drop;
 
-  double source_low = 0.0;
-  double source_high = 0.0;
-  for (std::size_t j = 0; j < clip.joints.size(); ++j) {
-    const double height = (to_ours * (source_rest.position[j] - source_rest.position[root])).z();
-    source_low = std::min(source_low, height);
-    source_high = std::max(source_high, height);
-    for (const Eigen::Vector3d& end : clip.joints[j].end_sites) {
-      const double end_height = (to_ours * (source_rest.position[j] + end - source_rest.position[root])).z();
-      source_low = std::min(source_low, end_height);
-      source_high = std::max(source_high, end_height);
-    }
-  }
   // The stature needs the top of the head; a source without one (an OpenSim gait model: legs and
   // pelvis) is scaled by its legs, as the root is.
-  motion.reference_scale =
-      map.joints[kHead].empty() ? motion.root_scale : skeletonStature(skeleton) / (source_high - source_low);
+  motion.reference_scale = map.joints[kHead].empty()
+                               ? motion.root_scale
+                               : skeletonStature(skeleton) / restHeight(clip, source_rest, to_ours, root);
 
   const std::size_t frames = clip.frames.size();
   std::vector<BvhPose> poses(frames);
   for (std::size_t f = 0; f < frames; ++f) poses[f] = bvhForwardKinematics(clip, f);
   holdPostures(poses, source_joint, to_ours, rest_offset, carried, motion.held_joints);
+  for (std::size_t j = 0; j < kJointCount; ++j) {
+    if (toe_tip[j]) {
+      toe_tip[j]->flat_height = flatHeight(clip, poses, *toe_tip[j], source_joint[j], to_ours);
+    }
+  }
   motion.times.resize(frames);
   motion.angles.resize(frames);
   motion.root.resize(frames);
@@ -442,7 +508,8 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
       if (!motion.driven[j]) continue;
       target[j] = to_ours * pose.rotation[source_joint[j]] * to_ours.transpose() * rest_offset[j];
       if (toe_tip[j]) {
-        const Eigen::Vector3d aim = footAim(clip, pose, *toe_tip[j], source_joint[j], to_ours);
+        const Eigen::Vector3d aim =
+            footAim(clip, pose, *toe_tip[j], source_joint[j], to_ours, our_foot, motion.root_scale);
         target[j] = toMatrix(Eigen::Quaterniond::FromTwoVectors(target[j].col(2), aim)) * target[j];
       } else if (!carried[j].source.empty()) {
         target[j] = carriedRotation(carried[j], pose, source_joint[j], to_ours, carried_now) * rest_offset[j];

@@ -2,7 +2,8 @@
 // Normative joint curves at several walking speeds (config/gait/speed_gaits.yaml, written by
 // scripts/gait_speed_table.py from Schwartz et al. 2008): per speed class its dimensionless
 // speed, cadence and stride (Hof 1996: v / sqrt(g L), steps/s * sqrt(L / g), stride / L) and
-// Fourier series of the sagittal hip, knee and ankle angles over one cycle from heel strike.
+// Fourier series of the sagittal hip, knee and ankle angles and the pelvis's tilt over one cycle
+// from heel strike.
 
 #include <array>
 #include <map>
@@ -16,13 +17,20 @@ namespace dressed_human {
 
 // The curves the speed-dependent gait uses, Plug-in-Gait signs (+ flexion, + dorsiflexion).
 constexpr std::array<const char*, 3> kSagittalCurves = {"hip_flexion", "knee_flexion", "ankle_dorsiflexion"};
+// The pelvis's tilt (+ anterior) against the walking direction: the hip angles are measured from
+// the pelvis, so without its change the thighs lean as the slower gait's do.
+constexpr const char* kPelvisTiltCurve = "pelvis_tilt";
 
 struct NormativeGaitClass {
   std::string name;
   double speed = 0.0;    // dimensionless
   double cadence = 0.0;  // dimensionless, steps (not strides)
   double stride = 0.0;   // dimensionless, two steps
-  // kSagittalCurves: radians; period 1 (one cycle), phase 0 at this side's heel strike.
+  // Standard deviations between the class's subjects (0: the table does not say).
+  double cadence_sd = 0.0;
+  double stride_sd = 0.0;
+  // kSagittalCurves and kPelvisTiltCurve: radians; period 1 (one cycle), phase 0 at this side's
+  // heel strike.
   std::map<std::string, FourierSeries> curves;
 };
 

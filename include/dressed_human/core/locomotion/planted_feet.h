@@ -1,6 +1,5 @@
 #pragma once
-// Planted feet: the root's travel comes from the feet. Each foot's sole is a few points on the
-// underside of its bone (the URDF foot's cylinder, where it rests on the ground). Of all sole
+// Planted feet: the root's travel comes from the feet (their soles: FootSoles). Of all sole
 // points the lowest one carries the body: it stays where it touched down while the skeleton
 // moves about it, and the body sits so that it is on the ground (z = 0). When another point gets
 // lower (the heel of the swinging foot at heel strike, the ball as the heel rises), it takes
@@ -9,21 +8,21 @@
 // place() says by how much the leg must move it (LegIk), and lets go smoothly once it lifts.
 
 #include <array>
+#include <vector>
 #include <cstddef>
 
 #include <Eigen/Core>
 
+#include "dressed_human/core/skeleton/foot_sole.h"
 #include "dressed_human/core/skeleton/forward_kinematics.h"
 
 namespace dressed_human {
 
 class PlantedFeet {
  public:
-  static constexpr std::size_t kPointsPerFoot = 3;                // heel (under the ankle), mid-foot, toe
-  static constexpr std::size_t kPointCount = 2 * kPointsPerFoot;  // left foot first
-
   // The foot bones (l_ankle, r_ankle) of `skeleton` with `shape` applied.
-  PlantedFeet(const Skeleton& skeleton, const BodyShape& shape);
+  PlantedFeet(const Skeleton& skeleton, const BodyShape& shape) : PlantedFeet(FootSoles(skeleton, shape)) {}
+  explicit PlantedFeet(FootSoles soles);
 
   // Starts over: the next place() puts the root's ground projection at `root_xy`.
   void reset(const Eigen::Vector2d& root_xy);
@@ -37,9 +36,10 @@ class PlantedFeet {
   const Eigen::Vector3d& otherFootShift() const { return shift_; }
 
   // A sole point in the world of `pose` (any root translation).
-  Eigen::Vector3d solePoint(const SkeletonPose& pose, std::size_t point) const;
+  Eigen::Vector3d solePoint(const SkeletonPose& pose, std::size_t point) const { return soles_.point(pose, point); }
   std::size_t carryingPoint() const { return anchor_; }
-  static bool isLeft(std::size_t point) { return point < kPointsPerFoot; }
+  const FootSoles& soles() const { return soles_; }
+  bool isLeft(std::size_t point) const { return soles_.isLeft(point); }
 
   // A point must get this much lower than the carrying one to take over: feet flat side by side
   // (standing) do not hand the body back and forth.
@@ -54,9 +54,8 @@ class PlantedFeet {
   void setWalkingSpeed(double speed) { walking_speed_ = speed; }
 
  private:
-  std::array<int, 2> foot_bone_{};                       // left, right
-  std::array<Eigen::Vector3d, kPointCount> in_foot_{};   // in the foot bone's frame
-  std::array<Eigen::Vector3d, kPointCount> relative_{};  // scratch: relative to the root
+  FootSoles soles_;
+  std::vector<Eigen::Vector3d> relative_;  // scratch: relative to the root, per sole point
   bool anchored_ = false;
   std::size_t anchor_ = 0;
   Eigen::Vector2d anchor_xy_ = Eigen::Vector2d::Zero();

@@ -17,9 +17,10 @@ class StanceSlideMeter {
   // Adds one posed frame; `carrying`: the point carrying the body (PlantedFeet), or -1.
   void add(const PlantedFeet& feet, const SkeletonPose& pose, int carrying = -1) {
     for (std::size_t foot = 0; foot < 2; ++foot) {
-      std::size_t low = foot * PlantedFeet::kPointsPerFoot;
+      const std::size_t first = feet.soles().heel(foot), end = first + feet.soles().pointsPerFoot();
+      std::size_t low = first;
       Eigen::Vector3d low_point = feet.solePoint(pose, low);
-      for (std::size_t p = low; p < (foot + 1) * PlantedFeet::kPointsPerFoot; ++p) {
+      for (std::size_t p = first; p < end; ++p) {
         const Eigen::Vector3d point = feet.solePoint(pose, p);
         lowest = std::min(lowest, point.z());
         if (static_cast<int>(p) == carrying) {

@@ -40,9 +40,10 @@ struct FitAccuracy {
   // that on average; empty with one cycle or without a capture skeleton.
   PositionError capture_cycle_variation;
   PositionError root_translation;  // fitted root vs sampled root, walk frame
-  // With a fitted body (SampledMotion::body_fitted): the height of our lowest foot point (ankle
-  // joint or foot bone end) against the capture's lowest foot point, both feet, over the frames
-  // where the capture's foot is in stance (within kStanceBand of its lowest in the window).
+  // With a fitted body (SampledMotion::body_fitted): how far our lowest sole point (FootSoles)
+  // strays from one floor while the capture stands (its lowest foot point within kStanceBand of its
+  // lowest in the window), both feet: its height above the capture's lowest point less the median
+  // of that height (the capture's lowest point is a joint or a marker, above its own sole).
   PositionError stance_foot_height;
   static constexpr double kStanceBand = 0.02;  // m
   double mean_rms_degrees = 0.0;               // over driven angle series
@@ -54,8 +55,7 @@ struct FitAccuracy {
 // (`cycles` >= 2; times at or beyond cycles * period are not used), linear between frames. The
 // cycle-to-cycle variation of a capture, which a periodic fit cannot follow. Joints with
 // `used[j]` false are left out.
-PositionError periodicCycleVariation(const std::vector<double>& times,
-                                     const std::vector<JointPositions>& positions,
+PositionError periodicCycleVariation(const std::vector<double>& times, const std::vector<JointPositions>& positions,
                                      double period, std::size_t cycles, const std::array<bool, kJointCount>& used);
 
 // `motion` is evaluated at the window's times (it may be a refit of `fit` with another order).

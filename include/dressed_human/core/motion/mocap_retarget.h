@@ -11,12 +11,15 @@
 // local rotation relative to our parent bone is split into our R_rest * Ry * Rx * Rz.
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "dressed_human/core/skeleton/body_description.h"
+#include "dressed_human/core/skeleton/foot_sole.h"
 #include "dressed_human/core/motion/body_proportions.h"
 #include "dressed_human/core/motion/bvh_file.h"
 #include "dressed_human/core/motion/capture_units.h"
@@ -63,6 +66,13 @@ struct SampledMotion {
   // other joints.
   std::array<std::optional<Eigen::Vector3d>, kJointCount> held_joints;
 
+  // The drawn body the feet were aimed for (RetargetOptions::body); null: the URDF's feet.
+  std::shared_ptr<const BodyDescription> body;
+  // Our soles as the feet were aimed for, with the person's proportions.
+  FootSoles soles(const Skeleton& skeleton) const {
+    return body ? FootSoles(skeleton, proportions.shape, *body) : FootSoles(skeleton, proportions.shape);
+  }
+
   // The source frame taken as its rest pose where the file's zero pose does not stand
   // (bvh_standing_rest.h); -1: the file's own.
   int rest_frame = -1;
@@ -96,6 +106,9 @@ struct RetargetOptions {
   // the root moves in metres of the capture, the reference is the capture's own FK in metres.
   bool fit_body = false;
   std::string units;  // the capture's length unit (unitsByName); "": detected from the rest stature
+  // Our drawn body: its feet (FootSoles) stand flat where the capture's do. Null: the URDF's foot
+  // cylinders.
+  std::shared_ptr<const BodyDescription> body;
 };
 
 // Throws JointMapError for a map that does not fit the clip and MotionError for a rest pose that

@@ -120,18 +120,20 @@ double measuredTessellationError(const BezierPatch& patch, int level);
 // measured error (levels 1..4 each; finer levels the largest of levels 4, 8 and 16) and follows
 // the live patch the way the a-priori bound does: measured / a-priori at the reference, times
 // the a-priori bound of the live patch, times a margin for poses the calibration has not seen.
-// Calibrated at rest alone, posing moves a patch's measured / a-priori ratio by up to 1.41 on
-// the shipped walk (1.48 on the other walks of config/motions), hence kRestMargin. Calibrated at
+// Calibrated at rest alone, posing moves a patch's measured / a-priori ratio by up to 1.42 on
+// the shipped walk (refitted with issue 39's flat feet: a skirt patch at level 16; 1.41 before)
+// and 1.48 on the other walks of config/motions; above 1.49 the skirt's largest level-1 bound is
+// more than 2x its largest error on the shipped walk, hence kRestMargin between the two. Calibrated at
 // rest and across posed references (each level's largest ratio holds; the finer levels from
 // level 8 alone in the posed ones), it moved by at most 1.06 on the walk's other phases and 1.12
 // on the other walks; the drawn mesh exceeds the bound with a margin of 1.08 (the skirt's levels
-// 13-16) and of 1.0 (skin patches too; test_calibrated_error_bound), hence kPosedMargin. Over the walk (1000 px view) that
-// draws 13 % fewer triangles at 12 m, 16 % at 5 m.
+// 13-16) and of 1.0 (skin patches too; test_calibrated_error_bound), hence kPosedMargin. Over the walk (1000 px view)
+// that draws 13 % fewer triangles at 12 m, 16 % at 5 m.
 class CalibratedErrorBound {
  public:
   static constexpr int kCalibratedLevels = 5;  // levels 1..4, then one scale for all finer
   static constexpr std::array<int, 2> kFineReferenceLevels{{8, 16}};
-  static constexpr double kRestMargin = 1.4;
+  static constexpr double kRestMargin = 1.45;
   static constexpr double kPosedMargin = 1.15;
 
   CalibratedErrorBound() = default;  // no patches: callers fall back to the a-priori bound
