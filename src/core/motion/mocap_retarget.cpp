@@ -263,11 +263,13 @@ struct OurFoot {
 
 // Where a rigid foot points: its heading is the capture's ankle-to-tip line's, and its pitch puts
 // its tip as far above or below where it is when our sole stands flat as the capture's tip is
-// above or below its own flat stance (flatHeight), in foot lengths. So our foot stands flat where
-// the capture's does (aimed along the line itself, every stance rode on the toes with the heel
-// 4 cm up, as the capture's ankle sits higher above its toe tip than ours above our sole), and at
-// push-off, where the capture's toes bend and ours cannot, the tip sinks no lower than the
-// capture's does: turned by the line's angle, our longer rigid toes dug in and lifted the body.
+// above or below its own flat stance (flatHeight), in metres of our leg (`scale`: our ankle rises
+// over the floor as the capture's does). So our foot stands flat where the capture's does (aimed
+// along the line itself, every stance rode on the toes with the heel 4 cm up, as the capture's
+// ankle sits higher above its toe tip than ours above our sole), and at push-off, where the
+// capture's toes bend and ours cannot, the tip sinks as far as the capture's does and leaves the
+// ground when it does: turned by the line's angle, our rigid toes dug in and lifted the body; in
+// foot lengths, our shorter foot's toe rose early.
 Eigen::Vector3d footAim(const BvhClip& clip, const BvhPose& pose, const ToeTip& toe_tip, std::size_t ankle,
                         const Eigen::Matrix3d& to_ours, const OurFoot& foot, double scale) {
   const Eigen::Vector3d line = to_ours * (bvhPointPosition(clip, pose, toe_tip.point) - pose.position[ankle]);

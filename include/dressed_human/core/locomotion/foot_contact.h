@@ -2,8 +2,8 @@
 // How a walk's feet meet the ground (issue 39): per foot, the share of frames it stands on the
 // ground (stance: its lowest sole point within kDownBand of the floor), the share it stands flat
 // (heel and toe both within the band), how many of its stances began on the heel and how many
-// ended on the toe, the heel already up. The floor is
-// z = 0, where PlantedFeet puts the carrying point. Used by the walk's tests and walk_speed_table.
+// ended on the toe, the heel already up. The floor is z = 0, where PlantedFeet puts the carrying
+// point. Used by the walk's tests and walk_speed_table.
 
 #include <algorithm>
 #include <array>
