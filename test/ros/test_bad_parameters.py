@@ -64,6 +64,10 @@ class BadParametersTest(unittest.TestCase):
     def test_route_end_unknown(self):
         self.assertRejected("parameter /{node}/route_end must be 'loop' or 'stand', got 'stop'", "_route_end:=stop")
 
+    def test_body_file_missing(self):
+        self.assertRejected("parameter /{node}/body_file (the body whose feet walk): /nonexistent/body.yaml: cannot "
+                            "open the body description", "_body_file:=/nonexistent/body.yaml")
+
     def test_gait_file_missing(self):
         self.assertRejected("/nonexistent/gaits.yaml: cannot open gait table", "_gait_file:=/nonexistent/gaits.yaml")
 

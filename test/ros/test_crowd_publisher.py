@@ -110,6 +110,11 @@ class CrowdPublisherTest(unittest.TestCase):
             f.write('humans:\n  "1": {speed: 9}\n')
         self.assertRejected("humans.1.speed", "_crowd_file:=" + path)
 
+    def test_missing_body_file_in_both_modes(self):
+        for mode in ([], ["_people_topic:=/people"]):
+            self.assertRejected("parameter /{node}/body_file (the body whose feet walk): /nonexistent/body.yaml",
+                                "_body_file:=/nonexistent/body.yaml", *mode)
+
     def test_bad_frame_prefix(self):
         self.assertRejected("parameter /{node}/frame_prefix 'a-b' may hold only letters", "_frame_prefix:=a-b")
 

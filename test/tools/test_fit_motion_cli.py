@@ -78,6 +78,10 @@ class FitMotionRefusesAbsurdInput(unittest.TestCase):
     def test_units_and_body_options_are_checked(self):
         self.assertRefused("unknown length unit 'parsec': expected one of m, cm, mm, in, cmu", "--units", "parsec")
         self.assertRefused("--body must be 'fitted' or 'default', got 'tall'", "--body", "tall")
+        # Our feet are aimed for the drawn body: a body that cannot be read stops the fit, naming it.
+        code, stderr = run("--body-description", "/nonexistent/body.yaml", "-q")
+        self.assertEqual(code, 1, stderr)
+        self.assertIn("/nonexistent/body.yaml: cannot open the body description", stderr)
         gait = os.path.join(ROOT, "data", "motion", "tutorial_normal_gait_cycle.mot")
         for arguments, message in ((["--units", "cm"], "--units applies to BVH input only"),
                                    (["--osim", "x.osim", "--format", "bvh"], "--osim applies to OpenSim motion input only")):

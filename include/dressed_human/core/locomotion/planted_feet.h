@@ -8,8 +8,8 @@
 // place() says by how much the leg must move it (LegIk), and lets go smoothly once it lifts.
 
 #include <array>
-#include <vector>
 #include <cstddef>
+#include <vector>
 
 #include <Eigen/Core>
 
