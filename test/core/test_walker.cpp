@@ -91,10 +91,9 @@ TEST_P(StraightWalk, FeetStayPlantedAndTheTravelComesFromThem) {
 // 0.2 and 0.35: below the slowest gait (0.5 m/s), slower steps; 2.4: above the fastest, quicker ones.
 INSTANTIATE_TEST_SUITE_P(Speeds, StraightWalk, ::testing::Values(0.2, 0.35, 0.6, 1.2, 1.8, 2.4));
 
-// Issue 39's feet at 1.2 m/s: each foot on the ground for more than half the cycle (a walk: both
-// feet down at once for a while, twice a cycle) and at most 65 % (people: about 60 %; issue 39
-// asks 55 %, which this walk's 54 % does not reach yet), flat on it (heel and toe down) for at
-// least a third of that, every stance begun on the heel and ended on the toe.
+// Issue 39's feet at 1.2 m/s: each foot on the ground for 55-65 % of the cycle (people: about
+// 60 %), flat on it (heel and toe down) for at least a third of that, every stance begun on the
+// heel and ended on the toe.
 TEST(Walker, LandsOnTheHeelStandsFlatAndRollsOffTheToes) {
   Walker w = walker();
   w.place({0.0, 0.0}, 0.0);
@@ -107,7 +106,7 @@ TEST(Walker, LandsOnTheHeelStandsFlatAndRollsOffTheToes) {
     if (i >= 300) contact.add(w.feet().soles(), pose);
   }
   for (std::size_t side = 0; side < 2; ++side) {
-    EXPECT_GT(contact.stanceShare(side), 0.5) << "side " << side;
+    EXPECT_GE(contact.stanceShare(side), 0.55) << "side " << side;
     EXPECT_LE(contact.stanceShare(side), 0.65) << "side " << side;
     EXPECT_GE(contact.flatShareOfStance(side), 1.0 / 3.0) << "side " << side;
     ASSERT_GE(contact.stances(side), 8u) << "side " << side;

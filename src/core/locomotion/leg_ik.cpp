@@ -68,4 +68,14 @@ void LegIk::shiftFoot(std::size_t side, const Eigen::Vector3d& shift, JointAngle
   kinematics_.compute(pose.root, angles, pose);
 }
 
+void LegIk::turnLeg(std::size_t side, double angle, const Eigen::Vector3d& pivot, JointAngles& angles,
+                    SkeletonPose& pose) const {
+  const std::size_t thigh = bones_[side][0];
+  const Eigen::Vector3d axis = pose.bone_in_world[thigh].translation - pivot;
+  if (axis.norm() < 1e-9) return;
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(angle, axis.normalized()));
+  setJointRotation(thigh, turn * pose.bone_in_world[thigh].rotation, angles, pose);
+  kinematics_.compute(pose.root, angles, pose);
+}
+
 }  // namespace dressed_human

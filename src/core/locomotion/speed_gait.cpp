@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "dressed_human/core/locomotion/planted_feet.h"
+#include "dressed_human/core/locomotion/symmetric_walk.h"
 
 namespace dressed_human {
 namespace {
@@ -54,7 +55,7 @@ SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const S
     throw LocomotionError("motion '" + walk.name + "' moves forward at " + std::to_string(walk_speed_) +
                           " m/s: a walk (root.forward_speed > 0.1 m/s) is needed to walk routes");
   }
-  const Motion cycles = walkInCycles(walk);
+  const Motion cycles = symmetricWalk(walkInCycles(walk), skeleton);
   for (std::size_t i = 0; i < kDofCount; ++i) standing_[i] = 0.5 * cycles.dofs[i].a0;
   standing_pelvis_ = rollPitchYaw(0.5 * cycles.root.rotation[0].a0, 0.5 * cycles.root.rotation[1].a0, 0.0);
   measureLeg(skeleton);

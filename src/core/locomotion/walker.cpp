@@ -15,6 +15,10 @@ constexpr double kIdleBreath = 0.008;  // rad, the torso forward and back
 // stays); above it they keep the slowest gait's length and only the cadence drops.
 constexpr double kFullStrides = 0.12;
 constexpr double kStrideChange = 0.4;  // s from standing to full steps and back: about a step
+// A foot flat on the ground does not spin with the body: the hip twists under a turn instead, up
+// to a hip's range of rotation, and unwinds once the foot is in the air.
+constexpr double kMaxStanceTwist = 0.5;   // rad
+constexpr double kTwistUnwindTime = 0.1;  // s
 
 }  // namespace
 
@@ -66,6 +70,7 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   speed_ += std::clamp(wanted_speed - speed_, -settings_.acceleration * dt, settings_.acceleration * dt);
   turn_rate_ = wanted_turn;
   heading_ = std::remainder(heading_ + turn_rate_ * dt, 2.0 * M_PI);
+  const double turned = turn_rate_ * dt;
   // A lean that follows the centripetal acceleration, smoothly: toward the inside of the turn.
   const double wanted_lean = -settings_.lean * std::atan(speed_ * turn_rate_ / kGravity);
   lean_ += (wanted_lean - lean_) * (1.0 - std::exp(-dt / settings_.lean_time));
@@ -88,10 +93,18 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   Eigen::Quaterniond pelvis;
   gait_.evaluate(phase_, speed_, stride_, angles, pelvis);
   idleSway(dt, angles);
+  unwindStanceTwist(turned * walking_, dt);
 
   const Eigen::Quaterniond body = Eigen::AngleAxisd(heading_, Eigen::Vector3d::UnitZ()) *
                                   Eigen::AngleAxisd(lean_, Eigen::Vector3d::UnitX()) * pelvis;
   kinematics_.compute({Eigen::Vector3d::Zero(), body}, angles, pose);
+  // Turned before the feet are placed, so that they plant the feet as drawn.
+  for (std::size_t side = 0; side < 2; ++side) {
+    if (stance_twist_[side] == 0.0) continue;
+    const bool carrying = feet_.isLeft(feet_.carryingPoint()) == (side == 0);
+    const std::size_t pivot = carrying ? feet_.carryingPoint() : feet_.soles().lowestPoint(pose, side);
+    leg_ik_.turnLeg(side, stance_twist_[side], feet_.solePoint(pose, pivot), angles, pose);
+  }
   feet_.setWalkingSpeed(speed_);
   const Eigen::Vector3d root = feet_.place(pose, dt);
   pose.root.translation = root;
@@ -99,6 +112,27 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   if (feet_.otherFootShift().squaredNorm() > 0.0)
     leg_ik_.shiftFoot(feet_.otherFoot(), feet_.otherFootShift(), angles, pose);
   position_ = root.head<2>();
+  const FootSoles& soles = feet_.soles();
+  const std::size_t carrying = feet_.isLeft(feet_.carryingPoint()) ? 0 : 1;
+  double forefoot = soles.point(pose, soles.ball(carrying)).z();
+  for (std::size_t p = soles.ball(carrying) + 1; p < soles.heel(carrying) + soles.pointsPerFoot(); ++p) {
+    forefoot = std::min(forefoot, soles.point(pose, p).z());
+  }
+  carrying_foot_flat_ =
+      soles.point(pose, soles.heel(carrying)).z() < PlantedFeet::kContactBand && forefoot < PlantedFeet::kContactBand;
+}
+
+void Walker::unwindStanceTwist(double turned, double dt) {
+  // On its heel or its ball alone the foot turns about that point without sliding: the hip
+  // unwinds there, as people pivot on the ball of the foot in a turn.
+  const std::size_t carrying = feet_.isLeft(feet_.carryingPoint()) ? 0 : 1;
+  const double unwind = std::exp(-dt / kTwistUnwindTime);
+  if (carrying_foot_flat_) {
+    stance_twist_[carrying] = std::clamp(stance_twist_[carrying] - turned, -kMaxStanceTwist, kMaxStanceTwist);
+  } else {
+    stance_twist_[carrying] *= unwind;
+  }
+  stance_twist_[1 - carrying] *= unwind;
 }
 
 void Walker::idleSway(double dt, JointAngles& angles) {

@@ -61,8 +61,19 @@ FootSoles::FootSoles(const Skeleton& skeleton, const BodyShape& shape, const Bod
 }
 
 double FootSoles::lowest(const SkeletonPose& pose, std::size_t side) const {
-  double low = point(pose, heel(side)).z();
-  for (std::size_t k = 1; k < points_per_foot_; ++k) low = std::min(low, point(pose, heel(side) + k).z());
+  return point(pose, lowestPoint(pose, side)).z();
+}
+
+std::size_t FootSoles::lowestPoint(const SkeletonPose& pose, std::size_t side) const {
+  std::size_t low = heel(side);
+  double low_z = point(pose, low).z();
+  for (std::size_t k = heel(side) + 1; k < heel(side) + points_per_foot_; ++k) {
+    const double z = point(pose, k).z();
+    if (z < low_z) {
+      low = k;
+      low_z = z;
+    }
+  }
   return low;
 }
 

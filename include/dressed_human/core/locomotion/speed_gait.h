@@ -1,12 +1,13 @@
 #pragma once
 // A walk whose stride, cadence and joint curves follow the walking speed. The fitted walk (a
-// Motion) is the gait at its own speed; at another speed its sagittal hip, knee and ankle curves
-// and its pelvis's tilt change as the normative curves change between the two speeds (Schwartz et
-// al. 2008, scaled by leg length, Hof 1996), phase-aligned at heel strike. Gaits are built at the
-// normative classes' speeds and mixed linearly in between (linear in the Fourier coefficients, as Unuma et al. 1995
-// mix styles, so mixing the evaluated angles is the same). The cycle rate at each speed is the
-// speed over the stride the legs actually make with planted feet, so that travel comes from the
-// feet and matches the commanded speed.
+// Motion), its two sides made one (symmetricWalk), is the gait at its own speed; at another speed
+// its sagittal hip, knee and ankle curves and its pelvis's tilt change as the normative curves
+// change between the two speeds (Schwartz et al. 2008, scaled by leg length, Hof 1996),
+// phase-aligned at heel strike. Gaits are built at the normative classes' speeds and mixed
+// linearly in between (linear in the Fourier coefficients, as Unuma et al. 1995 mix styles, so
+// mixing the evaluated angles is the same). The cycle rate at each speed is the speed over the
+// stride the legs actually make with planted feet, so that travel comes from the feet and matches
+// the commanded speed.
 
 #include <memory>
 #include <vector>

@@ -4,6 +4,7 @@
 // planted feet (PlantedFeet), a lean into turns, and standing (with a slight idle sway) when the
 // speed is zero; starting and stopping blend in and out of standing within about a step.
 
+#include <array>
 #include <optional>
 
 #include "dressed_human/core/locomotion/leg_ik.h"
@@ -52,6 +53,7 @@ class Walker {
 
  private:
   void idleSway(double dt, JointAngles& angles);
+  void unwindStanceTwist(double turned, double dt);
 
   SpeedGait gait_;
   WalkerSettings settings_;
@@ -72,6 +74,10 @@ class Walker {
       0.0;  // of the gait's steps taken: 0 standing, 1 full steps (at a lower cadence below the slowest gait)
   double idle_time_ = 0.0;
   std::size_t waist_ = 0, torso_ = 0;  // angle indices of the idle sway
+  // Per side (left, right): how far the leg is turned at the hip (LegIk::turnLeg) so that the
+  // carrying foot keeps its direction on the ground while the body turns above it.
+  std::array<double, 2> stance_twist_{};
+  bool carrying_foot_flat_ = false;  // heel and forefoot on the ground, after the last step
 };
 
 }  // namespace dressed_human
