@@ -19,6 +19,9 @@ constexpr double kStrideChange = 0.4;  // s from standing to full steps and back
 // to a hip's range of rotation, and unwinds once the foot is in the air.
 constexpr double kMaxStanceTwist = 0.5;   // rad
 constexpr double kTwistUnwindTime = 0.1;  // s
+// The foot is flat (and does not turn) while its heel and its forefoot are this near the ground;
+// the skin about a sole point reaches a few millimetres lower than the point (FootSoles).
+constexpr double kFlatBand = 0.01;  // m
 
 }  // namespace
 
@@ -118,8 +121,7 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   for (std::size_t p = soles.ball(carrying) + 1; p < soles.heel(carrying) + soles.pointsPerFoot(); ++p) {
     forefoot = std::min(forefoot, soles.point(pose, p).z());
   }
-  carrying_foot_flat_ =
-      soles.point(pose, soles.heel(carrying)).z() < PlantedFeet::kContactBand && forefoot < PlantedFeet::kContactBand;
+  carrying_foot_flat_ = soles.point(pose, soles.heel(carrying)).z() < kFlatBand && forefoot < kFlatBand;
 }
 
 void Walker::unwindStanceTwist(double turned, double dt) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dressed_human/core/motion/bvh_standing_rest.h"
+#include "dressed_human/core/motion/capture_foot.h"
 #include "dressed_human/core/motion/carried_joints.h"
 #include "dressed_human/core/motion/motion.h"
 
@@ -215,74 +216,6 @@ void placeFittedBody(const BvhClip& clip, const std::vector<BvhPose>& poses, con
   if (!feet[0].empty() && !feet[1].empty()) levelFloor(motion);
 }
 
-struct ToeTip {
-  BvhPoint point;
-  double rest_length = 0.0;  // from the ankle, in the rest pose
-  double flat_height = 0.0;  // of the tip below the ankle over the rest length, the sole flat (negative: lower)
-};
-
-double tipHeight(const BvhClip& clip, const BvhPose& pose, const ToeTip& tip, std::size_t ankle,
-                 const Eigen::Matrix3d& to_ours) {
-  return (to_ours * (bvhPointPosition(clip, pose, tip.point) - pose.position[ankle])).z() / tip.rest_length;
-}
-
-// The capture's foot is flat on the floor when its ankle stands still (between heel strike and
-// heel-off, when the heel has landed and not yet risen): the tip's height then, the median over
-// the stillest tenth of the frames. A rig's rest pose is no measure of it: CMU's stands with the
-// ankle-to-tip line 9.4 and 11.0 deg down, its walk's flat stance at 12.3 and 12.2.
-double flatHeight(const BvhClip& clip, const std::vector<BvhPose>& poses, const ToeTip& tip, std::size_t ankle,
-                  const Eigen::Matrix3d& to_ours) {
-  if (poses.size() < 3) return tip.flat_height;
-  std::vector<std::pair<double, double>> speed_and_height;
-  for (std::size_t f = 1; f + 1 < poses.size(); ++f) {
-    const Eigen::Vector3d moved = to_ours * (poses[f + 1].position[ankle] - poses[f - 1].position[ankle]);
-    speed_and_height.emplace_back(moved.head<2>().norm(), tipHeight(clip, poses[f], tip, ankle, to_ours));
-  }
-  const std::size_t still = std::max<std::size_t>(1, speed_and_height.size() / 10);
-  std::nth_element(speed_and_height.begin(), speed_and_height.begin() + static_cast<std::ptrdiff_t>(still - 1),
-                   speed_and_height.end());
-  std::vector<double> heights;
-  for (std::size_t i = 0; i < still; ++i) heights.push_back(speed_and_height[i].second);
-  std::nth_element(heights.begin(), heights.begin() + static_cast<std::ptrdiff_t>(still / 2), heights.end());
-  return heights[still / 2];
-}
-
-// Our foot's tip (its last sole point: FootSoles) below and along the foot bone, and the bone's
-// pitch when the sole stands flat.
-struct OurFoot {
-  double along = 0.0;
-  double below = 0.0;
-  double flat_pitch = 0.0;
-  explicit OurFoot(const FootSoles& soles)
-      : along(soles.inFoot(soles.pointsPerFoot() - 1).z()),
-        below(soles.inFoot(soles.pointsPerFoot() - 1).x()),
-        flat_pitch(soles.flatPitch()) {}
-  // The tip's height under the ankle with the bone pitched `pitch` (toes up positive).
-  double tipHeight(double pitch) const { return along * std::sin(pitch) - below * std::cos(pitch); }
-};
-
-// Where a rigid foot points: its heading is the capture's ankle-to-tip line's, and its pitch puts
-// its tip as far above or below where it is when our sole stands flat as the capture's tip is
-// above or below its own flat stance (flatHeight), in metres of our leg (`scale`: our ankle rises
-// over the floor as the capture's does). So our foot stands flat where the capture's does (aimed
-// along the line itself, every stance rode on the toes with the heel 4 cm up, as the capture's
-// ankle sits higher above its toe tip than ours above our sole), and at push-off, where the
-// capture's toes bend and ours cannot, the tip sinks as far as the capture's does and leaves the
-// ground when it does: turned by the line's angle, our rigid toes dug in and lifted the body; in
-// foot lengths, our shorter foot's toe rose early.
-Eigen::Vector3d footAim(const BvhClip& clip, const BvhPose& pose, const ToeTip& toe_tip, std::size_t ankle,
-                        const Eigen::Matrix3d& to_ours, const OurFoot& foot, double scale) {
-  const Eigen::Vector3d line = to_ours * (bvhPointPosition(clip, pose, toe_tip.point) - pose.position[ankle]);
-  const Eigen::Vector3d heading(line.x(), line.y(), 0.0);
-  const double reach = std::hypot(foot.along, foot.below);
-  if (!(toe_tip.rest_length > 1e-9) || heading.norm() < 1e-9 || !(reach > 1e-9)) return line;
-  const double wanted =
-      foot.tipHeight(foot.flat_pitch) +
-      (scale * toe_tip.rest_length) * (tipHeight(clip, pose, toe_tip, ankle, to_ours) - toe_tip.flat_height);
-  const double pitch = std::atan2(foot.below, foot.along) + std::asin(std::clamp(wanted / reach, -1.0, 1.0));
-  return heading.normalized() * std::cos(pitch) + Eigen::Vector3d(0, 0, std::sin(pitch));
-}
-
 // From the lowest to the highest joint or end site of the source's rest pose, along our up.
 double restHeight(const BvhClip& clip, const BvhPose& rest, const Eigen::Matrix3d& to_ours, std::size_t root) {
   double low = 0.0;
@@ -448,7 +381,7 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
       const BvhPoint tip = bvhFarthestPointBelow(clip, source_rest, source_joint[j]);
       to_tip = bvhPointPosition(clip, source_rest, tip) - source_rest.position[source_joint[j]];
       const Eigen::Vector3d tip_in_ours = to_ours * to_tip;
-      toe_tip[j] = ToeTip{tip, to_tip.norm(), 0.0};
+      toe_tip[j] = ToeTip{tip, to_tip.norm(), 0.0, 0.0};
       toe_tip[j]->flat_height = tipHeight(clip, source_rest, *toe_tip[j], source_joint[j], to_ours);
       // At rest our sole lies flat under the capture's foot: the tip's heading, level.
       const Eigen::Vector3d level(tip_in_ours.x(), tip_in_ours.y(), 0.0);
@@ -489,10 +422,15 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
   std::vector<BvhPose> poses(frames);
   for (std::size_t f = 0; f < frames; ++f) poses[f] = bvhForwardKinematics(clip, f);
   holdPostures(poses, source_joint, to_ours, rest_offset, carried, motion.held_joints);
+  const auto footOf = [&](const BvhPose& pose, std::size_t j) {
+    return aimedFoot(to_ours * pose.rotation[source_joint[j]] * to_ours.transpose() * rest_offset[j],
+                     footAim(clip, pose, *toe_tip[j], source_joint[j], to_ours, our_foot, motion.root_scale),
+                     toe_tip[j]->flat_roll);
+  };
   for (std::size_t j = 0; j < kJointCount; ++j) {
-    if (toe_tip[j]) {
-      toe_tip[j]->flat_height = flatHeight(clip, poses, *toe_tip[j], source_joint[j], to_ours);
-    }
+    if (!toe_tip[j]) continue;
+    toe_tip[j]->flat_height = flatHeight(clip, poses, *toe_tip[j], source_joint[j], to_ours);
+    toe_tip[j]->flat_roll = flatRoll(poses, source_joint[j], to_ours, [&](const BvhPose& p) { return footOf(p, j); });
   }
   motion.times.resize(frames);
   motion.angles.resize(frames);
@@ -509,13 +447,9 @@ SampledMotion retargetBvh(const BvhClip& file_clip, const BvhJointMap& map, cons
       target_pointer[j] = nullptr;
       if (!motion.driven[j]) continue;
       target[j] = to_ours * pose.rotation[source_joint[j]] * to_ours.transpose() * rest_offset[j];
-      if (toe_tip[j]) {
-        const Eigen::Vector3d aim =
-            footAim(clip, pose, *toe_tip[j], source_joint[j], to_ours, our_foot, motion.root_scale);
-        target[j] = toMatrix(Eigen::Quaterniond::FromTwoVectors(target[j].col(2), aim)) * target[j];
-      } else if (!carried[j].source.empty()) {
+      if (toe_tip[j]) target[j] = footOf(pose, j);
+      if (!toe_tip[j] && !carried[j].source.empty())
         target[j] = carriedRotation(carried[j], pose, source_joint[j], to_ours, carried_now) * rest_offset[j];
-      }
       target_pointer[j] = &target[j];
       motion.reference_joint_positions[f][j] =
           motion.reference_scale * (to_ours * (pose.position[source_joint[j]] - pose.position[root]));
