@@ -7,12 +7,15 @@ OpenSim's tutorial gait cycle (on the gait2392 model) and writes the chart and t
 from those runs. With BANDAI_MIRROR (a bare clone of BandaiNamcoResearchInc/
 Bandai-Namco-Research-Motiondataset, whose CC BY-NC-ND captures this repository does not carry),
 also every dataset-1 walk's first take: another lab's rig, fitted at fit_motion's default order.
+With LAFAN_MIRROR (a bare clone of karstm/motion-matching, whose history carried two LAFAN1 walks,
+CC BY-NC-ND), also those: the straightest stretch of each, fitted at the default order.
 
-Usage: [BANDAI_MIRROR=DIR] chart_body_fit.py FIT_MOTION [CAPTURE]
+Usage: [BANDAI_MIRROR=DIR] [LAFAN_MIRROR=DIR] chart_body_fit.py FIT_MOTION [CAPTURE]
   writes docs/body_fit_accuracy.png, docs/body_fit_accuracy.md, docs/body_fit_sweep_cmu_02_01.csv,
   docs/body_fit_sweep_cmu_07_01.csv and docs/body_fit_sweep_opensim_gait2392.csv
 """
 import csv
+import math
 import os
 import re
 import subprocess
@@ -64,6 +67,92 @@ def reportLines(report):
 
 
 BANDAI_WALKS = "dataset/Bandai-Namco-Research-Motiondataset-1/data/"
+# LAFAN1 (Ubisoft La Forge) walks as karstm/motion-matching carried them in its history: the
+# original take of walk4_subject1, and walk1_subject1 as cropped there (its header says 5700
+# frames, the file holds 5707: the reader takes the header's).
+LAFAN_WALKS = [("fcce6935ab4d144a966096a1766735c638057ac3", "data/mocap/lafan1/walk4_subject1.bvh", "walk4_subject1"),
+               ("84903d96666f34f16a71d603b7a21acf35a7c839", "data/mocap/lafan1_basic/walk1_subject1 copy.bvh",
+                "walk1_subject1 (cropped)")]
+LAFAN_WINDOW_S = 5.0     # a straight stretch: at least three gait cycles
+LAFAN_MIN_SPEED = 0.5    # m/s throughout it (the takes are in cm)
+
+
+def straightest_stretch(bvh_text):
+    """The frames [first, end) of the LAFAN take's straightest LAFAN_WINDOW_S seconds walked at
+    LAFAN_MIN_SPEED or faster throughout (speed and heading of the root over one second). LAFAN
+    walks wander, turn and stop; fit_motion fits a periodic walk. Returns (first, end, the
+    heading's range over it in degrees, the mean speed)."""
+    lines = bvh_text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
+    frame_time = float(lines[start].split(":")[1])
+    frames = [[float(v) for v in line.split()[:3]] for line in lines[start + 1:] if line.strip()]
+    second = max(1, round(1.0 / frame_time))
+    window = round(LAFAN_WINDOW_S / frame_time)
+    velocity = []
+    for f in range(len(frames) - second):
+        dx = (frames[f + second][0] - frames[f][0]) / 100.0
+        dz = (frames[f + second][2] - frames[f][2]) / 100.0
+        velocity.append((math.hypot(dx, dz) / (second * frame_time), math.atan2(dz, dx)))
+    best = None
+    for first in range(0, len(velocity) - window):
+        stretch = velocity[first:first + window]
+        if min(v[0] for v in stretch) < LAFAN_MIN_SPEED:
+            continue
+        headings, turned = [stretch[0][1]], 0.0
+        for v in stretch[1:]:
+            turned += math.remainder(v[1] - headings[-1], 2.0 * math.pi)
+            headings.append(headings[0] + turned)
+        spread = max(headings) - min(headings)
+        if best is None or spread < best[2]:
+            best = (first, first + window + second, spread, sum(v[0] for v in stretch) / window)
+    return None if best is None else (best[0], best[1], math.degrees(best[2]), best[3])
+
+
+def cut_bvh(bvh_text, first, end):
+    """The take with frames [first, end) only."""
+    lines = bvh_text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
+    declared = next(int(line.split(":")[1]) for line in lines if line.strip().startswith("Frames:"))
+    frames = [line.rstrip() for line in lines[start + 1:] if line.strip()][:declared][first:end]
+    header = ["Frames: %d" % len(frames) if line.strip().startswith("Frames:") else line.rstrip()
+              for line in lines[:start + 1]]
+    return "\n".join(header + frames) + "\n"
+
+
+MIRROR_HEADER = ["| walk | period, speed | joints: mean / max (cm) | worst joint (mean / max, cm) | "
+                 "the capture's cycle-to-cycle variation: mean / max (cm) | "
+                 "our skeleton on the unsmoothed retarget: mean / max (cm) | rest |", "|---|---|---|---|---|---|---|"]
+
+
+def fitted_row(tool, directory, name, label, bvh_bytes):
+    """One Markdown row: `bvh_bytes` fitted by fit_motion -v at its default tolerances."""
+    path = os.path.join(directory, name)
+    with open(path, "wb") as f:
+        f.write(bvh_bytes)
+    run = subprocess.run([tool, path, "--urdf", os.path.join(ROOT, "urdf", "human.urdf"), "-o",
+                          os.path.join(directory, "walk.yaml"), "-v"], capture_output=True, text=True, cwd=ROOT)
+    if run.returncode != 0:
+        reason = run.stderr.strip().splitlines()[-1].replace("fit_motion: %s: " % path, "")
+        return "| %s | not fitted: %s | | | | | |" % (label, reason)
+    report = run.stderr
+    number = lambda pattern: re.search(pattern, report)  # noqa: E731
+    period = number(r"period ([0-9.]+) s")
+    speed = number(r"forward speed ([0-9.]+) m/s")
+    joints = number(r"root-relative\): mean ([0-9.]+) cm, max ([0-9.]+) cm")
+    floor = number(r"unsmoothed retarget vs the capture's FK: mean ([0-9.]+) cm, max ([0-9.]+) cm")
+    variation = number(r"cycle-to-cycle variation .*?: mean ([0-9.]+) cm, max ([0-9.]+) cm")
+    per_joint = re.findall(r"^ {4}([a-z_]+) +mean ([0-9.]+) cm, max ([0-9.]+) cm", report, re.M)
+    worst = max(per_joint, key=lambda j: float(j[2]))
+    rest = number(r"frame (\d+) is taken as the rest pose")
+    return "| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s / %s | %s / %s | %s |" % (
+        label, period.group(1), speed.group(1), joints.group(1), joints.group(2), worst[0], worst[1], worst[2],
+        variation.group(1), variation.group(2), floor.group(1), floor.group(2),
+        "frame %s" % rest.group(1) if rest else "zero pose")
+
+
+def git_blob(mirror, commit, path):
+    return subprocess.run(["git", "--git-dir", mirror, "show", "%s:%s" % (commit, path)], capture_output=True,
+                          check=True).stdout
 
 
 def bandai_rows(tool, mirror):
@@ -76,37 +165,29 @@ def bandai_rows(tool, mirror):
         sys.exit(1)
     commit = subprocess.run(["git", "--git-dir", mirror, "rev-parse", "HEAD"], capture_output=True, text=True,
                             check=True).stdout.strip()
-    rows = ["| walk | period, speed | joints: mean / max (cm) | worst joint (mean / max, cm) | "
-            "the capture's cycle-to-cycle variation: mean / max (cm) | "
-            "our skeleton on the unsmoothed retarget: mean / max (cm) | rest |", "|---|---|---|---|---|---|---|"]
+    rows = list(MIRROR_HEADER)
     with tempfile.TemporaryDirectory() as directory:
         for walk in walks:
-            path = os.path.join(directory, os.path.basename(walk))
-            with open(path, "wb") as f:
-                f.write(subprocess.run(["git", "--git-dir", mirror, "show", "HEAD:" + walk], capture_output=True,
-                                       check=True).stdout)
-            run = subprocess.run([tool, path, "--urdf", os.path.join(ROOT, "urdf", "human.urdf"), "-o",
-                                  os.path.join(directory, "walk.yaml"), "-v"], capture_output=True, text=True, cwd=ROOT)
             style = re.search(r"walk_([a-z-]+)_001", walk).group(1)
-            if run.returncode != 0:
-                reason = run.stderr.strip().splitlines()[-1].replace("fit_motion: %s: " % path, "")
-                rows.append("| %s | not fitted: %s | | | | | |" % (style, reason))
-                continue
-            report = run.stderr
-            number = lambda pattern: re.search(pattern, report)
-            period = number(r"period ([0-9.]+) s")
-            speed = number(r"forward speed ([0-9.]+) m/s")
-            joints = number(r"root-relative\): mean ([0-9.]+) cm, max ([0-9.]+) cm")
-            floor = number(r"unsmoothed retarget vs the capture's FK: mean ([0-9.]+) cm, max ([0-9.]+) cm")
-            variation = number(r"cycle-to-cycle variation .*?: mean ([0-9.]+) cm, max ([0-9.]+) cm")
-            per_joint = re.findall(r"^ {4}([a-z_]+) +mean ([0-9.]+) cm, max ([0-9.]+) cm", report, re.M)
-            worst = max(per_joint, key=lambda j: float(j[2]))
-            rest = number(r"frame (\d+) is taken as the rest pose")
-            rows.append("| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s / %s | %s / %s | %s |" % (
-                style, period.group(1), speed.group(1), joints.group(1), joints.group(2), worst[0], worst[1],
-                worst[2], variation.group(1), variation.group(2), floor.group(1), floor.group(2),
-                "frame %s" % rest.group(1) if rest else "zero pose"))
+            rows.append(fitted_row(tool, directory, os.path.basename(walk), style, git_blob(mirror, "HEAD", walk)))
     return rows, commit
+
+
+def lafan_rows(tool, mirror):
+    """One Markdown row per LAFAN1 walk: its straightest stretch, fitted from LAFAN_MIRROR."""
+    rows = list(MIRROR_HEADER)
+    with tempfile.TemporaryDirectory() as directory:
+        for commit, path, label in LAFAN_WALKS:
+            text = git_blob(mirror, commit, path).decode()
+            stretch = straightest_stretch(text)
+            if stretch is None:
+                rows.append("| %s | no %.0f s stretch at %.1f m/s or faster | | | | | |" % (
+                    label, LAFAN_WINDOW_S, LAFAN_MIN_SPEED))
+                continue
+            first, end, spread, speed = stretch
+            cut = "%s, frames %d-%d (heading within %.0f deg)" % (label, first, end - 1, spread)
+            rows.append(fitted_row(tool, directory, "lafan.bvh", cut, cut_bvh(text, first, end).encode()))
+    return rows
 
 
 def main():
@@ -197,6 +278,17 @@ def main():
                   "each joint against the mean of the take's cycles at the same phase, how close any periodic motion "
                   "could follow it on average (fit_motion -v)." % commit[:7], ""]
         lines += bandai + [""]
+    lafan_mirror = os.environ.get("LAFAN_MIRROR", "")
+    if lafan_mirror:
+        lines += ["## LAFAN1 walks (BVH): Ubisoft La Forge's rig and actor, not fitted on", "",
+                  "LAFAN1 (Harvey et al. 2020, CC BY-NC-ND 4.0, read from a clone of karstm/motion-matching, whose "
+                  "history carried two of its walks; not carried here): walk4_subject1 @%s and walk1_subject1 as "
+                  "cropped @%s. Their zero pose lies along the bones' x axes: fit_motion takes their most upright "
+                  "frame as the rest pose. The takes wander, turn and stop, so each is cut to its straightest "
+                  "%.0f s walked at %.1f m/s or faster throughout (chart_body_fit.py's straightest_stretch), "
+                  "then fitted at fit_motion's default tolerances over that stretch's whole cycles." % (
+                      LAFAN_WALKS[0][0][:7], LAFAN_WALKS[1][0][:7], LAFAN_WINDOW_S, LAFAN_MIN_SPEED), ""]
+        lines += lafan_rows(tool, lafan_mirror) + [""]
     with open(os.path.join(DOCS, "body_fit_accuracy.md"), "w") as f:
         f.write("\n".join(lines))
     print("wrote %s, %s, %s, %s, %s" % (chart, os.path.join(DOCS, "body_fit_accuracy.md"), sweep_path, other_path,
