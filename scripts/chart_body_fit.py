@@ -8,9 +8,10 @@ from those runs. With BANDAI_MIRROR (a bare clone of BandaiNamcoResearchInc/
 Bandai-Namco-Research-Motiondataset, whose CC BY-NC-ND captures this repository does not carry),
 also every dataset-1 walk's first take: another lab's rig, fitted at fit_motion's default order.
 With LAFAN_MIRROR (a bare clone of karstm/motion-matching, whose history carried two LAFAN1 walks,
-CC BY-NC-ND), also those: the straightest stretch of each, fitted at the default order.
+CC BY-NC-ND), also those: the straightest stretch of each, fitted at the default order. With
+MIXAMO_MIRROR (a bare clone of jerech33/haze), also its Mixamo-rigged walk cycle.
 
-Usage: [BANDAI_MIRROR=DIR] [LAFAN_MIRROR=DIR] chart_body_fit.py FIT_MOTION [CAPTURE]
+Usage: [BANDAI_MIRROR=DIR] [LAFAN_MIRROR=DIR] [MIXAMO_MIRROR=DIR] chart_body_fit.py FIT_MOTION [CAPTURE]
   writes docs/body_fit_accuracy.png, docs/body_fit_accuracy.md, docs/body_fit_sweep_cmu_02_01.csv,
   docs/body_fit_sweep_cmu_07_01.csv and docs/body_fit_sweep_opensim_gait2392.csv
 """
@@ -121,33 +122,38 @@ def cut_bvh(bvh_text, first, end):
 
 MIRROR_HEADER = ["| walk | period, speed | joints: mean / max (cm) | worst joint (mean / max, cm) | "
                  "the capture's cycle-to-cycle variation: mean / max (cm) | "
-                 "our skeleton on the unsmoothed retarget: mean / max (cm) | rest |", "|---|---|---|---|---|---|---|"]
+                 "our skeleton on the unsmoothed retarget: mean / max (cm) | rest | "
+                 "mean angles beyond 90 deg from rest |", "|---|---|---|---|---|---|---|---|"]
 
 
-def fitted_row(tool, directory, name, label, bvh_bytes):
+def fitted_row(tool, directory, name, label, bvh_bytes, options=()):
     """One Markdown row: `bvh_bytes` fitted by fit_motion -v at its default tolerances."""
     path = os.path.join(directory, name)
     with open(path, "wb") as f:
         f.write(bvh_bytes)
     run = subprocess.run([tool, path, "--urdf", os.path.join(ROOT, "urdf", "human.urdf"), "-o",
-                          os.path.join(directory, "walk.yaml"), "-v"], capture_output=True, text=True, cwd=ROOT)
+                          os.path.join(directory, "walk.yaml"), "-v"] + list(options), capture_output=True, text=True,
+                         cwd=ROOT)
     if run.returncode != 0:
         reason = run.stderr.strip().splitlines()[-1].replace("fit_motion: %s: " % path, "")
-        return "| %s | not fitted: %s | | | | | |" % (label, reason)
+        return "| %s | not fitted: %s | | | | | | |" % (label, reason)
     report = run.stderr
     number = lambda pattern: re.search(pattern, report)  # noqa: E731
     period = number(r"period ([0-9.]+) s")
-    speed = number(r"forward speed ([0-9.]+) m/s")
+    speed = number(r"forward speed (-?[0-9.]+) m/s")
     joints = number(r"root-relative\): mean ([0-9.]+) cm, max ([0-9.]+) cm")
     floor = number(r"unsmoothed retarget vs the capture's FK: mean ([0-9.]+) cm, max ([0-9.]+) cm")
     variation = number(r"cycle-to-cycle variation .*?: mean ([0-9.]+) cm, max ([0-9.]+) cm")
     per_joint = re.findall(r"^ {4}([a-z_]+) +mean ([0-9.]+) cm, max ([0-9.]+) cm", report, re.M)
     worst = max(per_joint, key=lambda j: float(j[2]))
     rest = number(r"frame (\d+) is taken as the rest pose")
-    return "| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s / %s | %s / %s | %s |" % (
+    suspects = re.findall(r"suspect: (\S+) has a mean of (-?[0-9.]+) deg", report)
+    varies = "%s / %s" % (variation.group(1), variation.group(2)) if variation else "one cycle only"
+    return "| %s | %s s, %s m/s | %s / %s | %s %s / %s | %s | %s / %s | %s | %s |" % (
         label, period.group(1), speed.group(1), joints.group(1), joints.group(2), worst[0], worst[1], worst[2],
-        variation.group(1), variation.group(2), floor.group(1), floor.group(2),
-        "frame %s" % rest.group(1) if rest else "zero pose")
+        varies, floor.group(1), floor.group(2),
+        "frame %s" % rest.group(1) if rest else "zero pose",
+        ", ".join("%s %s" % (dof, mean) for dof, mean in suspects) or "none")
 
 
 def git_blob(mirror, commit, path):
@@ -181,13 +187,38 @@ def lafan_rows(tool, mirror):
             text = git_blob(mirror, commit, path).decode()
             stretch = straightest_stretch(text)
             if stretch is None:
-                rows.append("| %s | no %.0f s stretch at %.1f m/s or faster | | | | | |" % (
+                rows.append("| %s | no %.0f s stretch at %.1f m/s or faster | | | | | | |" % (
                     label, LAFAN_WINDOW_S, LAFAN_MIN_SPEED))
                 continue
             first, end, spread, speed = stretch
             cut = "%s, frames %d-%d (heading within %.0f deg)" % (label, first, end - 1, spread)
             rows.append(fitted_row(tool, directory, "lafan.bvh", cut, cut_bvh(text, first, end).encode()))
     return rows
+
+
+# A Mixamo-rigged walk ("mixamorig:" joint names): one in-place cycle of 40 frames that loops.
+MIXAMO_WALK = ("0417d922cfe2049481d8b60fb319a880f0c9a276", "bvh/walk.bvh", "jerech33/haze walk.bvh")
+
+
+def closed_loop(bvh_text):
+    """A looping cycle of N frames as N + 1 frames ending where it began, and its period (N frames):
+    one whole cycle, which fit_motion needs the record to span."""
+    lines = bvh_text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
+    frame_time = float(lines[start].split(":")[1])
+    frames = [line.rstrip() for line in lines[start + 1:] if line.strip()]
+    header = ["Frames: %d" % (len(frames) + 1) if line.strip().startswith("Frames:") else line.rstrip()
+              for line in lines[:start + 1]]
+    return "\n".join(header + frames + frames[:1]) + "\n", len(frames) * frame_time
+
+
+def mixamo_rows(tool, mirror):
+    """The Mixamo walk's row: its one cycle, closed, fitted from MIXAMO_MIRROR with --period."""
+    commit, path, label = MIXAMO_WALK
+    text, period = closed_loop(git_blob(mirror, commit, path).decode())
+    with tempfile.TemporaryDirectory() as directory:
+        row = fitted_row(tool, directory, "mixamo.bvh", label, text.encode(), ["--period", "%.6f" % period])
+    return list(MIRROR_HEADER) + [row]
 
 
 def main():
@@ -289,6 +320,15 @@ def main():
                   "then fitted at fit_motion's default tolerances over that stretch's whole cycles." % (
                       LAFAN_WALKS[0][0][:7], LAFAN_WALKS[1][0][:7], LAFAN_WINDOW_S, LAFAN_MIN_SPEED), ""]
         lines += lafan_rows(tool, lafan_mirror) + [""]
+    mixamo_mirror = os.environ.get("MIXAMO_MIRROR", "")
+    if mixamo_mirror:
+        lines += ["## A Mixamo walk (BVH): Adobe Mixamo's rig, not fitted on", "",
+                  "jerech33/haze @%s `%s` (a game engine's sample; the repository states no licence and Mixamo's "
+                  "animations are Adobe's: read from a clone, not carried here): one in-place walk cycle of 40 "
+                  "frames that loops, closed with its first frame and fitted as one cycle (`--period`). Its "
+                  "\"cycle-to-cycle variation\" is zero by construction, and its feet slide back under a still "
+                  "root, so its stance feet say little." % (MIXAMO_WALK[0][:7], MIXAMO_WALK[1]), ""]
+        lines += mixamo_rows(tool, mixamo_mirror) + [""]
     with open(os.path.join(DOCS, "body_fit_accuracy.md"), "w") as f:
         f.write("\n".join(lines))
     print("wrote %s, %s, %s, %s, %s" % (chart, os.path.join(DOCS, "body_fit_accuracy.md"), sweep_path, other_path,

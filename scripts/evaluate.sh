@@ -11,7 +11,8 @@
 #        earlier build, e.g. a worktree of the commit before issue 40 built with the targets
 #        dressed_human_rviz and skeleton_publisher>] [BANDAI_MIRROR=<bare clone of
 #        Bandai-Namco-Research-Motiondataset: its walks join the body-fit table>] [LAFAN_MIRROR=<bare
-#        clone of karstm/motion-matching: two LAFAN1 walks from its history join it too>] scripts/evaluate.sh
+#        clone of karstm/motion-matching: two LAFAN1 walks from its history join it too>] [MIXAMO_MIRROR=<bare
+#        clone of jerech33/haze: its Mixamo walk cycle joins it too>] scripts/evaluate.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -31,7 +32,7 @@ mkdir -p "$ROOT/build/evaluation"
 mkdir "$RESULTS" "$OUT"   # never an existing folder: nothing from another run can be in it
 export DRESSED_HUMAN_DOCS=$OUT   # where the chart scripts write what belongs in docs/
 {
-  echo "command: scripts/evaluate.sh${PEER_MIRROR:+ with PEER_MIRROR=$PEER_MIRROR}${RELIEF_BEFORE_DEVEL:+ RELIEF_BEFORE_DEVEL=$RELIEF_BEFORE_DEVEL}${BANDAI_MIRROR:+ BANDAI_MIRROR=$BANDAI_MIRROR}${LAFAN_MIRROR:+ LAFAN_MIRROR=$LAFAN_MIRROR}"
+  echo "command: scripts/evaluate.sh${PEER_MIRROR:+ with PEER_MIRROR=$PEER_MIRROR}${RELIEF_BEFORE_DEVEL:+ RELIEF_BEFORE_DEVEL=$RELIEF_BEFORE_DEVEL}${BANDAI_MIRROR:+ BANDAI_MIRROR=$BANDAI_MIRROR}${LAFAN_MIRROR:+ LAFAN_MIRROR=$LAFAN_MIRROR}${MIXAMO_MIRROR:+ MIXAMO_MIRROR=$MIXAMO_MIRROR}"
   echo "commit: $COMMIT"
   echo "started: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo -n "host: $(hostname), $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, "
