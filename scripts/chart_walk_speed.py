@@ -36,7 +36,7 @@ def main():
     cadence_axis.set(xlabel="speed (m/s)", ylabel="cadence (steps/min)", title="Cadence against speed")
     slide_speeds = [r["speed_m_s"] for r in slide]
     slide_axis.plot(slide_speeds, [r["playback_worst_slide_mm"] for r in slide], "s-", color="tab:red",
-                    label="before: walk sped up, root at constant speed")
+                    label="before: walk sped up, root at constant speed (set down onto its lowest frame)")
     slide_axis.plot(slide_speeds, [r["planted_worst_slide_mm"] for r in slide], "o-", color="tab:green", label="planted feet")
     slide_axis.axhline(5.0, color="black", linewidth=0.8, linestyle=":", label="goal 5 mm")
     slide_axis.set_yscale("symlog", linthresh=1.0)
@@ -54,16 +54,18 @@ def main():
             f.write("| %.2f | %.3f | %.3f | %.1f | %.1f |\n" % (r["speed_m_s"], r["our_stride_m"], r["normative_stride_m"],
                                                           r["our_cadence_steps_min"], r["normative_cadence_steps_min"]))
         f.write("\n| speed (m/s) | travel (m/s) | worst stance slide, planted (mm) | lowest sole point, planted (mm) | "
-                "stance (% of the cycle) | foot flat (% of stance) | stances begun on the heel (%) | "
+                "stance (% of the cycle): left / right | foot flat (% of stance) | stances begun on the heel (%) | "
                 "worst slide, old playback (mm) | lowest sole point, old playback (mm) |\n"
                 "|---|---|---|---|---|---|---|---|---|\n")
         for r in slide:
-            f.write("| %.1f | %.3f | %.2f | %.2f | %.1f | %.1f | %.0f | %.1f | %.1f |\n" % (
+            f.write("| %.1f | %.3f | %.2f | %.2f | %.1f / %.1f | %.1f | %.0f | %.1f | %.1f |\n" % (
                 r["speed_m_s"], r["planted_travel_m_s"], r["planted_worst_slide_mm"], r["planted_lowest_sole_mm"],
-                r["stance_percent"], r["flat_percent_of_stance"], r["heel_first_percent"], r["playback_worst_slide_mm"],
-                r["playback_lowest_sole_mm"]))
+                r["stance_left_percent"], r["stance_right_percent"], r["flat_percent_of_stance"],
+                r["heel_first_percent"], r["playback_worst_slide_mm"], r["playback_lowest_sole_mm"]))
         f.write("\nStance: a foot's lowest sole point within 1 cm of the floor; foot flat: its heel and toe both "
-                "within 1 cm (FootContactMeter, foot_contact.h); both feet, 10 s of straight walking.\n")
+                "within 1 cm (FootContactMeter, foot_contact.h); foot flat and heel first over both feet; 10 s of "
+                "straight walking. The old playback is set down so that its lowest sole point over those 10 s "
+                "touches the floor (its fitted root height need not put the drawn sole there).\n")
     print("wrote docs/walk_speed.png and docs/walk_speed.md")
 
 

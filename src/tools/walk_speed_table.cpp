@@ -8,6 +8,7 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <string>
 
 #include "dressed_human/core/skeleton/body_description.h"
@@ -48,7 +49,9 @@ double plantedSlide(const Skeleton& skeleton, const SpeedGait& gait, double spee
   return meter.worstSlide();
 }
 
-// The old playback: the fitted walk at speed_factor = speed / its own speed, root x = speed t.
+// The old playback: the fitted walk at speed_factor = speed / its own speed, root x = speed t,
+// set down so that its lowest sole point over the measure touches the floor: the fitted root
+// height need not put the drawn sole there, and a sole that never comes down shows no slide.
 double playbackSlide(const Skeleton& skeleton, const Motion& walk, const FootSoles& soles, double speed,
                      double& lowest) {
   MotionEvaluator evaluator(walk);
@@ -58,9 +61,17 @@ double playbackSlide(const Skeleton& skeleton, const Motion& walk, const FootSol
   JointAngles angles;
   RigidTransform root;
   SkeletonPose pose;
-  StanceSlideMeter meter;
-  for (int i = static_cast<int>(kSettle / kStep); i < static_cast<int>((kSettle + kMeasure) / kStep); ++i) {
+  const int first = static_cast<int>(kSettle / kStep), end = static_cast<int>((kSettle + kMeasure) / kStep);
+  double floor = std::numeric_limits<double>::infinity();
+  for (int i = first; i < end; ++i) {
     evaluator.evaluate(i * kStep * factor, angles, root);
+    kinematics.compute(root, angles, pose);
+    for (std::size_t side = 0; side < 2; ++side) floor = std::min(floor, soles.lowest(pose, side));
+  }
+  StanceSlideMeter meter;
+  for (int i = first; i < end; ++i) {
+    evaluator.evaluate(i * kStep * factor, angles, root);
+    root.translation.z() -= floor;
     kinematics.compute(root, angles, pose);
     meter.add(feet, pose);
   }
@@ -83,7 +94,8 @@ int run(const std::string& source, const std::string& output) {
   }
   std::ofstream slides(output + "/walk_slide.csv");
   slides << "speed_m_s,planted_worst_slide_mm,playback_worst_slide_mm,planted_travel_m_s,planted_lowest_sole_mm,"
-            "playback_lowest_sole_mm,stance_percent,flat_percent_of_stance,heel_first_percent\n";
+            "playback_lowest_sole_mm,stance_percent,flat_percent_of_stance,heel_first_percent,stance_left_percent,"
+            "stance_right_percent\n";
   for (double speed = 0.6; speed <= 1.81; speed += 0.2) {
     double travelled = 0.0, planted_lowest = 0.0, playback_lowest = 0.0;
     FootContactMeter contact;
@@ -94,7 +106,7 @@ int run(const std::string& source, const std::string& output) {
            << 50.0 * (contact.flatShareOfStance(0) + contact.flatShareOfStance(1)) << ','
            << 100.0 * static_cast<double>(contact.heelFirstStances(0) + contact.heelFirstStances(1)) /
                   static_cast<double>(std::max<std::size_t>(1, contact.stances(0) + contact.stances(1)))
-           << '\n';
+           << ',' << 100.0 * contact.stanceShare(0) << ',' << 100.0 * contact.stanceShare(1) << '\n';
   }
   std::cout << "wrote " << output << "/walk_speed_trend.csv and walk_slide.csv\n";
   return 0;
