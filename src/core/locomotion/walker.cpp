@@ -44,6 +44,8 @@ void Walker::place(const Eigen::Vector2d& position, double heading, double phase
   phase_ = phase;
   speed_ = std::clamp(speed, 0.0, WalkerSettings::kMaxSpeed);
   stride_ = speed_ > 0.0 ? 1.0 : 0.0;
+  stance_twist_ = {};
+  carrying_foot_flat_ = false;
   feet_.reset(position);
 }
 
@@ -96,7 +98,7 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   Eigen::Quaterniond pelvis;
   gait_.evaluate(phase_, speed_, stride_, angles, pelvis);
   idleSway(dt, angles);
-  unwindStanceTwist(turned * walking_, dt);
+  updateStanceTwist(turned * walking_, dt);
 
   const Eigen::Quaterniond body = Eigen::AngleAxisd(heading_, Eigen::Vector3d::UnitZ()) *
                                   Eigen::AngleAxisd(lean_, Eigen::Vector3d::UnitX()) * pelvis;
@@ -117,14 +119,11 @@ void Walker::step(double dt, JointAngles& angles, SkeletonPose& pose) {
   position_ = root.head<2>();
   const FootSoles& soles = feet_.soles();
   const std::size_t carrying = feet_.isLeft(feet_.carryingPoint()) ? 0 : 1;
-  double forefoot = soles.point(pose, soles.ball(carrying)).z();
-  for (std::size_t p = soles.ball(carrying) + 1; p < soles.heel(carrying) + soles.pointsPerFoot(); ++p) {
-    forefoot = std::min(forefoot, soles.point(pose, p).z());
-  }
-  carrying_foot_flat_ = soles.point(pose, soles.heel(carrying)).z() < kFlatBand && forefoot < kFlatBand;
+  carrying_foot_flat_ =
+      soles.point(pose, soles.heel(carrying)).z() < kFlatBand && soles.forefoot(pose, carrying) < kFlatBand;
 }
 
-void Walker::unwindStanceTwist(double turned, double dt) {
+void Walker::updateStanceTwist(double turned, double dt) {
   // On its heel or its ball alone the foot turns about that point without sliding: the hip
   // unwinds there, as people pivot on the ball of the foot in a turn.
   const std::size_t carrying = feet_.isLeft(feet_.carryingPoint()) ? 0 : 1;

@@ -77,6 +77,12 @@ std::size_t FootSoles::lowestPoint(const SkeletonPose& pose, std::size_t side) c
   return low;
 }
 
+double FootSoles::forefoot(const SkeletonPose& pose, std::size_t side) const {
+  double low = point(pose, ball(side)).z();
+  for (std::size_t p = ball(side) + 1; p < heel(side) + points_per_foot_; ++p) low = std::min(low, point(pose, p).z());
+  return low;
+}
+
 double FootSoles::flatPitch() const {
   // With the axis level and +x down, a point x below the axis at z along it; heel and ball level
   // once the axis turns toes-down by the angle their depths differ by over their distance.

@@ -24,11 +24,7 @@ class FootContactMeter {
     for (std::size_t side = 0; side < 2; ++side) {
       const bool heel_down = soles.point(pose, soles.heel(side)).z() < kDownBand;
       // The ball, or the toe cap beyond it as the foot rolls over it.
-      double forefoot = soles.point(pose, soles.ball(side)).z();
-      for (std::size_t p = soles.ball(side) + 1; p < soles.heel(side) + soles.pointsPerFoot(); ++p) {
-        forefoot = std::min(forefoot, soles.point(pose, p).z());
-      }
-      const bool toe_down = forefoot < kDownBand;
+      const bool toe_down = soles.forefoot(pose, side) < kDownBand;
       const bool down = soles.lowest(pose, side) < kDownBand;
       if (down) ++stance_[side];
       if (heel_down && toe_down) ++flat_[side];

@@ -53,7 +53,7 @@ class Walker {
 
  private:
   void idleSway(double dt, JointAngles& angles);
-  void unwindStanceTwist(double turned, double dt);
+  void updateStanceTwist(double turned, double dt);
 
   SpeedGait gait_;
   WalkerSettings settings_;

@@ -43,6 +43,8 @@ class FootSoles {
   // The lowest sole point of foot `side` (0 left, 1 right) in `pose`: its height.
   double lowest(const SkeletonPose& pose, std::size_t side) const;
   std::size_t lowestPoint(const SkeletonPose& pose, std::size_t side) const;  // its index
+  // The height of the lowest of foot `side`'s ball and the toe cap beyond it (the heel's: point()).
+  double forefoot(const SkeletonPose& pose, std::size_t side) const;
   // The pitch of the foot bone's axis (rad, toes up positive) at which the heel and the ball of
   // the left foot are level, the foot not rolled: how the foot stands flat.
   double flatPitch() const;
