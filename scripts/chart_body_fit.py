@@ -221,6 +221,39 @@ def mixamo_rows(tool, mirror):
     return list(MIRROR_HEADER) + [row]
 
 
+def bandai_section(tool, mirror):
+    rows, commit = bandai_rows(tool, mirror)
+    return ["## Bandai-Namco dataset-1 walks (BVH): another lab's rig, not fitted on", "",
+            "BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @%s, every walk style's first take "
+            "(CC BY-NC-ND 4.0, read from a clone, not carried here). Their pelvis hangs below a root joint "
+            "and their zero pose is folded: fit_motion takes their most upright frame as the rest pose. "
+            "Fitted at fit_motion's default tolerances, over every whole cycle of each take. The takes start "
+            "and end at a standstill and their cycles differ: \"the capture's cycle-to-cycle variation\" is "
+            "each joint against the mean of the take's cycles at the same phase, how close any periodic motion "
+            "could follow it on average (fit_motion -v)." % commit[:7], ""] + rows
+
+
+def lafan_section(tool, mirror):
+    return ["## LAFAN1 walks (BVH): Ubisoft La Forge's rig and actor, not fitted on", "",
+            "LAFAN1 (Harvey et al. 2020, CC BY-NC-ND 4.0, read from a clone of karstm/motion-matching, whose "
+            "history carried two of its walks; not carried here): walk4_subject1 @%s and walk1_subject1 as "
+            "cropped @%s. Their zero pose lies along the bones' x axes: fit_motion takes their most upright "
+            "frame as the rest pose. The takes wander, turn and stop, so each is cut to its straightest "
+            "%.0f s walked at %.1f m/s or faster throughout (chart_body_fit.py's straightest_stretch), "
+            "then fitted at fit_motion's default tolerances over that stretch's whole cycles." % (
+                LAFAN_WALKS[0][0][:7], LAFAN_WALKS[1][0][:7], LAFAN_WINDOW_S, LAFAN_MIN_SPEED), ""] + lafan_rows(
+                    tool, mirror)
+
+
+def mixamo_section(tool, mirror):
+    return ["## A Mixamo walk (BVH): Adobe Mixamo's rig, not fitted on", "",
+            "jerech33/haze @%s `%s` (a game engine's sample; the repository states no licence and Mixamo's "
+            "animations are Adobe's: read from a clone, not carried here): one in-place walk cycle of 40 "
+            "frames that loops, closed with its first frame and fitted as one cycle (`--period`), so it has "
+            "no cycle-to-cycle variation to show; its feet slide back under a still root, so its stance feet "
+            "say little." % (MIXAMO_WALK[0][:7], MIXAMO_WALK[1]), ""] + mixamo_rows(tool, mirror)
+
+
 def main():
     if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
         print(__doc__)
@@ -297,38 +330,10 @@ def main():
               "One cycle (`--period 1`); the reference is the model's own forward kinematics, knee translation included.",
               ""] + osim_summary + [""] + table(osim_rows)
     lines += ["", "Per joint at the order fit_motion chose by tolerance (fitted body):", "", "```"] + osim_per_joint + ["```", ""]
-    mirror = os.environ.get("BANDAI_MIRROR", "")
-    if mirror:
-        bandai, commit = bandai_rows(tool, mirror)
-        lines += ["## Bandai-Namco dataset-1 walks (BVH): another lab's rig, not fitted on", "",
-                  "BandaiNamcoResearchInc/Bandai-Namco-Research-Motiondataset @%s, every walk style's first take "
-                  "(CC BY-NC-ND 4.0, read from a clone, not carried here). Their pelvis hangs below a root joint "
-                  "and their zero pose is folded: fit_motion takes their most upright frame as the rest pose. "
-                  "Fitted at fit_motion's default tolerances, over every whole cycle of each take. The takes start "
-                  "and end at a standstill and their cycles differ: \"the capture's cycle-to-cycle variation\" is "
-                  "each joint against the mean of the take's cycles at the same phase, how close any periodic motion "
-                  "could follow it on average (fit_motion -v)." % commit[:7], ""]
-        lines += bandai + [""]
-    lafan_mirror = os.environ.get("LAFAN_MIRROR", "")
-    if lafan_mirror:
-        lines += ["## LAFAN1 walks (BVH): Ubisoft La Forge's rig and actor, not fitted on", "",
-                  "LAFAN1 (Harvey et al. 2020, CC BY-NC-ND 4.0, read from a clone of karstm/motion-matching, whose "
-                  "history carried two of its walks; not carried here): walk4_subject1 @%s and walk1_subject1 as "
-                  "cropped @%s. Their zero pose lies along the bones' x axes: fit_motion takes their most upright "
-                  "frame as the rest pose. The takes wander, turn and stop, so each is cut to its straightest "
-                  "%.0f s walked at %.1f m/s or faster throughout (chart_body_fit.py's straightest_stretch), "
-                  "then fitted at fit_motion's default tolerances over that stretch's whole cycles." % (
-                      LAFAN_WALKS[0][0][:7], LAFAN_WALKS[1][0][:7], LAFAN_WINDOW_S, LAFAN_MIN_SPEED), ""]
-        lines += lafan_rows(tool, lafan_mirror) + [""]
-    mixamo_mirror = os.environ.get("MIXAMO_MIRROR", "")
-    if mixamo_mirror:
-        lines += ["## A Mixamo walk (BVH): Adobe Mixamo's rig, not fitted on", "",
-                  "jerech33/haze @%s `%s` (a game engine's sample; the repository states no licence and Mixamo's "
-                  "animations are Adobe's: read from a clone, not carried here): one in-place walk cycle of 40 "
-                  "frames that loops, closed with its first frame and fitted as one cycle (`--period`). Its "
-                  "\"cycle-to-cycle variation\" is zero by construction, and its feet slide back under a still "
-                  "root, so its stance feet say little." % (MIXAMO_WALK[0][:7], MIXAMO_WALK[1]), ""]
-        lines += mixamo_rows(tool, mixamo_mirror) + [""]
+    for variable, section in (("BANDAI_MIRROR", bandai_section), ("LAFAN_MIRROR", lafan_section),
+                              ("MIXAMO_MIRROR", mixamo_section)):
+        if os.environ.get(variable, ""):
+            lines += section(tool, os.environ[variable]) + [""]
     with open(os.path.join(DOCS, "body_fit_accuracy.md"), "w") as f:
         f.write("\n".join(lines))
     print("wrote %s, %s, %s, %s, %s" % (chart, os.path.join(DOCS, "body_fit_accuracy.md"), sweep_path, other_path,

@@ -13,17 +13,6 @@ namespace {
 
 using namespace locomotion_test;
 
-// The shipped walk in cycles, standing on the spot (the mirror of travel is not the question).
-Motion walkInCycles() {
-  Motion m = walk();
-  for (FourierSeries& s : m.dofs) s = inCycles(s);
-  for (FourierSeries& s : m.root.rotation) s = inCycles(s);
-  for (FourierSeries& s : m.root.translation) s = FourierSeries{};
-  m.root.forward_speed = 0.0;
-  m.period = 1.0;
-  return m;
-}
-
 // The farthest any joint, or any point of the drawn soles, is from the mirror image of its
 // partner half a cycle later, over a cycle (m).
 double mirrorMismatch(const Motion& motion) {
@@ -63,7 +52,7 @@ double mirrorMismatch(const Motion& motion) {
 }
 
 TEST(SymmetricWalk, EachHalfCycleIsTheMirrorImageOfTheOther) {
-  const Motion captured = walkInCycles();
+  const Motion captured = walkInCycles(walk());
   // The capture is one person's: its sides differ by centimetres (else this test proves nothing).
   EXPECT_GT(mirrorMismatch(captured), 0.02);
   EXPECT_LT(mirrorMismatch(symmetricWalk(captured, skeleton())), 1e-6);
@@ -79,7 +68,7 @@ TEST(SymmetricWalk, ASkeletonWhoseSidesDifferIsRefusedByName) {
   ASSERT_NE(at, std::string::npos);
   urdf.replace(at, right_hip.size(), "<origin xyz=\"0.0 0.0 0.13\" rpy=\"-0.982793723247 0.0 0.0\"/>");
   try {
-    symmetricWalk(walkInCycles(), Skeleton::fromUrdf(urdf));
+    symmetricWalk(walkInCycles(walk()), Skeleton::fromUrdf(urdf));
     FAIL() << "a skeleton with one hip wider than the other was taken as symmetric";
   } catch (const LocomotionError& error) {
     EXPECT_NE(std::string(error.what()).find("r_hip"), std::string::npos) << error.what();

@@ -24,7 +24,8 @@ Eigen::Quaterniond rollPitchYaw(double roll, double pitch, double yaw) {
          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX());
 }
 
-// The walk with every series in cycles, the root's travel taken out (the feet decide it).
+}  // namespace
+
 Motion walkInCycles(const Motion& walk) {
   Motion m = walk;
   for (std::size_t i = 0; i < Motion::kSeriesCount; ++i) {
@@ -42,8 +43,6 @@ Motion walkInCycles(const Motion& walk) {
   m.period = 1.0;
   return m;
 }
-
-}  // namespace
 
 SpeedGait::SpeedGait(const Motion& walk, const NormativeGait& normative, const Skeleton& skeleton,
                      const BodyShape& shape, FootSoles soles)

@@ -21,6 +21,10 @@
 
 namespace dressed_human {
 
+// `walk` with every series in cycles (period 1), the root's travel taken out (the feet decide
+// it). Throws LocomotionError for a series whose period is not the motion's.
+Motion walkInCycles(const Motion& walk);
+
 class SpeedGait {
  public:
   // Throws LocomotionError when `walk` is not a walk (no forward speed, series of another period).
