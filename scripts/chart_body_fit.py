@@ -78,15 +78,29 @@ LAFAN_WINDOW_S = 5.0     # a straight stretch: at least three gait cycles
 LAFAN_MIN_SPEED = 0.5    # m/s throughout it (the takes are in cm)
 
 
+def bvh_motion(bvh_text):
+    """A BVH file's lines up to its frame time, the frame time (s) and its frames' lines (as many as
+    its header declares: a file may hold more)."""
+    lines = bvh_text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
+    declared = next(int(line.split(":")[1]) for line in lines if line.strip().startswith("Frames:"))
+    frames = [line.rstrip() for line in lines[start + 1:] if line.strip()][:declared]
+    return [line.rstrip() for line in lines[:start + 1]], float(lines[start].split(":")[1]), frames
+
+
+def bvh_with_frames(header, frames):
+    """A BVH file from `header` (bvh_motion's) and these frames' lines."""
+    return "\n".join([("Frames: %d" % len(frames)) if line.strip().startswith("Frames:") else line
+                      for line in header] + frames) + "\n"
+
+
 def straightest_stretch(bvh_text):
     """The frames [first, end) of the LAFAN take's straightest LAFAN_WINDOW_S seconds walked at
     LAFAN_MIN_SPEED or faster throughout (speed and heading of the root over one second). LAFAN
     walks wander, turn and stop; fit_motion fits a periodic walk. Returns (first, end, the
     heading's range over it in degrees, the mean speed)."""
-    lines = bvh_text.splitlines()
-    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
-    frame_time = float(lines[start].split(":")[1])
-    frames = [[float(v) for v in line.split()[:3]] for line in lines[start + 1:] if line.strip()]
+    _, frame_time, lines = bvh_motion(bvh_text)
+    frames = [[float(v) for v in line.split()[:3]] for line in lines]
     second = max(1, round(1.0 / frame_time))
     window = round(LAFAN_WINDOW_S / frame_time)
     velocity = []
@@ -111,13 +125,8 @@ def straightest_stretch(bvh_text):
 
 def cut_bvh(bvh_text, first, end):
     """The take with frames [first, end) only."""
-    lines = bvh_text.splitlines()
-    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
-    declared = next(int(line.split(":")[1]) for line in lines if line.strip().startswith("Frames:"))
-    frames = [line.rstrip() for line in lines[start + 1:] if line.strip()][:declared][first:end]
-    header = ["Frames: %d" % len(frames) if line.strip().startswith("Frames:") else line.rstrip()
-              for line in lines[:start + 1]]
-    return "\n".join(header + frames) + "\n"
+    header, _, frames = bvh_motion(bvh_text)
+    return bvh_with_frames(header, frames[first:end])
 
 
 MIRROR_HEADER = ["| walk | period, speed | joints: mean / max (cm) | worst joint (mean / max, cm) | "
@@ -201,24 +210,20 @@ MIXAMO_WALK = ("0417d922cfe2049481d8b60fb319a880f0c9a276", "bvh/walk.bvh", "jere
 
 
 def closed_loop(bvh_text):
-    """A looping cycle of N frames as N + 1 frames ending where it began, and its period (N frames):
-    one whole cycle, which fit_motion needs the record to span."""
-    lines = bvh_text.splitlines()
-    start = next(i for i, line in enumerate(lines) if line.strip().startswith("Frame Time"))
-    frame_time = float(lines[start].split(":")[1])
-    frames = [line.rstrip() for line in lines[start + 1:] if line.strip()]
-    header = ["Frames: %d" % (len(frames) + 1) if line.strip().startswith("Frames:") else line.rstrip()
-              for line in lines[:start + 1]]
-    return "\n".join(header + frames + frames[:1]) + "\n", len(frames) * frame_time
+    """A looping cycle of N frames as N + 1 frames ending where it began, its period (N frames: one
+    whole cycle, which fit_motion needs the record to span) and N."""
+    header, frame_time, frames = bvh_motion(bvh_text)
+    return bvh_with_frames(header, frames + frames[:1]), len(frames) * frame_time, len(frames)
 
 
 def mixamo_rows(tool, mirror):
-    """The Mixamo walk's row: its one cycle, closed, fitted from MIXAMO_MIRROR with --period."""
+    """The Mixamo walk's rows, its one cycle closed and fitted from MIXAMO_MIRROR with --period,
+    and its frame count."""
     commit, path, label = MIXAMO_WALK
-    text, period = closed_loop(git_blob(mirror, commit, path).decode())
+    text, period, frames = closed_loop(git_blob(mirror, commit, path).decode())
     with tempfile.TemporaryDirectory() as directory:
         row = fitted_row(tool, directory, "mixamo.bvh", label, text.encode(), ["--period", "%.6f" % period])
-    return list(MIRROR_HEADER) + [row]
+    return list(MIRROR_HEADER) + [row], frames
 
 
 def bandai_section(tool, mirror):
@@ -246,12 +251,13 @@ def lafan_section(tool, mirror):
 
 
 def mixamo_section(tool, mirror):
+    rows, frames = mixamo_rows(tool, mirror)
     return ["## A Mixamo walk (BVH): Adobe Mixamo's rig, not fitted on", "",
             "jerech33/haze @%s `%s` (a game engine's sample; the repository states no licence and Mixamo's "
-            "animations are Adobe's: read from a clone, not carried here): one in-place walk cycle of 40 "
+            "animations are Adobe's: read from a clone, not carried here): one in-place walk cycle of %d "
             "frames that loops, closed with its first frame and fitted as one cycle (`--period`), so it has "
             "no cycle-to-cycle variation to show; its feet slide back under a still root, so its stance feet "
-            "say little." % (MIXAMO_WALK[0][:7], MIXAMO_WALK[1]), ""] + mixamo_rows(tool, mirror)
+            "say little." % (MIXAMO_WALK[0][:7], MIXAMO_WALK[1], frames), ""] + rows
 
 
 def main():

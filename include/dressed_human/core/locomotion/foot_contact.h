@@ -5,7 +5,6 @@
 // ended on the toe, the heel already up. The floor is z = 0, where PlantedFeet puts the carrying
 // point. Used by the walk's tests and walk_speed_table.
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 
